@@ -1,0 +1,93 @@
+"""Reduced configurations: which joints move and where the others are held (chapters 5, 7, appendix B).
+
+A configuration is data, not a code path: the free joints and the positions of the held ones. Held
+joints have zero rate and acceleration; their bodies still ride along, so their masses and inertias
+stay in the dynamics ("rigid connections", section 5.5), and their forces are not motor limits.
+
+- ``dfs``: the dynamic flight simulator of chapter 7. Only the yaw moves; the track is held at its
+  outer end (q2 = -4 m) and the heave at its lowest (q3 = -1 m). The gimbals align the cabin with the
+  specific force (:func:`desdemona.kinematics.gimbal_alignment`), so the cue is the modulus
+  M = |f| (eq. 7.1-7.3, 7.7).
+- ``yaw-track``: yaw and track, the two-joint model of appendix B and chapters 4-5.
+- ``yaw-track-cabin``: yaw, track and cabin yaw (q5), the three-joint model of section 5.6.
+- ``full``: all six joints.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import casadi as ca
+import numpy as np
+
+from desdemona.params import JOINT_NAMES, MachineParams
+
+
+@dataclass(frozen=True)
+class Configuration:
+    """A set of free joints (0-based indices into q1..q6) and the positions of the held ones.
+
+    fixed : (6,) position of every joint when held [rad | m]; the entries of free joints are unused.
+    modulus_cost : True where the cue is the modulus of the specific force (``dfs``), not all of S.
+    """
+
+    name: str
+    free: tuple[int, ...]
+    fixed: tuple[float, ...]
+    modulus_cost: bool
+    description: str
+
+    @property
+    def n(self) -> int:
+        """Number of free joints."""
+        return len(self.free)
+
+    @property
+    def joint_names(self) -> tuple[str, ...]:
+        return tuple(JOINT_NAMES[i] for i in self.free)
+
+    def expand(self, x, held_value: str = "position"):
+        """Full (6,) vector from the free joints' values.
+
+        x : (n,) or (N, n) free-joint values, or a CasADi column of length n.
+        held_value : "position" fills held joints with their fixed positions, "zero" with zeros (rates,
+            accelerations and forces of held joints).
+        """
+        filler = self.fixed if held_value == "position" else (0.0,) * 6
+        if isinstance(x, (ca.SX, ca.MX)):
+            return ca.vertcat(*[x[self.free.index(i)] if i in self.free else filler[i] for i in range(6)])
+        x = np.asarray(x, dtype=float)
+        full = np.broadcast_to(np.asarray(filler, dtype=float), x.shape[:-1] + (6,)).copy()
+        full[..., list(self.free)] = x
+        return full
+
+    def limits(self, params: MachineParams) -> dict[str, np.ndarray]:
+        """Limits of the free joints, SI: position_min/max, velocity, acceleration, effort, power."""
+        idx = list(self.free)
+        return {"position_min": params.position_min[idx], "position_max": params.position_max[idx],
+                "velocity": params.velocity_max[idx], "acceleration": params.acceleration_max[idx],
+                "effort": params.effort_max[idx], "power": params.power_max[idx]}
+
+
+CONFIGURATIONS: dict[str, Configuration] = {
+    c.name: c for c in (
+        Configuration("dfs", (0,), (0.0, -4.0, -1.0, 0.0, 0.0, 0.0), True,
+                      "dynamic flight simulator: yaw only, track at -4 m, cue = |f| (chapter 7)"),
+        Configuration("yaw-track", (0, 1), (0.0,) * 6, False,
+                      "yaw and linear track (appendix B, chapters 4-5)"),
+        Configuration("yaw-track-cabin", (0, 1, 4), (0.0,) * 6, False,
+                      "yaw, track and cabin yaw q5 (section 5.6)"),
+        Configuration("full", (0, 1, 2, 3, 4, 5), (0.0,) * 6, False,
+                      "all six joints"),
+    )
+}
+
+
+def get_configuration(config: str | Configuration) -> Configuration:
+    """The configuration called ``config`` (or ``config`` itself); a clear error for an unknown name."""
+    if isinstance(config, Configuration):
+        return config
+    if config not in CONFIGURATIONS:
+        raise ValueError(f"unknown configuration {config!r}; valid configurations: "
+                         f"{', '.join(CONFIGURATIONS)}")
+    return CONFIGURATIONS[config]

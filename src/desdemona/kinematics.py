@@ -1,0 +1,127 @@
+"""Forward kinematics of Desdemona and the path S the person in the cabin feels (appendix A.1-A.3).
+
+The chain of eq. A.7, world (frame 0) to cabin (frame 6)::
+
+    H_world_cabin = Rz(q1) T(0, q2, 0) T(0, 0, q3) Rx(q4) Rz(q5) Ry(q6)
+
+World z points up; gravity is g_vec = (0, 0, -g). The path is ``S = (omega_cabin, f_cabin)`` (eq. 3.2,
+A.10): the cabin's angular velocity and the specific force ``f = a - g_vec`` at the head, both in cabin
+coordinates, so a cabin at rest and level feels f_cabin = (0, 0, +g) (eq. A.19, B.5).
+
+The functions here are expressions of the full six-joint chain. They accept floats, NumPy arrays
+(one state ``(6,)`` or many ``(N, 6)``) and CasADi SX/MX symbols alike; :class:`desdemona.model.Model`
+restricts them to the free joints of a configuration.
+"""
+
+from __future__ import annotations
+
+import functools
+
+import casadi as ca
+import numpy as np
+
+from desdemona._casadi import call
+
+N_JOINTS = 6
+# (kind, axis) of each joint in its parent's frame, eq. A.7 / A.8; axis 0, 1, 2 = x, y, z.
+JOINT_AXES: tuple[tuple[str, int], ...] = (
+    ("revolute", 2), ("prismatic", 1), ("prismatic", 2), ("revolute", 0), ("revolute", 2), ("revolute", 1))
+
+
+def rotation(axis: int, angle):
+    """3x3 rotation about the x (0), y (1) or z (2) axis by ``angle`` [rad] (eq. A.2-A.4).
+
+    Works on floats (returns a NumPy array) and CasADi symbols (returns the same type).
+    """
+    symbolic = isinstance(angle, (ca.SX, ca.MX, ca.DM))
+    c, s = (ca.cos(angle), ca.sin(angle)) if symbolic else (np.cos(angle), np.sin(angle))
+    rows = {0: ((1, 0, 0), (0, c, -s), (0, s, c)),
+            1: ((c, 0, s), (0, 1, 0), (-s, 0, c)),
+            2: ((c, -s, 0), (s, c, 0), (0, 0, 1))}[axis]
+    if symbolic:
+        return ca.vertcat(*[ca.horzcat(*row) for row in rows])
+    return np.array(rows, dtype=float)
+
+
+def frames(q) -> list[tuple]:
+    """World rotation and origin of frames 1..6 along the chain of eq. A.7.
+
+    q : (6,) joint positions [rad | m], floats or CasADi symbols.
+    Returns six pairs ``(R_world_i (3, 3), p_world_i (3,))``.
+    """
+    symbolic = isinstance(q, (ca.SX, ca.MX))
+    R = ca.DM.eye(3) if symbolic else np.eye(3)
+    p = ca.DM.zeros(3) if symbolic else np.zeros(3)
+    out = []
+    for i, (kind, axis) in enumerate(JOINT_AXES):
+        if kind == "revolute":
+            R = R @ rotation(axis, q[i])
+        else:
+            p = p + R[:, axis] * q[i]
+        out.append((R, p))
+    return out
+
+
+def cabin_pose(q):
+    """(4, 4) homogeneous transform H_world_cabin (eq. A.1, A.7). q : (6,) [rad | m]."""
+    R, p = frames(q)[-1]
+    if isinstance(R, (ca.SX, ca.MX, ca.DM)):
+        return ca.vertcat(ca.horzcat(R, p), ca.DM([[0, 0, 0, 1]]))
+    return np.block([[R, p.reshape(3, 1)], [np.zeros((1, 3)), np.ones((1, 1))]])
+
+
+def angular_velocities(q, qd) -> list:
+    """World angular velocity of frames 1..6 [rad/s]: the revolute joints' axes times their rates.
+
+    The axis of joint i is the same in frames i-1 and i, so it is read off frame i's rotation.
+    """
+    omega = ca.DM.zeros(3) if isinstance(q, (ca.SX, ca.MX)) else np.zeros(3)
+    out = []
+    for i, ((R, _), (kind, axis)) in enumerate(zip(frames(q), JOINT_AXES)):
+        if kind == "revolute":
+            omega = omega + R[:, axis] * qd[i]
+        out.append(omega)
+    return out
+
+
+def gimbal_alignment(f):
+    """Outer and cabin gimbal angles (q4, q6) that align the cabin's +z with a specific force.
+
+    The dynamic-flight-simulator use of chapter 7: the gimbals turn the cabin so that the person feels
+    the whole specific force "down" into the seat; only its modulus (eq. 7.2) is then a cue.
+    f : (3,) specific force in the arm frame (after q1, q2, q3) [m/s^2], with inner gimbal q5 = 0.
+    Returns (q4, q6) [rad] such that Ry(q6)^T Rx(q4)^T f = (0, 0, |f|).
+    """
+    if isinstance(f, (ca.SX, ca.MX)):
+        return ca.atan2(-f[1], f[2]), ca.atan2(f[0], ca.sqrt(f[1] ** 2 + f[2] ** 2))
+    f = np.asarray(f, dtype=float)
+    return np.arctan2(-f[..., 1], f[..., 2]), np.arctan2(f[..., 0], np.hypot(f[..., 1], f[..., 2]))
+
+
+@functools.lru_cache(maxsize=None)
+def path_function(gravity: float = 9.81, head_offset: tuple[float, float, float] = (0.0, 0.0, 0.0)) -> ca.Function:
+    """CasADi Function ``S(q, qd, qdd) -> (6,)`` of the full chain (eq. 3.2, A.10-A.19).
+
+    The head acceleration is the second time derivative of the head position, taken exactly by
+    forward-mode differentiation along (qd, qdd): the thesis' eq. A.13 done by CasADi.
+    gravity : g [m/s^2]; head_offset : (3,) head position in cabin coordinates [m].
+    """
+    q, qd, qdd = (ca.SX.sym(name, N_JOINTS) for name in ("q", "qd", "qdd"))
+    R, p = frames(q)[-1]
+    head = p + R @ ca.DM(head_offset)
+    velocity = ca.jtimes(head, q, qd)
+    acceleration = ca.jtimes(velocity, q, qd) + ca.jtimes(velocity, qd, qdd)
+    omega_world = angular_velocities(q, qd)[-1]
+    f_world = acceleration - ca.DM([0.0, 0.0, -gravity])
+    S = ca.vertcat(R.T @ omega_world, R.T @ f_world)
+    return ca.Function("S", [q, qd, qdd], [S], ["q", "qd", "qdd"], ["S"])
+
+
+def S(q, qd, qdd, gravity: float = 9.81, head_offset: tuple[float, float, float] = (0.0, 0.0, 0.0)):
+    """The path ``S = (omega_cabin, f_cabin)`` of the full chain (eq. 3.2, A.10).
+
+    q, qd, qdd : (6,) or (N, 6) joint positions [rad | m], rates and accelerations, or CasADi symbols.
+    Returns (6,) or (N, 6): cabin angular velocity [rad/s] and specific force at the head [m/s^2], both
+    in cabin coordinates.
+    """
+    return call(path_function(float(gravity), tuple(float(x) for x in head_offset)), q, qd, qdd)

@@ -1,0 +1,134 @@
+"""The Desdemona model for one configuration: every model function on the free joints only.
+
+``Model(params, config)`` composes the full-chain expressions of :mod:`desdemona.kinematics` and
+:mod:`desdemona.dynamics` with a configuration's held joints, and compiles them once into CasADi
+Functions of the free joints (``model.functions``), ready for the optimisers with exact derivatives.
+Its methods evaluate the same Functions on floats, arrays or CasADi symbols.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+import casadi as ca
+import numpy as np
+
+from desdemona import dynamics, kinematics
+from desdemona._casadi import call
+from desdemona.configs import Configuration, get_configuration
+from desdemona.params import MachineParams, default_params
+
+
+@dataclass(frozen=True, init=False)
+class Model:
+    """Desdemona restricted to the free joints of a configuration.
+
+    params : machine parameters (``params.simplified()`` for the thesis' simplified dynamics, 5.7).
+    config : a :class:`Configuration` or its name (``dfs``, ``yaw-track``, ``yaw-track-cabin``, ``full``).
+
+    Every method takes free-joint vectors: ``q, qd, qdd`` of shape (n,) or (N, n), or CasADi symbols.
+    """
+
+    params: MachineParams
+    config: Configuration
+
+    def __init__(self, params: MachineParams | None = None, config: str | Configuration = "full"):
+        object.__setattr__(self, "params", default_params() if params is None else params)
+        object.__setattr__(self, "config", get_configuration(config))
+
+    @property
+    def n(self) -> int:
+        return self.config.n
+
+    @property
+    def functions(self) -> dict[str, ca.Function]:
+        """CasADi Functions of the free joints: S, omega_cabin, f_cabin, modulus, tau, power, M, C, N,
+        forward, kinetic_energy, potential_energy."""
+        return _functions(self.params, self.config)
+
+    @property
+    def limits(self) -> dict[str, np.ndarray]:
+        """Limits of the free joints (SI): position_min/max, velocity, acceleration, effort, power."""
+        return self.config.limits(self.params)
+
+    def S(self, q, qd, qdd):
+        """(6,) path (omega_cabin [rad/s], f_cabin [m/s^2]) in cabin coordinates (eq. 3.2)."""
+        return call(self.functions["S"], q, qd, qdd)
+
+    def omega_cabin(self, q, qd):
+        """(3,) cabin angular velocity in cabin coordinates [rad/s]."""
+        return call(self.functions["omega_cabin"], q, qd)
+
+    def f_cabin(self, q, qd, qdd):
+        """(3,) specific force at the head in cabin coordinates [m/s^2] (eq. A.18, A.19)."""
+        return call(self.functions["f_cabin"], q, qd, qdd)
+
+    def modulus(self, q, qd, qdd):
+        """(1,) modulus of the specific force M = |f| [m/s^2] (eq. 7.2)."""
+        return call(self.functions["modulus"], q, qd, qdd)
+
+    def tau(self, q, qd, qdd):
+        """(n,) free joints' torques and forces [N*m | N] (eq. A.26)."""
+        return call(self.functions["tau"], q, qd, qdd)
+
+    def power(self, q, qd, qdd):
+        """(n,) free joints' power tau_i * qd_i [W] (section A.4)."""
+        return call(self.functions["power"], q, qd, qdd)
+
+    def mass_matrix(self, q):
+        """(n, n) inertia of the free joints (eq. A.20)."""
+        return call(self.functions["M"], q, matrix=True)
+
+    def coriolis_matrix(self, q, qd):
+        """(n, n) Coriolis matrix of the free joints (eq. A.23)."""
+        return call(self.functions["C"], q, qd, matrix=True)
+
+    def gravity_vector(self, q):
+        """(n,) conservative forces on the free joints (eq. A.22)."""
+        return call(self.functions["N"], q)
+
+    def forward_dynamics(self, q, qd, tau):
+        """(n,) free joints' accelerations for torques ``tau`` (eq. A.27)."""
+        return call(self.functions["forward"], q, qd, tau)
+
+    def kinetic_energy(self, q, qd):
+        return call(self.functions["kinetic_energy"], q, qd)
+
+    def potential_energy(self, q):
+        return call(self.functions["potential_energy"], q)
+
+
+@functools.lru_cache(maxsize=None)
+def _functions(params: MachineParams, config: Configuration) -> dict[str, ca.Function]:
+    n = config.n
+    q, qd, qdd, tau = (ca.SX.sym(name, n) for name in ("q", "qd", "qdd", "tau"))
+    Q, Qd, Qdd = config.expand(q), config.expand(qd, "zero"), config.expand(qdd, "zero")
+    full = dynamics.dynamics_functions(params)
+    idx = list(config.free)
+    S = kinematics.path_function(params.gravity, params.head_offset)(Q, Qd, Qdd)
+    M = full["M"](Q)[idx, idx]
+    C = full["C"](Q, Qd)[idx, idx]
+    N = full["N"](Q)[idx]
+    torque = M @ qdd + C @ qd + N  # rows of the full eq. A.26 with held joints at rest
+    power = torque * qd
+    expressions = {
+        "S": ([q, qd, qdd], S),
+        "omega_cabin": ([q, qd], S[:3]),
+        "f_cabin": ([q, qd, qdd], S[3:]),
+        "modulus": ([q, qd, qdd], ca.norm_2(S[3:])),
+        "tau": ([q, qd, qdd], torque),
+        "power": ([q, qd, qdd], power),
+        "M": ([q], M),
+        "C": ([q, qd], C),
+        "N": ([q], N),
+        "forward": ([q, qd, tau], ca.solve(M, tau - C @ qd - N)),
+        "kinetic_energy": ([q, qd], 0.5 * qd.T @ M @ qd),
+        "potential_energy": ([q], full["potential_energy"](Q)),
+    }
+    names = {"q": q, "qd": qd, "qdd": qdd, "tau": tau}
+    functions = {}
+    for name, (args, expr) in expressions.items():
+        arg_names = [next(k for k, v in names.items() if v is a) for a in args]
+        functions[name] = ca.Function(name, args, [expr], arg_names, [name])
+    return functions
