@@ -7,6 +7,9 @@
   carries the centre-of-mass offset (section A.5).
 - N(q) = dV/dq with V = sum_i m_i g z_com,i(q) (eq. A.21, A.22): gravity acts through the heave and,
   with off-centre masses, through the gimbals.
+- tau from Lagrange's equation (eq. A.24, A.25) by automatic differentiation of the Lagrangian:
+  tau = d/dt dL/dqd - dL/dq = M qdd + (dM/dq . qd) qd - d(qd^T M qd / 2)/dq + dV/dq, which equals
+  eq. A.26 and is a third the size of the Christoffel-matrix product, which matters inside optimisers.
 - C(q, qd) from the Christoffel symbols of M (eq. A.23), so that M_dot - 2C is skew-symmetric.
 - Joint power P_i = tau_i qd_i (section A.4); forward dynamics qdd = M^-1 (tau - C qd - N) by a linear
   solve (eq. A.27).
@@ -23,8 +26,35 @@ import functools
 import casadi as ca
 
 from desdemona._casadi import call
-from desdemona.kinematics import N_JOINTS, angular_velocities, frames
+from desdemona.kinematics import N_JOINTS, body_motion, frames
 from desdemona.params import MachineParams
+
+
+def energy_expressions(q, qd, Q, Qd, params: MachineParams) -> tuple[ca.SX, ca.SX]:
+    """Mass matrix M (eq. A.20) and potential energy V (eq. A.21) as SX expressions.
+
+    q, qd : SX symbols of the moving joints; Q, Qd : (6,) joint positions and rates as expressions of
+    them (held joints constant, at rest). M is n x n in the moving joints.
+    """
+    n = q.numel()
+    M = ca.SX.zeros(n, n)
+    V = 0
+    for (R, p), motion, body in zip(frames(Q), body_motion(Q, Qd), params.bodies):
+        J = ca.jacobian(ca.vertcat(motion["omega"], motion["v"]), qd)  # body Jacobian (twist is linear in qd)
+        M += J.T @ ca.DM(body.spatial_inertia()) @ J
+        V += body.mass * params.gravity * (p + R @ ca.DM(body.com))[2]
+    return 0.5 * (M + M.T), V  # symmetric already; removes round-off asymmetry of the summed products
+
+
+def christoffel_matrix(M, q, qd) -> ca.SX:
+    """Coriolis matrix of eq. A.23: C_ij = 1/2 sum_k (dM_ij/dq_k + dM_ik/dq_j - dM_kj/dq_i) qd_k."""
+    n = q.numel()
+    dM = [ca.jacobian(M[:, j], q) for j in range(n)]  # dM[j][i, k] = dM_ij / dq_k
+    C = ca.SX.zeros(n, n)
+    for i in range(n):
+        for j in range(n):
+            C[i, j] = 0.5 * sum((dM[j][i, k] + dM[k][i, j] - dM[j][k, i]) * qd[k] for k in range(n))
+    return C
 
 
 @functools.lru_cache(maxsize=None)
@@ -32,36 +62,27 @@ def dynamics_functions(params: MachineParams) -> dict[str, ca.Function]:
     """CasADi Functions of the full chain: ``M(q)``, ``C(q, qd)``, ``N(q)``, ``tau(q, qd, qdd)``,
     ``kinetic_energy(q, qd)``, ``potential_energy(q)``, ``forward(q, qd, tau)``."""
     q, qd, qdd, tau = (ca.SX.sym(name, N_JOINTS) for name in ("q", "qd", "qdd", "tau"))
-    chain = frames(q)
-    omegas = angular_velocities(q, qd)
-    M = ca.SX.zeros(N_JOINTS, N_JOINTS)
-    V = 0
-    for (R, p), omega, body in zip(chain, omegas, params.bodies):
-        twist = ca.vertcat(R.T @ omega, R.T @ ca.jtimes(p, q, qd))  # body twist (omega, v), eq. A.12
-        J = ca.jacobian(twist, qd)  # twist is linear in qd: this is the body Jacobian
-        M += J.T @ ca.DM(body.spatial_inertia()) @ J
-        com_world = p + R @ ca.DM(body.com)
-        V += body.mass * params.gravity * com_world[2]
-    M = 0.5 * (M + M.T)  # exact already; removes round-off asymmetry of the summed products
-    N = ca.gradient(V, q)
-    # Christoffel symbols of the first kind (eq. A.23): C_ij = sum_k c_ijk qd_k.
-    dM = [ca.jacobian(M[:, j], q) for j in range(N_JOINTS)]  # dM[j][i, k] = dM_ij / dq_k
-    C = ca.SX.zeros(N_JOINTS, N_JOINTS)
-    for i in range(N_JOINTS):
-        for j in range(N_JOINTS):
-            C[i, j] = 0.5 * sum((dM[j][i, k] + dM[k][i, j] - dM[j][k, i]) * qd[k] for k in range(N_JOINTS))
-    T = 0.5 * qd.T @ M @ qd
-    tau_expr = M @ qdd + C @ qd + N
-    forward = ca.solve(M, tau - C @ qd - N)
+    M, V = energy_expressions(q, qd, q, qd, params)
+    bias = lagrange_torque(M, V, q, qd, ca.SX.zeros(N_JOINTS))
     return {
         "M": ca.Function("M", [q], [M], ["q"], ["M"]),
-        "C": ca.Function("C", [q, qd], [C], ["q", "qd"], ["C"]),
-        "N": ca.Function("N", [q], [N], ["q"], ["N"]),
-        "tau": ca.Function("tau", [q, qd, qdd], [tau_expr], ["q", "qd", "qdd"], ["tau"]),
-        "kinetic_energy": ca.Function("kinetic_energy", [q, qd], [T], ["q", "qd"], ["T"]),
+        "C": ca.Function("C", [q, qd], [christoffel_matrix(M, q, qd)], ["q", "qd"], ["C"]),
+        "N": ca.Function("N", [q], [ca.gradient(V, q)], ["q"], ["N"]),
+        "tau": ca.Function("tau", [q, qd, qdd], [lagrange_torque(M, V, q, qd, qdd)], ["q", "qd", "qdd"], ["tau"]),
+        "kinetic_energy": ca.Function("kinetic_energy", [q, qd], [0.5 * qd.T @ M @ qd], ["q", "qd"], ["T"]),
         "potential_energy": ca.Function("potential_energy", [q], [V], ["q"], ["V"]),
-        "forward": ca.Function("forward", [q, qd, tau], [forward], ["q", "qd", "tau"], ["qdd"]),
+        "forward": ca.Function("forward", [q, qd, tau], [ca.solve(M, tau - bias)], ["q", "qd", "tau"], ["qdd"]),
     }
+
+
+def lagrange_torque(M, V, q, qd, qdd):
+    """tau = d/dt (dL/dqd) - dL/dq for L = qd^T M(q) qd / 2 - V(q) (eq. A.24, A.25), as SX expressions.
+
+    M : (n, n) and V : scalar expressions of the SX symbol q; qd, qdd : SX symbols or expressions.
+    """
+    momentum = M @ qd
+    return ca.cse(M @ qdd + ca.jtimes(momentum, q, qd) - ca.gradient(0.5 * ca.dot(qd, momentum), q)
+                  + ca.gradient(V, q))
 
 
 def mass_matrix(q, params: MachineParams):

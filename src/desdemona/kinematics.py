@@ -70,17 +70,39 @@ def cabin_pose(q):
     return np.block([[R, p.reshape(3, 1)], [np.zeros((1, 3)), np.ones((1, 1))]])
 
 
-def angular_velocities(q, qd) -> list:
-    """World angular velocity of frames 1..6 [rad/s]: the revolute joints' axes times their rates.
+def body_motion(q, qd, qdd=None, gravity: float = 0.0) -> list[dict]:
+    """Motion of frames 1..6, each in its own coordinates, by the forward recursion of Newton-Euler.
 
-    The axis of joint i is the same in frames i-1 and i, so it is read off frame i's rotation.
+    Returns per frame a dict with ``omega`` (angular velocity [rad/s]), ``v`` (velocity of the origin
+    [m/s]), and where ``qdd`` is given ``alpha`` (angular acceleration [rad/s^2]) and ``a`` (classical
+    acceleration of the origin [m/s^2]); ``up`` is g times the world z axis [m/s^2] in that frame.
+    All are world-relative quantities expressed in the frame's own axes (the twist T_i^{i,0} of eq. A.12).
+
+    Working in local axes keeps the expressions free of the world rotation: a yaw angle never appears
+    in the yaw-track model, as in eq. B.2-B.5. q, qd, qdd : (6,) CasADi expressions.
     """
-    omega = ca.DM.zeros(3) if isinstance(q, (ca.SX, ca.MX)) else np.zeros(3)
+    zero = ca.DM.zeros(3)
+    omega, v, up = zero, zero, ca.DM([0.0, 0.0, gravity])
+    alpha, a = zero, zero
     out = []
-    for i, ((R, _), (kind, axis)) in enumerate(zip(frames(q), JOINT_AXES)):
+    for i, (kind, axis) in enumerate(JOINT_AXES):
+        e = ca.DM.zeros(3)
+        e[axis] = 1.0
         if kind == "revolute":
-            omega = omega + R[:, axis] * qd[i]
-        out.append(omega)
+            Rt = rotation(axis, q[i]).T  # parent axes -> this frame's axes
+            omega_parent = Rt @ omega
+            omega = omega_parent + e * qd[i]
+            v, up = Rt @ v, Rt @ up
+            if qdd is not None:
+                alpha = Rt @ alpha + e * qdd[i] + ca.cross(omega_parent, e * qd[i])
+                a = Rt @ a
+        else:
+            p = e * q[i]  # the origin slides along the axis; the axes stay
+            if qdd is not None:
+                a = (a + ca.cross(alpha, p) + ca.cross(omega, ca.cross(omega, p))
+                     + 2.0 * ca.cross(omega, e * qd[i]) + e * qdd[i])
+            v = v + ca.cross(omega, p) + e * qd[i]
+        out.append({"omega": omega, "v": v, "alpha": alpha, "a": a, "up": up})
     return out
 
 
@@ -98,22 +120,25 @@ def gimbal_alignment(f):
     return np.arctan2(-f[..., 1], f[..., 2]), np.arctan2(f[..., 0], np.hypot(f[..., 1], f[..., 2]))
 
 
+def path_expression(q, qd, qdd, gravity: float, head_offset) -> ca.SX:
+    """S = (omega_cabin, f_cabin) as a CasADi expression (eq. 3.2, A.10-A.19).
+
+    q, qd, qdd : (6,) expressions of the joints (held joints constant). The head's acceleration is the
+    cabin origin's plus the rigid-body terms of the head offset r: a + alpha x r + omega x (omega x r);
+    the specific force adds g times the world's up axis seen from the cabin (eq. A.19).
+    """
+    cabin = body_motion(q, qd, qdd, gravity)[-1]
+    r = ca.DM(head_offset)
+    omega = cabin["omega"]
+    a_head = cabin["a"] + ca.cross(cabin["alpha"], r) + ca.cross(omega, ca.cross(omega, r))
+    return ca.vertcat(omega, a_head + cabin["up"])
+
+
 @functools.lru_cache(maxsize=None)
 def path_function(gravity: float = 9.81, head_offset: tuple[float, float, float] = (0.0, 0.0, 0.0)) -> ca.Function:
-    """CasADi Function ``S(q, qd, qdd) -> (6,)`` of the full chain (eq. 3.2, A.10-A.19).
-
-    The head acceleration is the second time derivative of the head position, taken exactly by
-    forward-mode differentiation along (qd, qdd): the thesis' eq. A.13 done by CasADi.
-    gravity : g [m/s^2]; head_offset : (3,) head position in cabin coordinates [m].
-    """
+    """CasADi Function ``S(q, qd, qdd) -> (6,)`` of the full chain; see :func:`path_expression`."""
     q, qd, qdd = (ca.SX.sym(name, N_JOINTS) for name in ("q", "qd", "qdd"))
-    R, p = frames(q)[-1]
-    head = p + R @ ca.DM(head_offset)
-    velocity = ca.jtimes(head, q, qd)
-    acceleration = ca.jtimes(velocity, q, qd) + ca.jtimes(velocity, qd, qdd)
-    omega_world = angular_velocities(q, qd)[-1]
-    f_world = acceleration - ca.DM([0.0, 0.0, -gravity])
-    S = ca.vertcat(R.T @ omega_world, R.T @ f_world)
+    S = path_expression(q, qd, qdd, gravity, head_offset)
     return ca.Function("S", [q, qd, qdd], [S], ["q", "qd", "qdd"], ["S"])
 
 

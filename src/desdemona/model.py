@@ -103,28 +103,27 @@ class Model:
 def _functions(params: MachineParams, config: Configuration) -> dict[str, ca.Function]:
     n = config.n
     q, qd, qdd, tau = (ca.SX.sym(name, n) for name in ("q", "qd", "qdd", "tau"))
+    # Build on the reduced chain directly: held joints enter as constants, so their terms fold away
+    # and the expressions the optimisers differentiate stay small.
     Q, Qd, Qdd = config.expand(q), config.expand(qd, "zero"), config.expand(qdd, "zero")
-    full = dynamics.dynamics_functions(params)
-    idx = list(config.free)
-    S = kinematics.path_function(params.gravity, params.head_offset)(Q, Qd, Qdd)
-    M = full["M"](Q)[idx, idx]
-    C = full["C"](Q, Qd)[idx, idx]
-    N = full["N"](Q)[idx]
-    torque = M @ qdd + C @ qd + N  # rows of the full eq. A.26 with held joints at rest
-    power = torque * qd
+    S = kinematics.path_expression(Q, Qd, Qdd, params.gravity, params.head_offset)
+    M, V = dynamics.energy_expressions(q, qd, Q, Qd, params)
+    # Lagrange's equation in the free joints: the rows of eq. A.26 with held joints at rest.
+    torque = dynamics.lagrange_torque(M, V, q, qd, qdd)
+    bias = dynamics.lagrange_torque(M, V, q, qd, ca.SX.zeros(n))
     expressions = {
         "S": ([q, qd, qdd], S),
         "omega_cabin": ([q, qd], S[:3]),
         "f_cabin": ([q, qd, qdd], S[3:]),
         "modulus": ([q, qd, qdd], ca.norm_2(S[3:])),
         "tau": ([q, qd, qdd], torque),
-        "power": ([q, qd, qdd], power),
+        "power": ([q, qd, qdd], torque * qd),
         "M": ([q], M),
-        "C": ([q, qd], C),
-        "N": ([q], N),
-        "forward": ([q, qd, tau], ca.solve(M, tau - C @ qd - N)),
+        "C": ([q, qd], dynamics.christoffel_matrix(M, q, qd)),
+        "N": ([q], ca.gradient(V, q)),
+        "forward": ([q, qd, tau], ca.solve(M, tau - bias)),
         "kinetic_energy": ([q, qd], 0.5 * qd.T @ M @ qd),
-        "potential_energy": ([q], full["potential_energy"](Q)),
+        "potential_energy": ([q], V),
     }
     names = {"q": q, "qd": qd, "qdd": qdd, "tau": tau}
     functions = {}

@@ -1,0 +1,433 @@
+"""The optimal cueing problem: cost, limits and transcription (thesis 3.4, 4.1, 4.2, chapters 5-7).
+
+Find joint accelerations qdd(t) of the free joints such that the path S felt in the cabin follows the
+desired S_d::
+
+    min  1/T int_0^T (S - S_d)^T Q (S - S_d) dt  +  rho/T int_0^T sum_i (qdd_i / qdd_max,i)^2 dt
+    s.t. every limit of eq. 3.3-3.5 / 4.2 on the free joints,
+
+or, for the ``dfs`` configuration, the modulus error (M - M_d)^2 of eq. 7.3; with a perception model
+(chapter 6) the error is taken between the *perceived* S and S_d.
+
+Transcription: direct multiple shooting on a control grid h_u, controls qdd held constant per interval
+(thesis 4.2, 5.3). The states are (q, qd) of the free joints; with qdd as the control the state
+equation is the double integrator, whose solution over an interval is exact in closed form,
+q(t) = q_k + qd_k t + qdd_k t^2 / 2. The gap constraints are therefore *linear* and exact: no
+integration error at all, the nonlinearity sits where it belongs, in S and in the torque and power
+limits (tau from inverse dynamics, eq. A.26). We chose multiple shooting over collocation because of
+this: collocation would add variables to approximate a trajectory that is known exactly. With a
+perception model the filter states join (q, qd) and advance by the exact zero-order-hold
+discretisation of :mod:`desdemona.perception` on each sub-step.
+
+Each control interval is divided into ``substeps`` sub-steps (by default the sample step of S_d). The
+cost is integrated on them (trapezoid rule on the one-sided values inside the interval, so the jump of
+S where qdd jumps is respected) and every limit is enforced on them: positions (quadratic in t) at each
+sub-step point, backed off by qdd_max h^2 / 8, which bounds the bulge between two points, so position
+limits hold for all t; velocities are linear in t and accelerations constant, so bounds at the nodes
+hold for all t; torques and power are enforced at every sub-step point with a small relative back-off
+(``margin``), and the independent check of :mod:`desdemona.simulate` verifies them on a 10x finer grid.
+
+Regularisation ``rho``: a full-scale joint acceleration held for the whole path costs rho (m/s^2)^2,
+equivalent to an RMS error of sqrt(rho); the default 1e-4 (0.01 m/s^2, well below the 0.17 m/s^2
+perception threshold) never trades a felt cue for effort, but removes the flat directions of the
+cost (joints that do not change S in the weighted channels), which makes the Hessian regular and the
+optimum unique.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Literal
+
+import casadi as ca
+import numpy as np
+
+from desdemona import perception as perception_models
+from desdemona.model import Model
+from desdemona.profiles import DesiredPath
+
+
+# A flat SX graph evaluates ~4x faster than the mapped MX one but takes ~20 us per scalar operation
+# of the stages to build (measured: 3.2 s for the 8 s catapult on yaw-track-cabin, 0.1 s for the 5 s
+# cosine): it pays from about five solves of the same problem on, and only while it stays this small.
+EXPAND_LIMIT = 400_000
+EXPAND_SOLVES = 5
+
+
+@dataclass(frozen=True)
+class ProblemOptions:
+    """How to pose and solve the cueing problem.
+
+    h_u : control step [s] (thesis h_qdd, section 5.3).
+    substeps : sub-steps per control interval for cost and limits; None: as many as S_d has samples
+        in one interval (at least 2).
+    initial : "free" (optimised, section 5.2), "rest" (at rest, position free) or "given" (``initial_state``).
+    initial_state : (q0, qd0) of the free joints when initial == "given".
+    final : "none", "rest" (qd = 0 at the end) or "centre" (at rest with the track and heave centred).
+    perception : None or the name of a model of :mod:`desdemona.perception`.
+    weights : diagonal of Q (6,), None for the path's own.
+    regularisation : rho, see the module docstring.
+    margin : relative back-off of torque and power limits inside the optimiser.
+    solver : "ipopt" or "fatrop"; max_iter, tol : solver stopping criteria.
+    expand : evaluate the NLP as one flat SX graph (fast to evaluate, slow to build); None chooses:
+        flat when the problem will be solved EXPAND_SOLVES times or more and is below EXPAND_LIMIT.
+    """
+
+    h_u: float = 0.05
+    substeps: int | None = None
+    initial: Literal["free", "rest", "given"] = "free"
+    initial_state: tuple | None = None
+    final: Literal["none", "rest", "centre"] = "none"
+    perception: str | None = None
+    weights: tuple[float, ...] | None = None
+    regularisation: float = 1e-4
+    margin: float = 1e-3
+    solver: Literal["ipopt", "fatrop"] = "ipopt"
+    max_iter: int = 500
+    tol: float = 1e-8
+    expand: bool | None = None
+
+    def __post_init__(self):
+        if not (math.isfinite(self.h_u) and self.h_u > 0):
+            raise ValueError(f"h_u = {self.h_u!r}: the control step must be a positive number of seconds")
+        if self.substeps is not None and self.substeps < 1:
+            raise ValueError(f"substeps = {self.substeps!r}: must be >= 1")
+        for name, value, allowed in (("initial", self.initial, ("free", "rest", "given")),
+                                     ("final", self.final, ("none", "rest", "centre")),
+                                     ("solver", self.solver, ("ipopt", "fatrop"))):
+            if value not in allowed:
+                raise ValueError(f"{name} = {value!r}: must be one of {', '.join(allowed)}")
+        if self.initial == "given" and self.initial_state is None:
+            raise ValueError("initial = 'given' needs initial_state = (q0, qd0)")
+        if not (self.regularisation >= 0 and 0 <= self.margin < 0.5):
+            raise ValueError("regularisation must be >= 0 and margin in [0, 0.5)")
+
+
+@dataclass(frozen=True)
+class Solution:
+    """What one solve returns: the free joints' initial state and piecewise-constant accelerations.
+
+    t_nodes : (N + 1,) control grid [s]; x : (N + 1, nx) states at the nodes (q, qd, filter states);
+    u : (N, n) joint accelerations per interval; cost : objective value; status, success, iterations,
+    solve_time [s] of the solver itself; build_time [s] of the problem it came from.
+    """
+
+    t_nodes: np.ndarray
+    x: np.ndarray
+    u: np.ndarray
+    cost: float
+    status: str
+    success: bool
+    iterations: int
+    solve_time: float
+    lam_g: np.ndarray = field(repr=False, default=None)
+    lam_x: np.ndarray = field(repr=False, default=None)
+
+    @property
+    def n(self) -> int:
+        return self.u.shape[1]
+
+    @property
+    def q0(self) -> np.ndarray:
+        return self.x[0, : self.n]
+
+    @property
+    def qd0(self) -> np.ndarray:
+        return self.x[0, self.n: 2 * self.n]
+
+
+class CueingProblem:
+    """The NLP for one model, desired path and set of options; built once, solved from many guesses."""
+
+    def __init__(self, model: Model, path: DesiredPath, options: ProblemOptions = ProblemOptions(),
+                 solves: int = 1):
+        start = time.perf_counter()
+        self.solves = solves
+        self.model, self.path, self.options = model, path, options
+        self.modulus = model.config.modulus_cost
+        if not self.modulus and path.S_d is None:
+            raise ValueError(f"configuration {model.config.name!r} needs a full path S_d; "
+                             f"path {path.name!r} gives only the modulus")
+        if self.modulus and options.perception:
+            raise ValueError("a perception model applies to the full path S, not to the dfs modulus")
+        h_u = options.h_u
+        self.N = max(1, int(round(path.duration / h_u)))
+        self.t_nodes = path.t[0] + h_u * np.arange(self.N + 1)
+        h_S = float(np.min(np.diff(path.t)))
+        self.m = options.substeps or max(2, int(math.ceil(h_u / h_S - 1e-9)))
+        self.h_sub = h_u / self.m
+        self.tau_sub = self.h_sub * np.arange(self.m + 1)  # sub-step times within an interval
+        self.weights = np.array(options.weights if options.weights is not None else path.weights, float)
+        self.vestibular = perception_models.get_model(options.perception) if options.perception else None
+        self.filter = self.vestibular.discretize(self.h_sub) if self.vestibular else None
+        self.nz = self.vestibular.n_states if self.vestibular else 0
+        n = model.n
+        self.nx, self.nu = 2 * n + self.nz, n
+        self._stage = self._stage_function()
+        self._build_nlp()
+        self.build_time = time.perf_counter() - start
+
+    # ------------------------------------------------------------------------------------------
+    # data on the sub-step grid
+
+    def sub_times(self) -> np.ndarray:
+        """(N, m + 1) absolute times of every interval's sub-step points."""
+        return self.t_nodes[:-1, None] + self.tau_sub[None, :]
+
+    def stage_data(self) -> np.ndarray:
+        """(nd, N) the desired values each interval's stage function compares with."""
+        times = self.sub_times()
+        if self.modulus:
+            return self.path.sample_modulus(times).T  # (m + 1, N)
+        S_d = self.path.sample(times.ravel()).reshape(self.N, self.m + 1, 6)
+        if self.vestibular is None:
+            return S_d.reshape(self.N, -1).T  # column k: S_d at the sub-step points of interval k
+        # perceived desired path, from the steady state of its first sample, held over each sub-step
+        y_d = self.filter.simulate(S_d[:, :-1, :].reshape(-1, 6))[0]
+        return y_d.reshape(self.N, -1).T
+
+    def initial_filter_state(self, S0) -> np.ndarray:
+        """Filter state at t = 0: the steady state of the cabin's first S (felt as steady)."""
+        return self.filter.steady_state(S0)
+
+    # ------------------------------------------------------------------------------------------
+    # the stage: one control interval
+
+    def _stage_function(self) -> ca.Function:
+        n, m, h = self.model.n, self.m, self.h_sub
+        fn = self.model.functions
+        x, u = ca.SX.sym("x", self.nx), ca.SX.sym("u", self.nu)
+        q, qd, z = x[:n], x[n:2 * n], x[2 * n:]
+        lim = self.model.limits
+        margin = 1.0 - self.options.margin
+        weights = ca.DM(self.weights)
+        bounded = [i for i in range(n) if np.isfinite(lim["position_max"][i])]
+        nd = (m + 1) if self.modulus else (m * 6 if self.vestibular else (m + 1) * 6)
+        d = ca.SX.sym("d", nd)
+        values, taus, powers, positions = [], [], [], []
+        for j, tj in enumerate(self.tau_sub):
+            qj = q + qd * tj + 0.5 * u * tj**2
+            qdj = qd + u * tj
+            if self.modulus:
+                values.append(fn["modulus"](qj, qdj, u) - d[j])
+            else:
+                values.append(fn["S"](qj, qdj, u))
+            tau = fn["tau"](qj, qdj, u)
+            taus.append(tau / ca.DM(lim["effort"] * margin))
+            powers.append(tau * qdj / ca.DM(lim["power"] * margin))
+            if 0 < j < m and bounded:
+                positions.append(qj[bounded])
+        T = self.path.duration
+        trapezoid = np.full(m + 1, h)
+        trapezoid[[0, -1]] = 0.5 * h
+        cost = 0
+        if self.modulus:
+            cost = sum(trapezoid[j] * values[j] ** 2 for j in range(m + 1))
+        elif self.vestibular is None:
+            for j in range(m + 1):
+                e = values[j] - d[6 * j: 6 * j + 6]
+                cost += trapezoid[j] * ca.dot(weights * e, e)
+        else:
+            A, B = ca.DM(self.filter.Ad), ca.DM(self.filter.Bd)
+            C, D = ca.DM(self.filter.C), ca.DM(self.filter.D)
+            for j in range(m):  # zero-order hold of S over each sub-step
+                e = C @ z + D @ values[j] - d[6 * j: 6 * j + 6]
+                cost += h * ca.dot(weights * e, e)
+                z = A @ z + B @ values[j]
+        reg = self.options.regularisation * self.options.h_u * ca.sumsqr(u / ca.DM(lim["acceleration"]))
+        x_next = ca.vertcat(q + qd * self.options.h_u + 0.5 * u * self.options.h_u**2,
+                            qd + u * self.options.h_u, z)
+        g = ca.vertcat(*positions, *taus, *powers)
+        self.n_path = g.numel()
+        self.n_positions = sum(p.numel() for p in positions)
+        return ca.Function("stage", [x, u, d], [x_next, (cost + reg) / T, g], ["x", "u", "d"],
+                           ["x_next", "L", "g"])
+
+    # ------------------------------------------------------------------------------------------
+    # the NLP
+
+    def _build_nlp(self) -> None:
+        N, nx, nu = self.N, self.nx, self.nu
+        nw = nx + nu
+        w = ca.MX.sym("w", N * nw + nx)  # stage order x0, u0, x1, u1, ..., xN (fatrop)
+        XU = ca.reshape(w[: N * nw], nw, N)
+        X, U = XU[:nx, :], XU[nx:, :]
+        X_next = ca.horzcat(X[:, 1:], w[N * nw:])
+        data = ca.DM(self.stage_data())
+        x_next, L, g = self._stage.map(N, "serial")(X, U, data)
+        G = ca.vertcat(X_next - x_next, g)  # per stage: gap, then path constraints
+        # With perception, the filters start in the steady state of the first S: the person has sat
+        # still before the run, and the optimiser may not choose what they felt before t = 0.
+        initial = self._initial_constraint()(X[:, 0], U[:, 0])
+        self.n_initial = initial.numel()
+        g_all = ca.vertcat(G[:nx, 0], initial, G[nx:, 0], ca.vec(G[:, 1:]))
+        self.nlp = {"x": w, "f": ca.sum2(L), "g": g_all}
+        stage_eq = [True] * nx + [False] * self.n_path
+        self.equality = stage_eq[:nx] + [True] * self.n_initial + stage_eq[nx:] + stage_eq * (N - 1)
+        self._derivatives = self._derivative_functions(w, XU, data)
+        self._bounds()
+        self.solver = self._solver()
+
+    def _initial_constraint(self) -> ca.Function:
+        x, u = ca.SX.sym("x", self.nx), ca.SX.sym("u", self.nu)
+        residual = ca.SX(0, 1)
+        if self.nz:
+            n = self.model.n
+            steady = np.linalg.solve(np.eye(self.nz) - self.filter.Ad, self.filter.Bd)
+            residual = x[2 * n:] - ca.DM(steady) @ self.model.functions["S"](x[:n], x[n:2 * n], u)
+        return ca.Function("initial", [x, u], [residual])
+
+    def _derivative_functions(self, w, XU, data) -> dict[str, ca.Function]:
+        """Exact Jacobian of the constraints and Hessian of the Lagrangian, assembled from stages.
+
+        The gap constraints x_{k+1} - F(x_k, u_k) are linear in x_{k+1}, so in stage order the Hessian
+        is block diagonal and the Jacobian block bidiagonal. Differentiating one stage symbolically and
+        mapping the result over the horizon is three to four times faster to evaluate than
+        differentiating through the mapped stage (measured on the full configuration).
+        """
+        N, nx, nu, nw, ni = self.N, self.nx, self.nu, self.nx + self.nu, self.n_initial
+        x, u = ca.SX.sym("x", nx), ca.SX.sym("u", nu)
+        d = ca.SX.sym("d", self._stage.size1_in(2))
+        x_next, L, g = self._stage(x, u, d)
+        init = self._initial_constraint()(x, u)
+        xu = ca.vertcat(x, u)
+        sigma, l_gap, l_init, l_path = (ca.SX.sym(k, m) for k, m in
+                                        (("sigma", 1), ("l_gap", nx), ("l_init", ni), ("l_path", g.numel())))
+        lagrangian = sigma * L - ca.dot(l_gap, x_next) + ca.dot(l_path, g)
+        H = ca.triu(ca.hessian(lagrangian, xu)[0])
+        H0 = ca.triu(ca.hessian(lagrangian + ca.dot(l_init, init), xu)[0])
+        J = ca.jacobian(ca.vertcat(-x_next, g), xu)
+        J0 = ca.jacobian(ca.vertcat(-x_next, init, g), xu)
+        hess = ca.Function("stage_hess", [x, u, d, sigma, l_gap, l_path], [H])
+        hess0 = ca.Function("stage_hess0", [x, u, d, sigma, l_gap, l_init, l_path], [H0])
+        jac = ca.Function("stage_jac", [x, u, d], [J])
+        jac0 = ca.Function("stage_jac0", [x, u, d], [J0])
+
+        lam_f, lam_g = ca.MX.sym("lam_f"), ca.MX.sym("lam_g", self.nlp["g"].numel())
+        npath = self.n_path
+        X, U = XU[:nx, :], XU[nx:, :]
+        l0 = lam_g[: nx + ni + npath]
+        h_blocks = [hess0(X[:, 0], U[:, 0], data[:, 0], lam_f, l0[:nx], l0[nx:nx + ni], l0[nx + ni:])]
+        j_blocks = [jac0(X[:, 0], U[:, 0], data[:, 0])]
+        if N > 1:
+            rest = ca.reshape(lam_g[nx + ni + npath:], nx + npath, N - 1)
+            hm = hess.map(N - 1, "serial")(X[:, 1:], U[:, 1:], data[:, 1:], ca.repmat(lam_f, 1, N - 1),
+                                           rest[:nx, :], rest[nx:, :])
+            jm = jac.map(N - 1, "serial")(X[:, 1:], U[:, 1:], data[:, 1:])
+            h_blocks += [hm[:, k * nw:(k + 1) * nw] for k in range(N - 1)]
+            j_blocks += [jm[:, k * nw:(k + 1) * nw] for k in range(N - 1)]
+        hessian = ca.diagcat(*h_blocks, ca.MX(nx, nx))
+        # the +I of x_{k+1} in the gap rows of stage k
+        row0 = np.r_[0, nx + ni + npath + (nx + npath) * np.arange(N - 1)]
+        rows = (row0[:, None] + np.arange(nx)[None, :]).ravel()
+        cols = (nw * np.arange(1, N + 1)[:, None] + np.arange(nx)[None, :]).ravel()
+        n_g = self.nlp["g"].numel()
+        identity = ca.DM(ca.Sparsity.triplet(n_g, N * nw + nx, rows.tolist(), cols.tolist()), 1.0)
+        jacobian = ca.diagcat(*j_blocks, ca.MX(0, nx)) + identity
+        p = ca.MX(0, 1)
+        return {
+            "hess_lag": ca.Function("nlp_hess_l", [w, p, lam_f, lam_g], [hessian],
+                                    ["x", "p", "lam_f", "lam_g"], ["hess_gamma_x_x"]),
+            "jac_g": ca.Function("nlp_jac_g", [w, p], [self.nlp["g"], jacobian], ["x", "p"], ["g", "jac_g_x"]),
+        }
+
+    def _bounds(self) -> None:
+        n, N, nx, nu, o = self.model.n, self.N, self.nx, self.nu, self.options
+        lim = self.model.limits
+        amax = lim["acceleration"]
+        backoff = amax * self.h_sub**2 / 8.0  # bulge of a parabola between two sub-step points
+        qmin = lim["position_min"] + np.where(np.isfinite(lim["position_min"]), backoff, 0.0)
+        qmax = lim["position_max"] - np.where(np.isfinite(lim["position_max"]), backoff, 0.0)
+        x_lo = np.r_[qmin, -lim["velocity"], np.full(self.nz, -np.inf)]
+        x_hi = np.r_[qmax, lim["velocity"], np.full(self.nz, np.inf)]
+        lbx = np.tile(np.r_[x_lo, -amax], N)
+        ubx = np.tile(np.r_[x_hi, amax], N)
+        lbx, ubx = np.r_[lbx, x_lo], np.r_[ubx, x_hi]
+        last = slice(N * (nx + nu), N * (nx + nu) + nx)
+        if o.initial in ("rest", "given"):
+            lbx[n:2 * n] = ubx[n:2 * n] = 0.0
+        if o.initial == "given":
+            q0, qd0 = (np.asarray(v, dtype=float).reshape(n) for v in o.initial_state)
+            lbx[:n] = ubx[:n] = q0
+            lbx[n:2 * n] = ubx[n:2 * n] = qd0
+        if o.final in ("rest", "centre"):
+            lo, hi = lbx[last], ubx[last]  # views into lbx, ubx
+            lo[n:2 * n] = hi[n:2 * n] = 0.0
+            if o.final == "centre":
+                prismatic = [k for k, i in enumerate(self.model.config.free)
+                             if self.model.params.joints[i].kind == "prismatic"]
+                lo[prismatic] = hi[prismatic] = 0.0
+        self.lbx, self.ubx = lbx, ubx
+        n_pos = self.n_positions
+        lbg_stage = np.r_[np.zeros(nx), np.tile(qmin[np.isfinite(qmin)], self.m - 1)[:n_pos],
+                          -np.ones(self.n_path - n_pos)]
+        ubg_stage = np.r_[np.zeros(nx), np.tile(qmax[np.isfinite(qmax)], self.m - 1)[:n_pos],
+                          np.ones(self.n_path - n_pos)]
+        self.lbg = np.r_[lbg_stage[:nx], np.zeros(self.n_initial), lbg_stage[nx:], np.tile(lbg_stage, N - 1)]
+        self.ubg = np.r_[ubg_stage[:nx], np.zeros(self.n_initial), ubg_stage[nx:], np.tile(ubg_stage, N - 1)]
+
+    def _solver(self) -> ca.Function:
+        o = self.options
+        size = self.N * self._stage.n_instructions()
+        auto = size <= EXPAND_LIMIT and self.solves >= EXPAND_SOLVES
+        self.expanded = o.expand if o.expand is not None else auto
+        if o.solver == "ipopt":
+            opts = {"ipopt": {"print_level": 0, "max_iter": o.max_iter, "tol": o.tol,
+                              "sb": "yes", "mu_strategy": "adaptive",
+                              "linear_solver": "mumps"},
+                    "print_time": False, "expand": self.expanded}
+            if not self.expanded:  # a flat graph differentiates well by itself
+                opts.update(self._derivatives)
+            return ca.nlpsol("cueing", "ipopt", self.nlp, opts)
+        opts = {"structure_detection": "auto", "equality": self.equality, "print_time": False,
+                "expand": self.expanded,
+                "fatrop": {"print_level": 0, "max_iter": o.max_iter, "tol": o.tol}}
+        return ca.nlpsol("cueing", "fatrop", self.nlp, opts)
+
+    # ------------------------------------------------------------------------------------------
+
+    def pack(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
+        """Decision vector from node states (N + 1, nx) and controls (N, nu)."""
+        return np.r_[np.hstack([x[:-1], u]).ravel(), x[-1]]
+
+    def unpack(self, w) -> tuple[np.ndarray, np.ndarray]:
+        w = np.asarray(w, dtype=float).ravel()
+        N, nx, nu = self.N, self.nx, self.nu
+        XU = w[: N * (nx + nu)].reshape(N, nx + nu)
+        return np.vstack([XU[:, :nx], w[N * (nx + nu):]]), XU[:, nx:]
+
+    def states_from(self, q0, qd0, u) -> np.ndarray:
+        """Node states (N + 1, nx) of a guess: the exact double integral of ``u``, clipped to the limits,
+        filter states at the steady state of the first S."""
+        n, h, lim = self.model.n, self.options.h_u, self.model.limits
+        q, qd = np.empty((self.N + 1, n)), np.empty((self.N + 1, n))
+        q[0], qd[0] = q0, qd0
+        for k in range(self.N):
+            q[k + 1] = q[k] + qd[k] * h + 0.5 * u[k] * h * h
+            qd[k + 1] = np.clip(qd[k] + u[k] * h, -lim["velocity"], lim["velocity"])
+            q[k + 1] = np.clip(q[k + 1], lim["position_min"], lim["position_max"])
+        x = np.hstack([q, qd])
+        if self.nz:
+            S0 = self.model.S(q0, qd0, u[0])
+            x = np.hstack([x, np.tile(self.initial_filter_state(S0), (self.N + 1, 1))])
+        return x
+
+    def solve(self, x_guess: np.ndarray, u_guess: np.ndarray, warm: Solution | None = None) -> Solution:
+        """Solve from a guess of node states (N + 1, nx) and controls (N, nu), optionally warm-started
+        with the multipliers of an earlier solution of a problem of the same shape."""
+        args = {"x0": self.pack(x_guess, u_guess), "lbx": self.lbx, "ubx": self.ubx,
+                "lbg": self.lbg, "ubg": self.ubg}
+        if warm is not None and warm.lam_g is not None and self.options.solver == "ipopt":
+            args.update(lam_g0=warm.lam_g, lam_x0=warm.lam_x)
+        start = time.perf_counter()
+        sol = self.solver(**args)
+        elapsed = time.perf_counter() - start
+        stats = self.solver.stats()
+        x, u = self.unpack(sol["x"])
+        status = str(stats.get("return_status", stats.get("unified_return_status", "unknown")))
+        return Solution(t_nodes=self.t_nodes.copy(), x=x, u=u, cost=float(sol["f"]), status=status,
+                        success=bool(stats["success"]), iterations=int(stats.get("iter_count", -1)),
+                        solve_time=elapsed, lam_g=np.asarray(sol["lam_g"]).ravel(),
+                        lam_x=np.asarray(sol["lam_x"]).ravel())

@@ -1,0 +1,178 @@
+"""Plant integration and the independent limit check.
+
+Whatever an optimiser or controller returns is re-simulated here, independently of how it was
+computed: the joint accelerations are integrated with NumPy on a grid ``fine`` times finer than the
+optimiser's, every limit of eq. 3.3-3.5 is evaluated on that grid, and S (and the perceived S) is
+compared with S_d there. A trajectory that uses more than 1 + 1e-6 of any limit is an error
+(:class:`LimitViolation`), never a result.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from desdemona import perception as perception_models
+from desdemona.model import Model
+from desdemona.profiles import DesiredPath
+
+TOLERANCE = 1e-6
+LIMIT_NAMES = ("position", "velocity", "acceleration", "effort", "power")
+
+
+class LimitViolation(RuntimeError):
+    """A trajectory exceeds a limit of the machine; carries the :class:`LimitCheck`."""
+
+    def __init__(self, check: "LimitCheck", what: str = "trajectory"):
+        self.check = check
+        super().__init__(f"{what} violates the machine's limits: {check.describe_violations()}")
+
+
+@dataclass(frozen=True, eq=False)
+class Trajectory:
+    """A joint trajectory with everything felt and demanded along it, on a time grid.
+
+    t : (K,) [s]; q, qd, qdd, tau, power : (K, n) of the free joints; S, S_d : (K, 6);
+    S_perc, S_d_perc : (K, 6) perceived paths where a perception model was used, else None;
+    M, M_d : (K,) modulus of the specific force and its desired value (eq. 7.1, 7.2).
+    """
+
+    t: np.ndarray
+    q: np.ndarray
+    qd: np.ndarray
+    qdd: np.ndarray
+    tau: np.ndarray
+    power: np.ndarray
+    S: np.ndarray
+    S_d: np.ndarray | None
+    M: np.ndarray
+    M_d: np.ndarray
+    S_perc: np.ndarray | None = None
+    S_d_perc: np.ndarray | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class LimitCheck:
+    """Worst use of every limit (1 = at the limit) and the fine-grid errors of a trajectory.
+
+    use : {limit name: (n,) worst use per free joint}; worst : {limit name: worst over joints};
+    rms : weighted RMS of S - S_d (eq. 5.1 with Q), or of M - M_d for a modulus path;
+    rms_channels : (6,) RMS per channel of S - S_d (None for a modulus path);
+    rms_perceived : weighted RMS of the perceived difference, where perception was on;
+    rms_modulus : RMS of M - M_d; step : the fine grid's step [s].
+    """
+
+    use: dict
+    worst: dict
+    rms: float
+    rms_channels: np.ndarray | None
+    rms_perceived: float | None
+    rms_modulus: float
+    step: float
+    joint_names: tuple[str, ...] = field(default=())
+
+    @property
+    def passed(self) -> bool:
+        return all(v <= 1.0 + TOLERANCE for v in self.worst.values())
+
+    @property
+    def worst_use(self) -> float:
+        return max(self.worst.values())
+
+    def describe_violations(self) -> str:
+        parts = []
+        for name in LIMIT_NAMES:
+            for k, value in enumerate(self.use[name]):
+                if value > 1.0 + TOLERANCE:
+                    joint = self.joint_names[k] if self.joint_names else f"joint {k}"
+                    parts.append(f"{name} of {joint} at {value:.6g} x its limit")
+        return "; ".join(parts) if parts else "none"
+
+
+def integrate(t_nodes, q0, qd0, u, times) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Joint positions, rates and accelerations at ``times`` for accelerations ``u`` held per interval.
+
+    t_nodes : (N + 1,) control grid; q0, qd0 : (n,) initial state; u : (N, n).
+    Each time belongs to the interval that starts at or before it (the last node to the last
+    interval). The states at the nodes are accumulated exactly, then each time is reached from its
+    interval's start: the double integral of a piecewise-constant acceleration.
+    """
+    t_nodes, u = np.asarray(t_nodes, float), np.asarray(u, float)
+    h = np.diff(t_nodes)[:, None]
+    qd_nodes = np.vstack([qd0, qd0 + np.cumsum(u * h, axis=0)])
+    q_nodes = np.vstack([q0, q0 + np.cumsum(qd_nodes[:-1] * h + 0.5 * u * h * h, axis=0)])
+    k = np.clip(np.searchsorted(t_nodes, times, side="right") - 1, 0, len(u) - 1)
+    dt = (np.asarray(times, float) - t_nodes[k])[:, None]
+    qdd = u[k]
+    return q_nodes[k] + qd_nodes[k] * dt + 0.5 * qdd * dt * dt, qd_nodes[k] + qdd * dt, qdd
+
+
+def fine_grid(t_nodes, step: float) -> np.ndarray:
+    """Times from t_nodes[0] to t_nodes[-1] at ``step`` or finer, containing every node."""
+    pieces = []
+    for a, b in zip(t_nodes[:-1], t_nodes[1:]):
+        count = max(1, int(np.ceil((b - a) / step - 1e-9)))
+        pieces.append(np.linspace(a, b, count, endpoint=False))
+    return np.concatenate(pieces + [np.asarray(t_nodes[-1:])])
+
+
+def evaluate(model: Model, path: DesiredPath, t, q, qd, qdd, perception: str | None = None) -> Trajectory:
+    """Everything along a trajectory of the free joints: torques, power, S, and what S_d asks there."""
+    S = model.S(q, qd, qdd)
+    tau = model.tau(q, qd, qdd)
+    M = np.linalg.norm(S[:, 3:], axis=1)
+    S_d = path.sample(t) if path.S_d is not None else None
+    S_perc = S_d_perc = None
+    if perception and S_d is not None:
+        vestibular = perception_models.get_model(perception)
+        # t is uniform away from the last point; the filters hold each sample over one step
+        step = float(np.median(np.diff(t)))
+        S_perc = vestibular.perceive(S, step)
+        S_d_perc = vestibular.perceive(S_d, step)
+    return Trajectory(t=np.asarray(t, float), q=q, qd=qd, qdd=qdd, tau=tau, power=tau * qd, S=S, S_d=S_d,
+                      M=M, M_d=path.sample_modulus(t), S_perc=S_perc, S_d_perc=S_d_perc)
+
+
+def limit_use(model: Model, traj: Trajectory) -> dict[str, np.ndarray]:
+    """Worst use of each limit per free joint over a trajectory (1 = at the limit)."""
+    lim = model.limits
+    lo, hi = lim["position_min"], lim["position_max"]
+    bounded = np.isfinite(lo) & np.isfinite(hi)
+    mid = 0.5 * (np.where(bounded, lo, 0.0) + np.where(bounded, hi, 0.0))
+    half = np.where(bounded, 0.5 * (np.where(bounded, hi, 1.0) - np.where(bounded, lo, -1.0)), np.inf)
+    return {
+        "position": np.max(np.abs(traj.q - mid) / half, axis=0),
+        "velocity": np.max(np.abs(traj.qd) / lim["velocity"], axis=0),
+        "acceleration": np.max(np.abs(traj.qdd) / lim["acceleration"], axis=0),
+        "effort": np.max(np.abs(traj.tau) / lim["effort"], axis=0),
+        "power": np.max(np.abs(traj.power) / lim["power"], axis=0),
+    }
+
+
+def check(model: Model, path: DesiredPath, t_nodes, q0, qd0, u, step: float, fine: int = 10,
+          weights=None, perception: str | None = None) -> tuple[LimitCheck, Trajectory]:
+    """The independent check: re-integrate ``u`` on a grid ``fine`` times finer than ``step``.
+
+    step : the optimiser's finest grid (its sub-step) [s]; weights : diagonal of Q, default the path's.
+    Returns the check and the fine-grid trajectory.
+    """
+    t = fine_grid(np.asarray(t_nodes, float), step / fine)
+    q, qd, qdd = integrate(t_nodes, q0, qd0, u, t)
+    traj = evaluate(model, path, t, q, qd, qdd, perception)
+    use = limit_use(model, traj)
+    rms_modulus = float(np.sqrt(np.mean((traj.M - traj.M_d) ** 2)))
+    w = np.asarray(weights if weights is not None else path.weights, float)
+    rms_channels = rms_perceived = None
+    if model.config.modulus_cost or traj.S_d is None:
+        rms = rms_modulus
+    else:
+        diff = traj.S - traj.S_d
+        rms_channels = np.sqrt(np.mean(diff**2, axis=0))
+        rms = float(np.sqrt(np.mean(diff**2 @ w)))
+        if traj.S_perc is not None:
+            rms_perceived = float(np.sqrt(np.mean((traj.S_perc - traj.S_d_perc) ** 2 @ w)))
+    result = LimitCheck(use=use, worst={k: float(v.max()) for k, v in use.items()}, rms=rms,
+                        rms_channels=rms_channels, rms_perceived=rms_perceived, rms_modulus=rms_modulus,
+                        step=step / fine, joint_names=model.config.joint_names)
+    return result, traj
