@@ -3,16 +3,20 @@
 from __future__ import annotations
 
 import argparse
+import os
 import sys
+from pathlib import Path
 
 import numpy as np
 
-from desdemona import __version__
+from desdemona import __version__, profiles
+from desdemona import perception as perception_models
 from desdemona.configs import CONFIGURATIONS, get_configuration
 from desdemona.model import Model
 from desdemona.params import BUILTIN_SETS, ParameterError, load_params
 
 EXIT_USAGE = 2
+EXIT_UNSAFE = 3  # no trajectory within every limit was found: nothing is written
 
 
 class UserError(Exception):
@@ -22,11 +26,17 @@ class UserError(Exception):
 def main(argv: list[str] | None = None) -> int:
     parser = _parser()
     args = parser.parse_args(argv)
+    from desdemona.report import ReportError
+    from desdemona.simulate import LimitViolation
+
     try:
         return args.run(args)
-    except (UserError, ParameterError) as exc:
+    except (UserError, ParameterError, profiles.ProfileError, ReportError) as exc:
         print(f"desdemona: error: {exc}", file=sys.stderr)
         return EXIT_USAGE
+    except LimitViolation as exc:
+        print(f"desdemona: no result written: {exc}", file=sys.stderr)
+        return EXIT_UNSAFE
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -42,12 +52,47 @@ def _parser() -> argparse.ArgumentParser:
                     "(path S, torques, power, inertia) at one sample state.")
     _add_machine_options(model)
     model.set_defaults(run=_run_model)
+
+    opt = sub.add_parser(
+        "optimize", help="compute the best joint trajectory for a desired path (off-line)",
+        description="Compute the joint trajectory that makes the cabin's path S follow the desired S_d as "
+                    "closely as possible within every limit of the machine, check it independently on a "
+                    "10x finer grid, and write a result folder: trajectory.csv, summary.json, "
+                    "trajectory.mat and figures.")
+    opt.add_argument("profile", metavar="PROFILE_OR_CSV",
+                     help="a built-in profile (see 'desdemona profiles') or a CSV file with header "
+                          "t,wx,wy,wz,fx,fy,fz (SI units) or t,M")
+    _add_machine_options(opt, default_config="yaw-track-cabin")
+    opt.add_argument("--out", required=True, metavar="DIR", help="result folder to create")
+    opt.add_argument("--method", choices=("ipopt", "fatrop", "thesis"), default="ipopt",
+                     help="ipopt or fatrop: our exact-derivative solver; thesis: the thesis' own "
+                          "least-squares method, for comparison (default: ipopt)")
+    opt.add_argument("--perception", choices=tuple(perception_models.MODELS), default=None,
+                     help="minimise the perceived difference through this vestibular model")
+    opt.add_argument("--starts", type=int, default=4, metavar="N", help="initial guesses (default: 4)")
+    opt.add_argument("--workers", type=int, default=1, metavar="N",
+                     help="parallel processes for the starts (default: 1)")
+    opt.add_argument("--seed", type=int, default=0, help="seed of the random starts (default: 0)")
+    opt.add_argument("--h-u", type=float, default=0.05, metavar="SECONDS", dest="h_u",
+                     help="control step: joint accelerations are held this long (default: 0.05)")
+    opt.add_argument("--overwrite", action="store_true", help="replace DIR if it exists")
+    opt.set_defaults(run=_run_optimize)
+
+    prof = sub.add_parser("profiles", help="list the built-in desired paths",
+                          description="List the built-in desired paths with a one-line description.")
+    prof.set_defaults(run=_run_profiles)
+
+    plot = sub.add_parser("plot", help="re-draw the figures of a result folder",
+                          description="Re-draw the PNG figures of a result folder from its trajectory.csv "
+                                      "and summary.json.")
+    plot.add_argument("folder", metavar="DIR")
+    plot.set_defaults(run=_run_plot)
     return parser
 
 
-def _add_machine_options(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--config", default="full", metavar="NAME",
-                        help=f"configuration, one of: {', '.join(CONFIGURATIONS)} (default: full)")
+def _add_machine_options(parser: argparse.ArgumentParser, default_config: str = "full") -> None:
+    parser.add_argument("--config", default=default_config, metavar="NAME",
+                        help=f"configuration, one of: {', '.join(CONFIGURATIONS)} (default: {default_config})")
     parser.add_argument("--params", metavar="FILE",
                         help="TOML file overriding any subset of the machine parameters")
     parser.add_argument("--base", choices=BUILTIN_SETS, default=None,
@@ -65,6 +110,81 @@ def _machine(args) -> Model:
 def _run_model(args) -> int:
     model = _machine(args)
     print(describe(model))
+    return 0
+
+
+def _load_profile(name: str) -> profiles.DesiredPath:
+    if name in profiles.PROFILES:
+        return profiles.get_profile(name)
+    if name.lower().endswith(".csv") or os.path.exists(name):
+        if not os.path.exists(name):
+            raise UserError(f"{name}: file not found")
+        return profiles.read_csv(name)
+    return profiles.get_profile(name)  # raises, listing the built-in profiles
+
+
+def _run_optimize(args) -> int:
+    from desdemona import report
+    from desdemona.baselines import ThesisOptions
+    from desdemona.offline import OptimizeOptions, optimize, thesis_result
+    from desdemona.problem import ProblemOptions
+
+    model = _machine(args)
+    path = _load_profile(args.profile)
+    out = Path(args.out)
+    if out.exists() and not args.overwrite:
+        raise UserError(f"{out}: already exists; choose another folder or add --overwrite")
+    if not out.resolve().parent.is_dir() or not os.access(out.resolve().parent, os.W_OK):
+        raise UserError(f"{out}: cannot create it: {out.resolve().parent} is not a writable folder")
+    if args.starts < 1 or args.workers < 1:
+        raise UserError("--starts and --workers must be at least 1")
+    if not 0 < args.h_u <= path.duration:
+        raise UserError(f"--h-u {args.h_u:g}: must be positive and at most the path's {path.duration:g} s")
+    if model.config.modulus_cost and args.perception:
+        raise UserError("--perception applies to the full path S, not to the dfs modulus")
+    if not model.config.modulus_cost and path.S_d is None:
+        raise UserError(f"configuration {model.config.name!r} needs a full path t,wx,wy,wz,fx,fy,fz; "
+                        f"{args.profile} gives only the modulus (use --config dfs)")
+    progress = _progress_bar() if sys.stderr.isatty() else None
+    if args.method == "thesis":
+        result = thesis_result(path, model.config, model.params,
+                               ThesisOptions(h_u=max(args.h_u, 0.1), starts=args.starts, seed=args.seed))
+    else:
+        problem = ProblemOptions(h_u=args.h_u, solver=args.method, perception=args.perception)
+        options = OptimizeOptions(problem, starts=args.starts, seed=args.seed, workers=args.workers)
+        result = optimize(path, model.config, model.params, options, progress=progress)
+    report.write(result, out, command=report.command_line(), overwrite=args.overwrite)
+    c = result.check
+    print(f"{path.name} on {model.config.name}: RMS(S - S_d) = {c.rms:.4g} "
+          f"(perceived {c.rms_perceived:.4g})" if c.rms_perceived is not None else
+          f"{path.name} on {model.config.name}: RMS = {c.rms:.4g}", end="")
+    print(f", worst limit use {c.worst_use:.4f}, solver {result.solution.status}, "
+          f"{result.timings['wall']:.2f} s; written to {out}")
+    return 0
+
+
+def _progress_bar():
+    def show(done, total):
+        bar = "#" * done + "." * (total - done)
+        print(f"\r  starts [{bar}] {done}/{total}", end="" if done < total else "\n", file=sys.stderr,
+              flush=True)
+    return show
+
+
+def _run_profiles(args) -> int:
+    for name in profiles.PROFILES:
+        path = profiles.get_profile(name)
+        kind = "modulus only (dfs)" if path.S_d is None else "full path"
+        print(f"{name:<16} {path.duration:5.1f} s  {kind:<18}  {path.description}")
+    return 0
+
+
+def _run_plot(args) -> int:
+    from desdemona import report
+
+    traj, summary = report.load(args.folder)
+    for figure in report.draw_figures(traj, summary, args.folder):
+        print(figure)
     return 0
 
 

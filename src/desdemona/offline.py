@@ -167,9 +167,11 @@ def _worker_solve(guesses):
 
 
 def optimize(path: DesiredPath, config: str | Configuration = "yaw-track-cabin",
-             params: MachineParams | None = None, options: OptimizeOptions = OptimizeOptions()) -> Result:
+             params: MachineParams | None = None, options: OptimizeOptions = OptimizeOptions(),
+             progress=None) -> Result:
     """The best checked joint trajectory for a desired path (thesis chapters 3-7, off-line).
 
+    progress : optional callable ``progress(done, total)`` told after each start.
     Raises :class:`LimitViolation` when no start yields a trajectory within every limit.
     """
     wall = time.perf_counter()
@@ -191,7 +193,11 @@ def optimize(path: DesiredPath, config: str | Configuration = "yaw-track-cabin",
         order = {name: i for i, (name, _, _) in enumerate(guesses)}
         solved.sort(key=lambda item: order[item[0]])
     else:
-        solved = [(name, _solve_one(full, rough, x, u)) for name, x, u in guesses]
+        solved = []
+        for name, x, u in guesses:
+            solved.append((name, _solve_one(full, rough, x, u)))
+            if progress is not None:
+                progress(len(solved), len(guesses))
     candidates, reports = [], []
     for name, sol in solved:
         result_check, _ = _check(full, sol)
@@ -231,3 +237,38 @@ def optimize(path: DesiredPath, config: str | Configuration = "yaw-track-cabin",
 def _check(problem: CueingProblem, sol: Solution) -> tuple[LimitCheck, Trajectory]:
     return check(problem.model, problem.path, sol.t_nodes, sol.q0, sol.qd0, sol.u, problem.h_sub,
                  weights=problem.weights, perception=problem.options.perception)
+
+
+def thesis_result(path: DesiredPath, config: str | Configuration = "yaw-track",
+                  params: MachineParams | None = None, options=None) -> Result:
+    """The thesis' own method (:func:`desdemona.baselines.optimize_thesis`), checked and packaged like ours.
+
+    Its best start that keeps every limit on the fine grid is returned; :class:`LimitViolation` if none.
+    """
+    options = baselines.ThesisOptions() if options is None else options
+    wall = time.perf_counter()
+    params = default_params() if params is None else params
+    config = get_configuration(config)
+    problem, runs = baselines.optimize_thesis(path, config, params, options)
+    step = float(np.min(np.diff(path.t)))
+    reports, candidates = [], []
+    for k, run in enumerate(runs):
+        result_check, _ = check(problem.model, path, run.t_nodes, run.q0, run.qd0, run.u, step)
+        reports.append(StartReport(f"random {k}", run.message, result_check.passed, run.iterations,
+                                   run.solve_time, run.cost, result_check.rms, result_check.worst_use,
+                                   result_check.passed))
+        candidates.append((result_check, run))
+    passed = [(c, r) for c, r in candidates if c.passed]
+    if not passed:
+        raise LimitViolation(min(candidates, key=lambda cr: cr[0].worst_use)[0], "the thesis method's trajectory")
+    chosen_check, run = min(passed, key=lambda cr: cr[0].rms)
+    q, qd, _ = integrate(run.t_nodes, run.q0, run.qd0, run.u, run.t_nodes)
+    solution = Solution(t_nodes=run.t_nodes, x=np.hstack([q, qd]), u=run.u, cost=run.cost, status=run.message,
+                        success=True, iterations=run.iterations, solve_time=run.solve_time)
+    t = path.t[path.t <= run.t_nodes[-1] + 1e-12]
+    q, qd, qdd = integrate(run.t_nodes, run.q0, run.qd0, run.u, t)
+    trajectory = evaluate(problem.model, path, t, q, qd, qdd)
+    timings = {"build": 0.0, "solve": sum(r.solve_time for r in runs), "wall": time.perf_counter() - wall}
+    return Result(path=path, config=config, params=params, options=options, method="thesis",
+                  solution=solution, trajectory=trajectory, check=chosen_check, starts=tuple(reports),
+                  timings=timings)

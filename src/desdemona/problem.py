@@ -54,6 +54,8 @@ from desdemona.profiles import DesiredPath
 # cosine): it pays from about five solves of the same problem on, and only while it stays this small.
 EXPAND_LIMIT = 400_000
 EXPAND_SOLVES = 5
+# The stages' Jacobians and Hessians are independent: evaluate them on two threads.
+MAP_MODE, MAP_THREADS = "thread", 2
 
 
 @dataclass(frozen=True)
@@ -313,9 +315,9 @@ class CueingProblem:
         j_blocks = [jac0(X[:, 0], U[:, 0], data[:, 0])]
         if N > 1:
             rest = ca.reshape(lam_g[nx + ni + npath:], nx + npath, N - 1)
-            hm = hess.map(N - 1, "serial")(X[:, 1:], U[:, 1:], data[:, 1:], ca.repmat(lam_f, 1, N - 1),
+            hm = hess.map(N - 1, MAP_MODE, MAP_THREADS)(X[:, 1:], U[:, 1:], data[:, 1:], ca.repmat(lam_f, 1, N - 1),
                                            rest[:nx, :], rest[nx:, :])
-            jm = jac.map(N - 1, "serial")(X[:, 1:], U[:, 1:], data[:, 1:])
+            jm = jac.map(N - 1, MAP_MODE, MAP_THREADS)(X[:, 1:], U[:, 1:], data[:, 1:])
             h_blocks += [hm[:, k * nw:(k + 1) * nw] for k in range(N - 1)]
             j_blocks += [jm[:, k * nw:(k + 1) * nw] for k in range(N - 1)]
         hessian = ca.diagcat(*h_blocks, ca.MX(nx, nx))

@@ -8,11 +8,23 @@ modulus M_d = |f_d| (eq. 7.1), which a path may give alone.
 
 from __future__ import annotations
 
+import csv
+import io
+import math
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import numpy as np
 
 G = 9.81
+MAX_SPECIFIC_FORCE = 100.0 * G  # beyond this a file is in the wrong units, not a vehicle's motion
+MAX_ANGULAR_VELOCITY = 50.0  # rad/s, about 8 turns per second
+PATH_COLUMNS = ("t", "wx", "wy", "wz", "fx", "fy", "fz")
+MODULUS_COLUMNS = ("t", "M")
+
+
+class ProfileError(ValueError):
+    """A desired path cannot be used: the message names the file, the line or column, and the problem."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -117,3 +129,224 @@ def catapult(level: float = 20.0, push: float = 2.0, quiet: float = 1.0, rise: f
     S[:, 5] = G
     return DesiredPath("catapult", t, S, weights=(0, 0, 0, 3, 1, 1),
                        description=f"{quiet:g} s quiet, then {push:g} s at {level:g} m/s^2 along y (5.5.2)")
+
+
+def car_lap(duration_target: float = 35.0, straight: float = 120.0, radius: float = 30.0,
+            lateral_max: float = 9.0, accel_max: float = 4.0, brake_max: float = 8.0,
+            speed_max: float = 40.0, dt: float = 0.01) -> DesiredPath:
+    """A car driving one lap of a closed track, like the fast-car run of section 5.5.4 (about 35 s).
+
+    Vehicle model: a point mass on a stadium-shaped track (two straights of ``straight`` m joined by
+    half circles of ``radius`` m, driven anticlockwise), at the fastest speed profile that keeps the
+    lateral acceleration below ``lateral_max``, the driving acceleration below ``accel_max``, the braking
+    below ``brake_max`` [m/s^2] and the speed below ``speed_max`` [m/s] (forward-backward pass over the
+    arc length). The lap starts and ends in the middle of a bend. The cabin's forward axis is
+    +y, +x points to the driver's right, z up; the car's yaw rate is the cabin's omega_z.
+    ``duration_target`` stretches the track so the lap takes about that long.
+    """
+    def lap(scale):
+        ds = 0.05
+        # start and end in the middle of a bend, where the speed is the bend's limit: the lap closes
+        half, full, long = np.pi * radius / 2, np.pi * radius, straight * scale
+        edges = np.cumsum([0.0, half, long, full, long, half])
+        s = np.arange(0.0, edges[-1] + ds / 2, ds)
+        in_bend = (s < edges[1]) | ((s >= edges[2]) & (s < edges[3])) | (s >= edges[4])
+        curvature = np.where(in_bend, 1.0 / radius, 0.0)
+        v = np.minimum(speed_max, np.sqrt(lateral_max / np.maximum(curvature, 1e-9)))
+        for i in range(1, len(s)):  # driving limit, forward
+            v[i] = min(v[i], np.sqrt(v[i - 1] ** 2 + 2 * accel_max * ds))
+        for i in range(len(s) - 2, -1, -1):  # braking limit, backward
+            v[i] = min(v[i], np.sqrt(v[i + 1] ** 2 + 2 * brake_max * ds))
+        time = np.concatenate([[0.0], np.cumsum(ds / (0.5 * (v[1:] + v[:-1])))])
+        return s, v, curvature, time
+
+    scale = 1.0
+    for _ in range(30):  # stretch the straights until the lap time is near the target
+        s, v, curvature, time = lap(scale)
+        scale *= (duration_target / time[-1]) ** 1.5
+        scale = float(np.clip(scale, 0.05, 50.0))
+    t = _grid(time[-1], dt)
+    speed = np.interp(t, time, v)
+    kappa = np.interp(t, time, curvature)
+    longitudinal = np.interp(t, 0.5 * (time[1:] + time[:-1]), np.diff(v) / np.diff(time))
+    S = np.zeros((len(t), 6))
+    S[:, 2] = speed * kappa  # anticlockwise: yaw rate up
+    S[:, 3] = -speed**2 * kappa  # centripetal acceleration points left: -x
+    S[:, 4] = longitudinal
+    S[:, 5] = G
+    return DesiredPath("car-lap", t, S, weights=(1, 1, 1, 1, 1, 1),
+                       description=f"one {t[-1]:.0f} s lap of a {2 * straight * scale + 2 * np.pi * radius:.0f} m "
+                                   f"stadium track, bends of {radius:g} m (5.5.4)")
+
+
+def pulses(count: int = 3, level: float = 15.0, width: float = 1.0, gap: float = 1.5, quiet: float = 1.0,
+           rise: float = 0.15, tail: float = 2.0, dt: float = 0.01) -> DesiredPath:
+    """A train of ``count`` smooth pulses of f_y (the double and triple pulse of 5.5.3 and 5.6.3).
+
+    level [m/s^2]; width [s] at the plateau; gap [s] between pulses; quiet and tail [s] before the
+    first and after the last; rise [s] of each ramp. Errors in f_x cost three times those in f_y.
+    """
+    period = width + 2 * rise + gap
+    duration = quiet + count * period - gap + tail
+    t = _grid(duration, dt)
+    S = np.zeros((len(t), 6))
+    for k in range(count):
+        start = quiet + k * period
+        S[:, 4] += level * (_smooth_step(t, start, rise) - _smooth_step(t, start + rise + width, rise))
+    S[:, 5] = G
+    name = {2: "double-pulse", 3: "triple-pulse"}.get(count, f"{count}-pulse")
+    return DesiredPath(name, t, S, weights=(0, 0, 0, 3, 1, 1),
+                       description=f"{count} pulses of {level:g} m/s^2 along y, {width:g} s each (5.5.3)")
+
+
+def roller_coaster(duration: float = 40.0, seed: int = 3, cutoff_hz: float = 5.0, limit: float = 3.0 * G,
+                   dt: float = 0.01) -> DesiredPath:
+    """A roller-coaster ride for the dynamic flight simulator, treated as in section 7.5.2.
+
+    Generator (documented, deterministic for a seed): a ride of hills and valleys, a sequence of
+    vertical load factors n(t) built from half-sine segments of random duration (1-3 s) and level
+    (0 to 3.5 g, airtime included), plus lateral forces in the bends (+-1 g). The thesis' treatment
+    follows: the modulus of the ride's specific force plus half gravity (so that accelerations below
+    1 g can be simulated), limited to ``limit`` [m/s^2], then low-pass filtered at ``cutoff_hz``
+    (second-order Butterworth, zero phase). Only the modulus is returned (for ``dfs``).
+    """
+    import scipy.signal
+
+    rng = np.random.default_rng(seed)
+    t = _grid(duration, dt)
+    vertical = np.full(len(t), G)
+    lateral = np.zeros(len(t))
+    start = 2.0
+    while start < duration - 1.0:
+        length = rng.uniform(1.0, 3.0)
+        level = rng.uniform(0.0, 3.5) * G
+        inside = (t >= start) & (t < start + length)
+        shape = np.sin(np.pi * (t[inside] - start) / length)
+        vertical[inside] = G + (level - G) * shape
+        if rng.uniform() < 0.4:
+            lateral[inside] = rng.choice([-1.0, 1.0]) * G * shape
+        start += length + rng.uniform(0.3, 1.0)
+    modulus = np.hypot(vertical, lateral) + 0.5 * G
+    modulus = np.minimum(modulus, limit)
+    b, a = scipy.signal.butter(2, cutoff_hz, fs=1.0 / dt)
+    modulus = np.maximum(scipy.signal.filtfilt(b, a, modulus), 0.0)
+    return DesiredPath("roller-coaster", t, None, weights=(0, 0, 0, 1, 1, 1), modulus=modulus,
+                       description=f"a {duration:g} s ride: modulus + g/2, limited to {limit:g} m/s^2, "
+                                   f"{cutoff_hz:g} Hz low-pass (7.5.2)")
+
+
+def dfs_catapult(base: float = 1.5 * G, pulse: float = 1.0 * G, duration: float = 12.0,
+                 dt: float = 0.01) -> DesiredPath:
+    """The on-line catapult of section 7.5.1: pulses superposed on a constant acceleration (modulus).
+
+    base [m/s^2] the steady modulus; pulse [m/s^2] the height of a 2 s launch pulse at 3 s and a 1 s
+    pulse at 8 s.
+    """
+    t = _grid(duration, dt)
+    M = np.full(len(t), base)
+    M += pulse * (_smooth_step(t, 3.0, 0.3) - _smooth_step(t, 5.3, 0.3))
+    M += 0.6 * pulse * (_smooth_step(t, 8.0, 0.2) - _smooth_step(t, 9.2, 0.2))
+    return DesiredPath("dfs-catapult", t, None, modulus=M,
+                       description=f"modulus {base:g} m/s^2 with launch pulses (7.5.1)")
+
+
+#: Built-in profiles: name -> function returning a DesiredPath with its documented defaults.
+PROFILES = {
+    "cosine": cosine,
+    "catapult": catapult,
+    "double-pulse": lambda: pulses(count=2),
+    "triple-pulse": lambda: pulses(count=3),
+    "car-lap": car_lap,
+    "roller-coaster": roller_coaster,
+    "dfs-catapult": dfs_catapult,
+}
+
+
+def get_profile(name: str) -> DesiredPath:
+    """The built-in profile ``name`` with its default parameters."""
+    if name not in PROFILES:
+        raise ProfileError(f"unknown profile {name!r}; built-in profiles: {', '.join(PROFILES)} "
+                           f"(or give a CSV file)")
+    return PROFILES[name]()
+
+
+def read_csv(path: str | Path) -> DesiredPath:
+    """Read a desired path from CSV: header ``t,wx,wy,wz,fx,fy,fz`` (SI) or ``t,M``; ``#`` comments.
+
+    Strict: every problem (missing or unknown column, a value that is not a finite number, time not
+    strictly increasing, fewer than two rows, |f| above 100 g, |omega| above 50 rad/s) raises
+    :class:`ProfileError` naming the file and the line.
+    """
+    path = Path(path)
+    try:
+        text = path.read_text()
+    except OSError as exc:
+        raise ProfileError(f"{path}: cannot read: {exc.strerror or exc}") from None
+    lines = [(i + 1, line) for i, line in enumerate(text.splitlines())
+             if line.strip() and not line.lstrip().startswith("#")]
+    if not lines:
+        raise ProfileError(f"{path}: no header and no data")
+    header_line, header = lines[0]
+    columns = [c.strip() for c in next(csv.reader([header]))]
+    if columns[:1] != ["t"] or tuple(columns) not in (PATH_COLUMNS, MODULUS_COLUMNS):
+        missing = [c for c in PATH_COLUMNS if c not in columns]
+        unknown = [c for c in columns if c not in PATH_COLUMNS + MODULUS_COLUMNS]
+        detail = (f"unknown column {unknown[0]!r}" if unknown else
+                  f"missing column {missing[0]!r}" if "M" not in columns else "columns out of order")
+        raise ProfileError(f"{path}: line {header_line}: {detail}; the header must be "
+                           f"'{','.join(PATH_COLUMNS)}' or '{','.join(MODULUS_COLUMNS)}' (SI units)")
+    rows = []
+    for number, line in lines[1:]:
+        cells = next(csv.reader([line]))
+        if len(cells) != len(columns):
+            raise ProfileError(f"{path}: line {number}: {len(cells)} values for {len(columns)} columns")
+        try:
+            values = [float(c) for c in cells]
+        except ValueError:
+            raise ProfileError(f"{path}: line {number}: not a number in {line.strip()!r}") from None
+        bad = [columns[k] for k, v in enumerate(values) if not math.isfinite(v)]
+        if bad:
+            raise ProfileError(f"{path}: line {number}: {bad[0]} is not a finite number (NaN or inf)")
+        rows.append(values)
+    if len(rows) < 2:
+        raise ProfileError(f"{path}: needs at least two rows of data, found {len(rows)}")
+    data = np.array(rows)
+    t = data[:, 0]
+    steps = np.diff(t)
+    if np.any(steps <= 0):
+        k = int(np.argmax(steps <= 0))
+        raise ProfileError(f"{path}: line {lines[k + 2][0]}: time {t[k + 1]:g} s does not increase "
+                           f"(previous {t[k]:g} s)")
+    name = path.stem
+    if tuple(columns) == MODULUS_COLUMNS:
+        _check_magnitude(path, lines, data[:, 1:2], "M", MAX_SPECIFIC_FORCE, "m/s^2")
+        return DesiredPath(name, t - t[0], None, modulus=data[:, 1], description=f"read from {path.name}")
+    _check_magnitude(path, lines, np.linalg.norm(data[:, 4:7], axis=1, keepdims=True), "|f|",
+                     MAX_SPECIFIC_FORCE, "m/s^2")
+    _check_magnitude(path, lines, np.linalg.norm(data[:, 1:4], axis=1, keepdims=True), "|omega|",
+                     MAX_ANGULAR_VELOCITY, "rad/s")
+    return DesiredPath(name, t - t[0], data[:, 1:], weights=(1, 1, 1, 1, 1, 1),
+                       description=f"read from {path.name}")
+
+
+def _check_magnitude(path, lines, values, label, limit, unit):
+    over = np.abs(values[:, 0]) > limit
+    if np.any(over):
+        k = int(np.argmax(over))
+        raise ProfileError(f"{path}: line {lines[k + 1][0]}: {label} = {values[k, 0]:.4g} {unit} is above "
+                           f"{limit:.4g} {unit}: wrong units? (SI: rad/s and m/s^2 expected)")
+
+
+def write_csv(path_or_file, path: DesiredPath) -> None:
+    """Write a desired path as CSV (the format :func:`read_csv` reads), full precision."""
+    buffer = io.StringIO()
+    buffer.write(f"# {path.name}: {path.description}\n")
+    if path.S_d is None:
+        buffer.write(",".join(MODULUS_COLUMNS) + "\n")
+        for t, m in zip(path.t, path.modulus):
+            buffer.write(f"{float(t)!r},{float(m)!r}\n")
+    else:
+        buffer.write(",".join(PATH_COLUMNS) + "\n")
+        for t, row in zip(path.t, path.S_d):
+            buffer.write(",".join(repr(float(x)) for x in (t, *row)) + "\n")
+    Path(path_or_file).write_text(buffer.getvalue())

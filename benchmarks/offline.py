@@ -1,0 +1,120 @@
+"""Off-line solver benchmark: ours against the thesis' method, side by side, in one run.
+
+    python benchmarks/offline.py            # prints one markdown table
+    python benchmarks/offline.py --quick    # skips the 35 s full-configuration row and the scaling rows
+
+Every row is measured in this run, on this machine. Times are wall-clock times of one start including
+the problem's construction; RMS is the fine-grid weighted RMS(S - S_d) of the independent check
+(grid 10x finer than the solver's), "worst" the highest use of any limit on that grid.
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import resource
+import sys
+import time
+
+import numpy as np
+
+from desdemona import default_params, profiles, thesis_toy_params
+from desdemona.baselines import ThesisOptions, optimize_thesis
+from desdemona.offline import OptimizeOptions, optimize
+from desdemona.problem import ProblemOptions
+from desdemona.simulate import check
+
+
+@dataclasses.dataclass
+class Row:
+    path: str
+    config: str
+    method: str
+    rms: float
+    worst: float
+    iterations: int
+    seconds: float
+    status: str
+    note: str = ""
+
+
+def ours(path, config, params, solver, h_u, weights=None) -> Row:
+    options = OptimizeOptions(ProblemOptions(h_u=h_u, solver=solver, weights=weights), starts=1)
+    start = time.perf_counter()
+    result = optimize(path, config, params, options)
+    seconds = time.perf_counter() - start
+    s = result.starts[0]
+    return Row(path.name, config, f"ours ({solver})", result.check.rms, result.check.worst_use, s.iterations,
+               seconds, s.status, f"N = {len(result.solution.u)}")
+
+
+def thesis(path, config, params, h_u, label, **kw) -> Row:
+    options = ThesisOptions(h_u=h_u, starts=1, seed=0, **kw)
+    start = time.perf_counter()
+    problem, runs = optimize_thesis(path, config, params, options)
+    seconds = time.perf_counter() - start
+    run = runs[0]
+    result, _ = check(problem.model, path, run.t_nodes, run.q0, run.qd0, run.u, step=0.01, weights=path.weights)
+    return Row(path.name, config, label, result.rms, result.worst_use, run.iterations, seconds,
+               "limits kept" if result.passed else "LIMITS EXCEEDED", f"{run.evaluations} evaluations")
+
+
+def table(rows: list[Row]) -> str:
+    lines = ["| path | configuration | method | fine-grid RMS | worst limit use | iterations | wall time [s] "
+             "| thesis time / ours | ours RMS / thesis | status |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for r in rows:
+        baseline = next((b for b in rows if b.path == r.path and b.config == r.config
+                         and b.method.startswith("thesis (5.4")), None)
+        speed = rms = ""
+        if baseline is not None and r.method.startswith("ours"):
+            speed = f"{baseline.seconds / r.seconds:.1f}x"
+            rms = f"{r.rms / baseline.rms:.3f}"
+        lines.append(f"| {r.path} | {r.config} | {r.method} | {r.rms:.4f} | {r.worst:.6f} | {r.iterations} "
+                     f"| {r.seconds:.3f} | {speed} | {rms} | {r.status}; {r.note} |")
+    return "\n".join(lines)
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="skip the long rows")
+    args = parser.parse_args(argv)
+    rows: list[Row] = []
+    toy, params = thesis_toy_params(), default_params()
+
+    # Thesis 4.7: toy parameters, f_y = 5 cos(2t), 5 s, h_u = 0.1 s, all limits.
+    cosine = profiles.cosine()
+    for solver in ("ipopt", "fatrop"):
+        rows.append(ours(cosine, "yaw-track", toy, solver, 0.1))
+    rows.append(thesis(cosine, "yaw-track", toy, 0.1, "thesis (5.4: stop on cost change 0.1)"))
+    rows.append(thesis(cosine, "yaw-track", toy, 0.1, "thesis (4.7: 40 iterations)", min_cost_change=0.0))
+    print(table(rows), file=sys.stderr)
+
+    # Section 5.6.2: the catapult on three joints, 8 s, h_u = 0.05 s.
+    catapult = profiles.catapult()
+    for solver in ("ipopt", "fatrop"):
+        rows.append(ours(catapult, "yaw-track-cabin", params, solver, 0.05))
+    rows.append(thesis(catapult, "yaw-track-cabin", params, 0.05, "thesis (5.4: stop on cost change 0.1)"))
+
+    if not args.quick:
+        # Scaling with the horizon: a periodic lateral and longitudinal path on three joints.
+        for duration in (10.0, 20.0, 40.0):
+            t = np.arange(0.0, duration + 1e-9, 0.01)
+            S = np.zeros((len(t), 6))
+            S[:, 3], S[:, 4], S[:, 5] = 3.0 * np.sin(0.8 * t), 5.0 * np.cos(0.5 * t), 9.81
+            path = profiles.DesiredPath(f"periodic {duration:g} s", t, S, weights=(0, 0, 0, 1, 1, 0))
+            row = ours(path, "yaw-track-cabin", params, "ipopt", 0.05)
+            row.note += f", {1e3 * row.seconds / max(row.iterations, 1):.1f} ms/iteration"
+            rows.append(row)
+        # The whole machine on a 35 s car lap, h_u = 0.05 s, every channel weighted.
+        lap = profiles.car_lap()
+        row = ours(lap, "full", params, "ipopt", 0.05)
+        peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+        row.note += f", peak memory of the process {peak:.0f} MB"
+        rows.append(row)
+    print(table(rows))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,260 @@
+"""Result folders: trajectory.csv, summary.json, trajectory.mat and figures like the thesis'.
+
+A folder is written to a temporary sibling and renamed into place only when complete, so a failed or
+interrupted run never leaves a half-written result. :func:`load` reads a folder back and
+:func:`draw_figures` re-draws its figures (``desdemona plot DIR``).
+
+Figures (PNG): ``path.png`` S against S_d per channel (thesis figures 5.7-5.16 (a)); ``joints.png``
+joint positions and rates ((b), (c)); ``limits.png`` normalised force/torque and power with the +-1
+limit lines ((d), (e)); for a modulus path ``modulus.png``, M_d against M and their difference
+(figure 7.3 (a), (b)); with perception ``perceived.png``.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import platform
+import shutil
+import sys
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from desdemona import __version__
+from desdemona.simulate import Trajectory
+
+CHANNELS = ("wx", "wy", "wz", "fx", "fy", "fz")
+CHANNEL_LABELS = ("omega_x [rad/s]", "omega_y [rad/s]", "omega_z [rad/s]",
+                  "f_x [m/s^2]", "f_y [m/s^2]", "f_z [m/s^2]")
+
+
+class ReportError(RuntimeError):
+    """The result folder cannot be written or read; the message says where and why."""
+
+
+def versions() -> dict[str, str]:
+    import casadi
+    import scipy
+
+    return {"desdemona": __version__, "python": platform.python_version(), "numpy": np.__version__,
+            "scipy": scipy.__version__, "casadi": casadi.__version__}
+
+
+def trajectory_table(traj: Trajectory, joint_names) -> tuple[list[str], np.ndarray]:
+    """Column names and values (K, columns) of trajectory.csv."""
+    names, columns = ["t"], [traj.t[:, None]]
+    for label, values in (("q", traj.q), ("qd", traj.qd), ("qdd", traj.qdd), ("tau", traj.tau),
+                          ("power", traj.power)):
+        names += [f"{label}_{j}" for j in joint_names]
+        columns.append(values)
+    names += list(CHANNELS)
+    columns.append(traj.S)
+    if traj.S_d is not None:
+        names += [f"{c}_d" for c in CHANNELS]
+        columns.append(traj.S_d)
+    names += ["M", "M_d"]
+    columns += [traj.M[:, None], traj.M_d[:, None]]
+    if traj.S_perc is not None:
+        names += [f"{c}_perc" for c in CHANNELS] + [f"{c}_d_perc" for c in CHANNELS]
+        columns += [traj.S_perc, traj.S_d_perc]
+    return names, np.hstack(columns)
+
+
+def write(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False) -> Path:
+    """Write the result folder of an off-line :class:`~desdemona.offline.Result` atomically."""
+    summary = {
+        "command": command,
+        "path": {"name": result.path.name, "description": result.path.description,
+                 "duration_s": result.path.duration, "weights": list(result.path.weights)},
+        "configuration": {"name": result.config.name, "free_joints": list(result.config.joint_names),
+                          "held_positions": list(result.config.fixed)},
+        "method": result.method,
+        "metrics": {
+            "rms_weighted": result.check.rms,
+            "rms_channels": None if result.check.rms_channels is None else dict(
+                zip(CHANNELS, map(float, result.check.rms_channels))),
+            "rms_perceived": result.check.rms_perceived,
+            "rms_modulus": result.check.rms_modulus,
+            "check_grid_step_s": result.check.step,
+            "limits_kept": result.check.passed,
+            "worst_use": result.check.worst,
+            "worst_use_per_joint": {k: dict(zip(result.config.joint_names, map(float, v)))
+                                    for k, v in result.check.use.items()},
+        },
+        "solver": {"status": result.solution.status, "success": result.solution.success,
+                   "iterations": result.solution.iterations, "cost": result.solution.cost,
+                   "starts": [vars(s) for s in result.starts], "timings_s": result.timings},
+        "options": _plain(result.options),
+        "parameters": result.params.to_dict(),
+        "versions": versions(),
+    }
+    return write_folder(result.trajectory, summary, result.config.joint_names, out_dir, overwrite)
+
+
+def write_folder(traj: Trajectory, summary: dict, joint_names, out_dir: str | Path, overwrite: bool = False) -> Path:
+    """Write trajectory.csv, summary.json, trajectory.mat and the figures into ``out_dir`` atomically."""
+    import scipy.io
+
+    out = Path(out_dir)
+    if out.exists() and not overwrite:
+        raise ReportError(f"{out}: already exists; choose another folder or allow overwriting")
+    parent = out.resolve().parent
+    if not parent.is_dir():
+        raise ReportError(f"{out}: the parent folder {parent} does not exist")
+    try:
+        tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=parent))
+    except OSError as exc:
+        raise ReportError(f"{out}: cannot write in {parent}: {exc.strerror or exc}") from None
+    try:
+        names, table = trajectory_table(traj, joint_names)
+        header = "units: SI (s, rad, m, rad/s, m/s, rad/s^2, m/s^2, N*m, N, W)\n" + ",".join(names)
+        np.savetxt(tmp / "trajectory.csv", table, delimiter=",", header=header, comments="# ", fmt="%.10g")
+        (tmp / "summary.json").write_text(json.dumps(summary, indent=2, default=_json_default))
+        scipy.io.savemat(tmp / "trajectory.mat", {n.replace("-", "_"): table[:, i] for i, n in enumerate(names)},
+                         oned_as="column")
+        draw_figures(traj, summary, tmp)
+        if out.exists():
+            old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old.", dir=parent))
+            os.replace(out, old / out.name)
+            os.replace(tmp, out)
+            shutil.rmtree(old)
+        else:
+            os.replace(tmp, out)
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
+    return out
+
+
+def load(out_dir: str | Path) -> tuple[Trajectory, dict]:
+    """Read a result folder back: its trajectory and summary."""
+    out = Path(out_dir)
+    try:
+        summary = json.loads((out / "summary.json").read_text())
+        with open(out / "trajectory.csv") as fh:
+            fh.readline()
+            names = fh.readline().lstrip("# ").strip().split(",")
+        table = np.loadtxt(out / "trajectory.csv", delimiter=",", comments="#", ndmin=2)
+    except (OSError, ValueError) as exc:
+        raise ReportError(f"{out}: not a readable result folder: {exc}") from None
+    col = {n: table[:, i] for i, n in enumerate(names)}
+    joints = summary["configuration"]["free_joints"]
+
+    def block(prefix):
+        return np.column_stack([col[f"{prefix}_{j}"] for j in joints])
+
+    def channels(suffix):
+        keys = [f"{c}{suffix}" for c in CHANNELS]
+        return np.column_stack([col[k] for k in keys]) if keys[0] in col else None
+
+    traj = Trajectory(t=col["t"], q=block("q"), qd=block("qd"), qdd=block("qdd"), tau=block("tau"),
+                      power=block("power"), S=channels(""), S_d=channels("_d"), M=col["M"], M_d=col["M_d"],
+                      S_perc=channels("_perc"), S_d_perc=channels("_d_perc"))
+    return traj, summary
+
+
+def draw_figures(traj: Trajectory, summary: dict, out_dir: str | Path) -> list[Path]:
+    """Draw the result's figures into ``out_dir``; returns their paths."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    out = Path(out_dir)
+    joints = summary["configuration"]["free_joints"]
+    limits = summary["parameters"]["joints"]
+    title = f"{summary['path']['name']} on {summary['configuration']['name']}"
+    paths = []
+
+    def save(fig, name):
+        fig.suptitle(title)
+        fig.tight_layout()
+        fig.savefig(out / name, dpi=100)
+        plt.close(fig)
+        paths.append(out / name)
+
+    if traj.S_d is not None:
+        fig, axes = plt.subplots(3, 2, figsize=(11, 8), sharex=True)
+        for i, ax in enumerate(axes.T.ravel()):
+            ax.plot(traj.t, traj.S_d[:, i], "k-", lw=1.5, label="S_d (desired)")
+            ax.plot(traj.t, traj.S[:, i], "C0--", lw=1.2, label="S (Desdemona)")
+            ax.set_ylabel(CHANNEL_LABELS[i])
+            ax.grid(alpha=0.3)
+        axes[0, 0].legend(fontsize=8)
+        for ax in axes[-1]:
+            ax.set_xlabel("t [s]")
+        save(fig, "path.png")
+    fig, axes = plt.subplots(len(joints), 2, figsize=(11, 2.2 * len(joints) + 1), sharex=True, squeeze=False)
+    for k, name in enumerate(joints):
+        revolute = limits[name]["kind"] == "revolute"
+        scale, unit = (180.0 / np.pi, "deg") if revolute else (1.0, "m")
+        axes[k, 0].plot(traj.t, traj.q[:, k] * scale)
+        axes[k, 0].set_ylabel(f"{name} [{unit}]")
+        if limits[name]["position"] is not None:
+            for bound in limits[name]["position"]:
+                axes[k, 0].axhline(bound * scale, color="r", lw=0.8, ls=":")
+        axes[k, 1].plot(traj.t, traj.qd[:, k] * scale)
+        axes[k, 1].set_ylabel(f"rate [{unit}/s]")
+        for bound in (-1, 1):
+            axes[k, 1].axhline(bound * limits[name]["velocity"] * scale, color="r", lw=0.8, ls=":")
+    for ax in axes.ravel():
+        ax.grid(alpha=0.3)
+    for ax in axes[-1]:
+        ax.set_xlabel("t [s]")
+    save(fig, "joints.png")
+    fig, axes = plt.subplots(2, 1, figsize=(10, 6), sharex=True)
+    for k, name in enumerate(joints):
+        axes[0].plot(traj.t, traj.tau[:, k] / limits[name]["effort"], label=name)
+        axes[1].plot(traj.t, traj.power[:, k] / limits[name]["power"], label=name)
+    for ax, label in zip(axes, ("force / max", "power / max")):
+        ax.axhline(1, color="r", lw=0.8, ls=":")
+        ax.axhline(-1, color="r", lw=0.8, ls=":")
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8, loc="upper right")
+    axes[-1].set_xlabel("t [s]")
+    save(fig, "limits.png")
+    if traj.S_d is None or summary["configuration"]["name"] == "dfs":
+        fig, axes = plt.subplots(2, 1, figsize=(10, 6), sharex=True)
+        axes[0].plot(traj.t, traj.M_d, "k-", label="M_d (desired)")
+        axes[0].plot(traj.t, traj.M, "C0--", label="M (Desdemona)")
+        axes[0].set_ylabel("modulus [m/s^2]")
+        axes[1].plot(traj.t, traj.M_d - traj.M, "C0")
+        axes[1].set_ylabel("M_d - M [m/s^2]")
+        axes[1].set_xlabel("t [s]")
+        for ax in axes:
+            ax.grid(alpha=0.3)
+        axes[0].legend(fontsize=8)
+        save(fig, "modulus.png")
+    if traj.S_perc is not None:
+        fig, axes = plt.subplots(3, 2, figsize=(11, 8), sharex=True)
+        for i, ax in enumerate(axes.T.ravel()):
+            ax.plot(traj.t, traj.S_d_perc[:, i], "k-", lw=1.5, label="perceived S_d")
+            ax.plot(traj.t, traj.S_perc[:, i], "C1--", lw=1.2, label="perceived S")
+            ax.set_ylabel(CHANNEL_LABELS[i])
+            ax.grid(alpha=0.3)
+        axes[0, 0].legend(fontsize=8)
+        save(fig, "perceived.png")
+    return paths
+
+
+def _plain(value):
+    if hasattr(value, "__dataclass_fields__"):
+        return {k: _plain(getattr(value, k)) for k in value.__dataclass_fields__}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    return value
+
+
+def _json_default(value):
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, np.generic):
+        return value.item()
+    raise TypeError(f"cannot write {type(value).__name__} to JSON")
+
+
+def command_line() -> str:
+    return " ".join(["desdemona", *sys.argv[1:]])

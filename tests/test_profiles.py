@@ -1,0 +1,102 @@
+"""Built-in profiles' defining properties; the CSV reader's strictness; round trips."""
+
+import numpy as np
+import pytest
+
+from desdemona import profiles
+from desdemona.profiles import ProfileError, read_csv, write_csv
+
+
+def test_cosine_amplitude_and_frequency():
+    p = profiles.cosine(amplitude=5.0, omega=2.0, duration=5.0)
+    f_y = p.S_d[:, 4]
+    assert f_y.max() == pytest.approx(5.0) and f_y.min() == pytest.approx(-5.0, abs=1e-3)
+    spectrum = np.abs(np.fft.rfft(profiles.cosine(duration=100 * np.pi).S_d[:-1, 4]))
+    freqs = 2 * np.pi * np.fft.rfftfreq(len(spectrum) * 2 - 1, d=0.01)
+    assert freqs[np.argmax(spectrum)] == pytest.approx(2.0, abs=0.02)
+    np.testing.assert_allclose(p.S_d[:, 5], 9.81)
+    assert p.weights == (0, 0, 0, 0, 1, 0)
+
+
+def test_catapult_quiet_start_plateau_level_and_duration():
+    p = profiles.catapult(level=20.0, push=2.0, quiet=1.0, rise=0.2)
+    f_y = p.S_d[:, 4]
+    assert np.all(f_y[p.t < 1.0] == 0.0)
+    plateau = p.t[np.isclose(f_y, 20.0)]
+    assert plateau[-1] - plateau[0] == pytest.approx(2.0, abs=0.011)
+    assert f_y.max() == pytest.approx(20.0)
+
+
+@pytest.mark.parametrize("count", [2, 3])
+def test_pulse_trains_have_that_many_pulses(count):
+    p = profiles.pulses(count=count, level=15.0)
+    rising = np.flatnonzero((p.S_d[1:, 4] >= 7.5) & (p.S_d[:-1, 4] < 7.5))
+    assert len(rising) == count
+
+
+def test_car_lap_closes_with_bounded_accelerations():
+    p = profiles.car_lap(lateral_max=9.0, accel_max=4.0, brake_max=8.0)
+    assert p.duration == pytest.approx(35.0, rel=0.05)
+    assert np.abs(p.S_d[:, 3]).max() <= 9.0 + 1e-9
+    assert p.S_d[:, 4].max() <= 4.0 + 1e-6 and p.S_d[:, 4].min() >= -8.0 - 1e-6
+    # a closed lap turns through one full turn and ends at the speed it started with
+    heading = np.trapezoid(p.S_d[:, 2], p.t)
+    assert heading == pytest.approx(2 * np.pi, rel=0.01)
+    speed_change = np.trapezoid(p.S_d[:, 4], p.t)
+    assert abs(speed_change) < 0.1
+
+
+def test_roller_coaster_treatment_of_7_5_2():
+    p = profiles.roller_coaster(limit=3 * 9.81, cutoff_hz=5.0)
+    assert p.S_d is None
+    assert p.M_d.min() >= 0.5 * 9.81 - 0.2  # half gravity is added to the ride's modulus
+    assert p.M_d.max() <= 3 * 9.81 * 1.02  # limited (filter overshoot aside)
+    spectrum = np.abs(np.fft.rfft(p.M_d - p.M_d.mean()))
+    freqs = np.fft.rfftfreq(len(p.M_d), d=0.01)
+    assert spectrum[freqs > 10].max() < 0.01 * spectrum.max()
+
+
+def test_csv_round_trip(tmp_path):
+    for name in ("catapult", "dfs-catapult"):
+        p = profiles.get_profile(name)
+        write_csv(tmp_path / "p.csv", p)
+        q = read_csv(tmp_path / "p.csv")
+        np.testing.assert_allclose(q.t, p.t, rtol=0, atol=1e-12)
+        np.testing.assert_allclose(q.M_d, p.M_d, rtol=0, atol=1e-12)
+        if p.S_d is not None:
+            np.testing.assert_allclose(q.S_d, p.S_d, rtol=0, atol=1e-12)
+
+
+GOOD = "t,wx,wy,wz,fx,fy,fz\n0,0,0,0,0,0,9.81\n0.1,0,0,0,0,1,9.81\n0.2,0,0,0,0,2,9.81\n"
+
+
+@pytest.mark.parametrize("text, fragment", [
+    (GOOD.replace("0.1,0,0,0,0,1,9.81", "0.1,0,0,0,0,nan,9.81"), "line 3: fy is not a finite number"),
+    (GOOD.replace("0.2,", "0.1,"), "line 4: time 0.1 s does not increase"),
+    (GOOD.replace("t,wx,wy,wz,fx,fy,fz", "t,wx,wy,wz,fx,fy"), "missing column 'fz'"),
+    (GOOD.replace("fz", "fzz"), "unknown column 'fzz'"),
+    ("t,wx,wy,wz,fx,fy,fz\n0,0,0,0,0,0,9.81\n", "at least two rows"),
+    (GOOD.replace("0.2,0,0,0,0,2,9.81", "0.2,0,0,0,0,2000,9.81"), "line 4: |f| = 2000 m/s^2 is above"),
+    (GOOD.replace("0.1,0,0,0,0,1,9.81", "0.1,0,0,0,0,abc,9.81"), "line 3: not a number"),
+    (GOOD.replace("0.1,0,0,0,0,1,9.81", "0.1,0,0,0,0,1"), "line 3: 6 values for 7 columns"),
+    ("", "no header"),
+])
+def test_bad_csv_names_the_problem(tmp_path, text, fragment):
+    path = tmp_path / "bad.csv"
+    path.write_text(text)
+    with pytest.raises(ProfileError) as info:
+        read_csv(path)
+    assert fragment in str(info.value) and "bad.csv" in str(info.value)
+
+
+def test_comments_and_modulus_files(tmp_path):
+    path = tmp_path / "m.csv"
+    path.write_text("# a modulus path\nt,M\n# comment inside\n0,9.81\n0.5,12\n1.0,15\n")
+    p = read_csv(path)
+    np.testing.assert_allclose(p.M_d, [9.81, 12, 15])
+    assert p.S_d is None
+
+
+def test_unknown_profile():
+    with pytest.raises(ProfileError, match="unknown profile 'catapolt'.*cosine"):
+        profiles.get_profile("catapolt")

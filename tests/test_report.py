@@ -1,0 +1,92 @@
+"""The optimize, profiles and plot commands: result folders, round trips and bad input."""
+
+import json
+
+import numpy as np
+import pytest
+import scipy.io
+
+from desdemona.cli import main
+from desdemona.report import load
+
+FAST = ["--starts", "1", "--h-u", "0.1"]
+
+
+@pytest.fixture(scope="module")
+def catapult_folder(tmp_path_factory):
+    out = tmp_path_factory.mktemp("runs") / "catapult"
+    assert main(["optimize", "catapult", "--config", "yaw-track-cabin", "--out", str(out), *FAST]) == 0
+    return out
+
+
+def test_optimize_writes_the_whole_folder(catapult_folder):
+    names = {p.name for p in catapult_folder.iterdir()}
+    assert {"trajectory.csv", "summary.json", "trajectory.mat", "path.png", "joints.png", "limits.png"} <= names
+    summary = json.loads((catapult_folder / "summary.json").read_text())
+    assert summary["metrics"]["limits_kept"] is True
+    assert summary["metrics"]["worst_use"]["effort"] <= 1 + 1e-6
+    assert summary["configuration"]["free_joints"] == ["yaw", "track", "inner_gimbal"]
+    assert summary["versions"]["casadi"] and summary["command"].startswith("desdemona")
+    for png in ("path.png", "joints.png", "limits.png"):
+        assert (catapult_folder / png).read_bytes()[:4] == b"\x89PNG"
+
+
+def test_trajectory_files_agree(catapult_folder):
+    traj, summary = load(catapult_folder)
+    mat = scipy.io.loadmat(catapult_folder / "trajectory.mat")
+    np.testing.assert_allclose(mat["t"][:, 0], traj.t, rtol=1e-9)
+    np.testing.assert_allclose(mat["q_track"][:, 0], traj.q[:, 1], rtol=1e-9, atol=1e-12)
+    np.testing.assert_allclose(mat["fy_d"][:, 0], traj.S_d[:, 4], rtol=1e-9, atol=1e-12)
+    assert np.abs(traj.q[:, 1]).max() <= 4.0
+
+
+def test_plot_redraws_figures(catapult_folder, capsys):
+    (catapult_folder / "path.png").unlink()
+    assert main(["plot", str(catapult_folder)]) == 0
+    assert (catapult_folder / "path.png").exists()
+
+
+def test_dfs_modulus_folder_has_the_modulus_figure(tmp_path):
+    out = tmp_path / "dfs"
+    assert main(["optimize", "dfs-catapult", "--config", "dfs", "--out", str(out), *FAST]) == 0
+    assert (out / "modulus.png").exists()
+
+
+def test_profiles_lists_every_builtin(capsys):
+    assert main(["profiles"]) == 0
+    out = capsys.readouterr().out
+    for name in ("cosine", "catapult", "double-pulse", "triple-pulse", "car-lap", "roller-coaster"):
+        assert name in out
+
+
+@pytest.mark.parametrize("args, fragment", [
+    (["optimize", "catapolt"], "unknown profile 'catapolt'"),
+    (["optimize", "catapult", "--config", "nope"], "unknown configuration 'nope'"),
+    (["optimize", "missing.csv"], "missing.csv: file not found"),
+    (["optimize", "roller-coaster", "--config", "yaw-track"], "gives only the modulus"),
+    (["optimize", "catapult", "--h-u", "-1"], "--h-u -1"),
+    (["optimize", "catapult", "--starts", "0"], "--starts"),
+])
+def test_bad_input_exits_2_and_writes_nothing(tmp_path, capsys, args, fragment):
+    out = tmp_path / "result"
+    assert main([*args, "--out", str(out)]) == 2
+    assert fragment in capsys.readouterr().err
+    assert not out.exists()
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_bad_csv_and_unwritable_folder(tmp_path, capsys):
+    bad = tmp_path / "bad.csv"
+    bad.write_text("t,wx,wy,wz,fx,fy,fz\n0,0,0,0,0,nan,9.81\n0.1,0,0,0,0,1,9.81\n")
+    assert main(["optimize", str(bad), "--out", str(tmp_path / "r")]) == 2
+    assert "fy is not a finite number" in capsys.readouterr().err
+    assert main(["optimize", "catapult", "--out", str(tmp_path / "no" / "such" / "r")]) == 2
+    assert "not a writable folder" in capsys.readouterr().err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.csv"]
+
+
+def test_existing_folder_is_not_overwritten(tmp_path, capsys):
+    out = tmp_path / "r"
+    out.mkdir()
+    assert main(["optimize", "catapult", "--out", str(out)]) == 2
+    assert "already exists" in capsys.readouterr().err
