@@ -90,3 +90,36 @@ def test_existing_folder_is_not_overwritten(tmp_path, capsys):
     out.mkdir()
     assert main(["optimize", "catapult", "--out", str(out)]) == 2
     assert "already exists" in capsys.readouterr().err
+
+
+def test_batch_on_dask_equals_local_processes(tmp_path, capsys):
+    distributed = pytest.importorskip("distributed")
+    from desdemona import batch, default_params
+    from desdemona.offline import OptimizeOptions
+    from desdemona.problem import ProblemOptions
+
+    jobs = [batch.Job("catapult", "yaw-track"), batch.Job("dfs-catapult", "dfs"), batch.Job("cosine", "dfs")]
+    options = OptimizeOptions(ProblemOptions(h_u=0.1), starts=1)
+    local = batch.run_batch(jobs, default_params(), options, tmp_path / "local", processes=2)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster:
+        remote = batch.run_batch(jobs, default_params(), options, tmp_path / "dask", dask_address=cluster.scheduler_address)
+    assert [r.status for r in local] == ["ok"] * 3
+    for a, b in zip(local, remote):
+        assert (a.profile, a.config, a.status) == (b.profile, b.config, b.status)
+        assert a.rms == b.rms and a.worst_use == b.worst_use
+        ta, _ = load(a.folder)
+        tb, _ = load(b.folder)
+        np.testing.assert_array_equal(ta.q, tb.q)
+    assert (tmp_path / "dask" / "batch.csv").read_text().count("\n") == 4
+
+
+def test_batch_command(tmp_path, capsys):
+    out = tmp_path / "b"
+    code = main(["batch", "catapult", "cosine", "--configs", "yaw-track", "--out", str(out),
+                 "--starts", "1", "--h-u", "0.1", "--processes", "2"])
+    assert code == 0
+    table = capsys.readouterr().out
+    assert table.count(" ok ") == 2
+    assert (out / "catapult--yaw-track" / "summary.json").exists()
+    assert main(["batch", "catapult", "--configs", "nope", "--out", str(out)]) == 2

@@ -78,6 +78,26 @@ def _parser() -> argparse.ArgumentParser:
     opt.add_argument("--overwrite", action="store_true", help="replace DIR if it exists")
     opt.set_defaults(run=_run_optimize)
 
+    batch = sub.add_parser(
+        "batch", help="optimise many profiles on many configurations, locally or on a Dask cluster",
+        description="Run every PROFILE on every configuration of --configs, each into its own result folder "
+                    "OUT/<profile>--<configuration>, and print a table of all jobs (also OUT/batch.csv). "
+                    "Jobs run on local processes, or on a Dask distributed cluster given its scheduler.")
+    batch.add_argument("profiles", nargs="+", metavar="PROFILE_OR_CSV")
+    batch.add_argument("--configs", nargs="+", required=True, metavar="NAME",
+                       help=f"configurations, from: {', '.join(CONFIGURATIONS)}")
+    batch.add_argument("--out", required=True, metavar="DIR", help="folder for all the jobs' results")
+    batch.add_argument("--params", metavar="FILE", help="TOML file overriding machine parameters")
+    batch.add_argument("--base", choices=BUILTIN_SETS, default=None, help="built-in parameter set")
+    batch.add_argument("--starts", type=int, default=2, metavar="N", help="starts per job (default: 2)")
+    batch.add_argument("--seed", type=int, default=0)
+    batch.add_argument("--h-u", type=float, default=0.05, metavar="SECONDS", dest="h_u")
+    batch.add_argument("--processes", type=int, default=2, metavar="N",
+                       help="local processes when no --dask is given (default: 2)")
+    batch.add_argument("--dask", metavar="ADDRESS", default=None,
+                       help="Dask scheduler address (tcp://host:8786): run the jobs on that cluster")
+    batch.set_defaults(run=_run_batch)
+
     prof = sub.add_parser("profiles", help="list the built-in desired paths",
                           description="List the built-in desired paths with a one-line description.")
     prof.set_defaults(run=_run_profiles)
@@ -169,6 +189,29 @@ def _progress_bar():
         print(f"\r  starts [{bar}] {done}/{total}", end="" if done < total else "\n", file=sys.stderr,
               flush=True)
     return show
+
+
+def _run_batch(args) -> int:
+    from desdemona import batch
+    from desdemona.offline import OptimizeOptions
+    from desdemona.problem import ProblemOptions
+
+    for name in args.configs:
+        try:
+            get_configuration(name)
+        except ValueError as exc:
+            raise UserError(str(exc)) from None
+    for name in args.profiles:
+        if name not in profiles.PROFILES and not os.path.isfile(name):
+            _load_profile(name)  # raises with the list of built-in profiles, or file not found
+    if args.starts < 1 or args.processes < 1 or not args.h_u > 0:
+        raise UserError("--starts and --processes must be at least 1 and --h-u positive")
+    params = load_params(args.params, base=args.base)
+    options = OptimizeOptions(ProblemOptions(h_u=args.h_u), starts=args.starts, seed=args.seed)
+    jobs = [batch.Job(p, c) for p in args.profiles for c in args.configs]
+    results = batch.run_batch(jobs, params, options, args.out, args.processes, args.dask)
+    print(batch.table(results))
+    return 0 if all(r.status == "ok" for r in results) else EXIT_UNSAFE
 
 
 def _run_profiles(args) -> int:
