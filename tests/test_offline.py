@@ -5,7 +5,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from desdemona import Model, default_params, profiles, thesis_toy_params
+from desdemona import Model, profiles, thesis_toy_params
 from desdemona.baselines import ThesisOptions, classical_dfs, optimize_thesis
 from desdemona.offline import OptimizeOptions, optimize
 from desdemona.problem import ProblemOptions

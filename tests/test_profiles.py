@@ -100,3 +100,22 @@ def test_comments_and_modulus_files(tmp_path):
 def test_unknown_profile():
     with pytest.raises(ProfileError, match="unknown profile 'catapolt'.*cosine"):
         profiles.get_profile("catapolt")
+
+
+def test_dfs_catapult_pulses_on_a_constant_modulus():
+    p = profiles.dfs_catapult(base=1.5 * 9.81, pulse=9.81)
+    assert p.S_d is None
+    np.testing.assert_allclose(p.M_d[p.t < 3.0], 1.5 * 9.81)
+    np.testing.assert_allclose(p.M_d[(p.t > 3.3) & (p.t < 5.3)], 2.5 * 9.81)
+    np.testing.assert_allclose(p.M_d[p.t > 9.5], 1.5 * 9.81)
+
+
+def test_cosine_sweep_and_modulus_versions():
+    sweep = profiles.cosine_sweep(omegas=(2.0, 3.0, 4.0, 5.0), duration=5.0)
+    # a cosine at omega crosses zero omega * T / pi times (rounded) in T seconds
+    zero_crossings = [np.count_nonzero(np.diff(np.sign(p.S_d[:, 4]))) for p in sweep]
+    assert zero_crossings == [round(w * 5.0 / np.pi) for w in (2.0, 3.0, 4.0, 5.0)]
+    catapult = profiles.catapult()
+    m = profiles.modulus_version(catapult)
+    assert m.S_d is None
+    np.testing.assert_allclose(m.M_d, np.hypot(catapult.S_d[:, 4], 9.81))

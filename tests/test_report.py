@@ -123,3 +123,33 @@ def test_batch_command(tmp_path, capsys):
     assert table.count(" ok ") == 2
     assert (out / "catapult--yaw-track" / "summary.json").exists()
     assert main(["batch", "catapult", "--configs", "nope", "--out", str(out)]) == 2
+
+
+def test_perception_run_writes_perceived_figure(tmp_path):
+    out = tmp_path / "felt"
+    assert main(["optimize", "catapult", "--config", "yaw-track", "--perception", "thesis", "--out", str(out),
+                 *FAST]) == 0
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["metrics"]["rms_perceived"] is not None
+    assert (out / "perceived.png").exists()
+    traj, _ = load(out)
+    assert traj.S_perc is not None and traj.S_perc.shape == traj.S.shape
+
+
+def test_unknown_option_exits_2(tmp_path, capsys):
+    out = tmp_path / "r"
+    assert main(["optimize", "catapult", "--out", str(out), "--bogus"]) == 2
+    assert "unrecognized arguments: --bogus" in capsys.readouterr().err
+    assert not out.exists()
+    assert main(["--help"]) == 0
+
+
+def test_progress_is_told_after_each_start():
+    from desdemona import default_params, profiles
+    from desdemona.offline import OptimizeOptions, optimize
+    from desdemona.problem import ProblemOptions
+
+    seen = []
+    optimize(profiles.catapult(duration=3.0, push=1.0, quiet=0.5), "yaw-track", default_params(),
+             OptimizeOptions(ProblemOptions(h_u=0.1), starts=3), progress=lambda done, total: seen.append((done, total)))
+    assert seen == [(1, 3), (2, 3), (3, 3)]

@@ -25,7 +25,10 @@ class UserError(Exception):
 
 def main(argv: list[str] | None = None) -> int:
     parser = _parser()
-    args = parser.parse_args(argv)
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # argparse has printed its message (or --help): report, do not exit
+        return int(exc.code or 0)
     from desdemona.report import ReportError
     from desdemona.simulate import LimitViolation
 

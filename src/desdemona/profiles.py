@@ -113,6 +113,18 @@ def cosine(amplitude: float = 5.0, omega: float = 2.0, duration: float = 5.0, dt
                        description=f"f_y = {amplitude:g} cos({omega:g} t) m/s^2 for {duration:g} s (eq. 3.9)")
 
 
+def cosine_sweep(omegas=(2.0, 3.0, 4.0, 5.0), amplitude: float = 5.0, duration: float = 5.0,
+                 dt: float = 0.01) -> list[DesiredPath]:
+    """The frequency sweep of section 5.3 (figure 5.5): the cosine path at omega = 2 ... 5 rad/s."""
+    return [cosine(amplitude, omega, duration, dt) for omega in omegas]
+
+
+def modulus_version(path: DesiredPath) -> DesiredPath:
+    """The ``dfs`` version of a path: only the modulus M_d = |f_d| (eq. 7.1), for the aligned cabin."""
+    return DesiredPath(f"{path.name} (modulus)", path.t, None, modulus=path.M_d,
+                       description=f"modulus of: {path.description}")
+
+
 def catapult(level: float = 20.0, push: float = 2.0, quiet: float = 1.0, rise: float = 0.2,
              duration: float = 8.0, dt: float = 0.01) -> DesiredPath:
     """A catapult launch from a carrier (section 5.5.2): a quiet start, then ~2 s at ~20 m/s^2 along y.

@@ -175,17 +175,20 @@ def draw_figures(traj: Trajectory, summary: dict, out_dir: str | Path) -> list[P
         plt.close(fig)
         paths.append(out / name)
 
-    if traj.S_d is not None:
+    def channels(desired, actual, labels, style):
         fig, axes = plt.subplots(3, 2, figsize=(11, 8), sharex=True)
         for i, ax in enumerate(axes.T.ravel()):
-            ax.plot(traj.t, traj.S_d[:, i], "k-", lw=1.5, label="S_d (desired)")
-            ax.plot(traj.t, traj.S[:, i], "C0--", lw=1.2, label="S (Desdemona)")
+            ax.plot(traj.t, desired[:, i], "k-", lw=1.5, label=labels[0])
+            ax.plot(traj.t, actual[:, i], style, lw=1.2, label=labels[1])
             ax.set_ylabel(CHANNEL_LABELS[i])
             ax.grid(alpha=0.3)
         axes[0, 0].legend(fontsize=8)
         for ax in axes[-1]:
             ax.set_xlabel("t [s]")
-        save(fig, "path.png")
+        return fig
+
+    if traj.S_d is not None:
+        save(channels(traj.S_d, traj.S, ("S_d (desired)", "S (Desdemona)"), "C0--"), "path.png")
     fig, axes = plt.subplots(len(joints), 2, figsize=(11, 2.2 * len(joints) + 1), sharex=True, squeeze=False)
     for k, name in enumerate(joints):
         revolute = limits[name]["kind"] == "revolute"
@@ -229,14 +232,7 @@ def draw_figures(traj: Trajectory, summary: dict, out_dir: str | Path) -> list[P
         axes[0].legend(fontsize=8)
         save(fig, "modulus.png")
     if traj.S_perc is not None:
-        fig, axes = plt.subplots(3, 2, figsize=(11, 8), sharex=True)
-        for i, ax in enumerate(axes.T.ravel()):
-            ax.plot(traj.t, traj.S_d_perc[:, i], "k-", lw=1.5, label="perceived S_d")
-            ax.plot(traj.t, traj.S_perc[:, i], "C1--", lw=1.2, label="perceived S")
-            ax.set_ylabel(CHANNEL_LABELS[i])
-            ax.grid(alpha=0.3)
-        axes[0, 0].legend(fontsize=8)
-        save(fig, "perceived.png")
+        save(channels(traj.S_d_perc, traj.S_perc, ("perceived S_d", "perceived S"), "C1--"), "perceived.png")
     return paths
 
 
