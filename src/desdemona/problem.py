@@ -74,6 +74,9 @@ class ProblemOptions:
     regularisation : rho, see the module docstring.
     margin : relative back-off of torque and power limits inside the optimiser.
     solver : "ipopt" or "fatrop"; max_iter, tol : solver stopping criteria.
+    stoppable : every planned state must be able to brake to rest within the position limits at
+        ``braking`` times the acceleration limit (the on-line end condition of chapter 7, here at every
+        node so that any shifted plan ends stoppable too).
     expand : evaluate the NLP as one flat SX graph (fast to evaluate, slow to build); None chooses:
         flat when the problem will be solved EXPAND_SOLVES times or more and is below EXPAND_LIMIT.
     """
@@ -91,6 +94,8 @@ class ProblemOptions:
     max_iter: int = 500
     tol: float = 1e-8
     expand: bool | None = None
+    stoppable: bool = False
+    braking: float = 0.5
 
     def __post_init__(self):
         if not (math.isfinite(self.h_u) and self.h_u > 0):
@@ -145,9 +150,9 @@ class CueingProblem:
     """The NLP for one model, desired path and set of options; built once, solved from many guesses."""
 
     def __init__(self, model: Model, path: DesiredPath, options: ProblemOptions = ProblemOptions(),
-                 solves: int = 1):
+                 solves: int = 1, parametric: bool = False):
         start = time.perf_counter()
-        self.solves = solves
+        self.solves, self.parametric = solves, parametric
         self.model, self.path, self.options = model, path, options
         self.modulus = model.config.modulus_cost
         if not self.modulus and path.S_d is None:
@@ -209,6 +214,8 @@ class CueingProblem:
         nd = (m + 1) if self.modulus else (m * 6 if self.vestibular else (m + 1) * 6)
         d = ca.SX.sym("d", nd)
         values, taus, powers, positions = [], [], [], []
+        h_u = self.options.h_u
+        x_next = ca.vertcat(q + qd * h_u + 0.5 * u * h_u**2, qd + u * h_u, z)  # z advanced below
         for j, tj in enumerate(self.tau_sub):
             qj = q + qd * tj + 0.5 * u * tj**2
             qdj = qd + u * tj
@@ -238,9 +245,13 @@ class CueingProblem:
                 e = C @ z + D @ values[j] - d[6 * j: 6 * j + 6]
                 cost += h * ca.dot(weights * e, e)
                 z = A @ z + B @ values[j]
+            x_next = ca.vertcat(x_next[:2 * n], z)
         reg = self.options.regularisation * self.options.h_u * ca.sumsqr(u / ca.DM(lim["acceleration"]))
-        x_next = ca.vertcat(q + qd * self.options.h_u + 0.5 * u * self.options.h_u**2,
-                            qd + u * self.options.h_u, z)
+        if self.options.stoppable and bounded:
+            # where the joint would come to rest braking at braking * qdd_max from the interval's end
+            q_end, qd_end = x_next[:n][bounded], x_next[n:2 * n][bounded]
+            brake = ca.DM(2.0 * self.options.braking * lim["acceleration"][bounded])
+            positions.append(q_end + qd_end * ca.sqrt(qd_end**2 + 1e-8) / brake)
         g = ca.vertcat(*positions, *taus, *powers)
         self.n_path = g.numel()
         self.n_positions = sum(p.numel() for p in positions)
@@ -257,7 +268,9 @@ class CueingProblem:
         XU = ca.reshape(w[: N * nw], nw, N)
         X, U = XU[:nx, :], XU[nx:, :]
         X_next = ca.horzcat(X[:, 1:], w[N * nw:])
-        data = ca.DM(self.stage_data())
+        # The desired values are constants, or a parameter p (columns per stage) for an MPC.
+        nd = self._stage.size1_in(2)
+        data = ca.MX.sym("p", nd, N) if self.parametric else ca.DM(self.stage_data())
         x_next, L, g = self._stage.map(N, "serial")(X, U, data)
         G = ca.vertcat(X_next - x_next, g)  # per stage: gap, then path constraints
         # With perception, the filters start in the steady state of the first S: the person has sat
@@ -266,6 +279,8 @@ class CueingProblem:
         self.n_initial = initial.numel()
         g_all = ca.vertcat(G[:nx, 0], initial, G[nx:, 0], ca.vec(G[:, 1:]))
         self.nlp = {"x": w, "f": ca.sum2(L), "g": g_all}
+        if self.parametric:
+            self.nlp["p"] = ca.vec(data)
         stage_eq = [True] * nx + [False] * self.n_path
         self.equality = stage_eq[:nx] + [True] * self.n_initial + stage_eq[nx:] + stage_eq * (N - 1)
         self._derivatives = self._derivative_functions(w, XU, data)
@@ -328,7 +343,7 @@ class CueingProblem:
         n_g = self.nlp["g"].numel()
         identity = ca.DM(ca.Sparsity.triplet(n_g, N * nw + nx, rows.tolist(), cols.tolist()), 1.0)
         jacobian = ca.diagcat(*j_blocks, ca.MX(0, nx)) + identity
-        p = ca.MX(0, 1)
+        p = ca.vec(data) if self.parametric else ca.MX(0, 1)
         return {
             "hess_lag": ca.Function("nlp_hess_l", [w, p, lam_f, lam_g], [hessian],
                                     ["x", "p", "lam_f", "lam_g"], ["hess_gamma_x_x"]),
@@ -362,11 +377,11 @@ class CueingProblem:
                              if self.model.params.joints[i].kind == "prismatic"]
                 lo[prismatic] = hi[prismatic] = 0.0
         self.lbx, self.ubx = lbx, ubx
-        n_pos = self.n_positions
-        lbg_stage = np.r_[np.zeros(nx), np.tile(qmin[np.isfinite(qmin)], self.m - 1)[:n_pos],
-                          -np.ones(self.n_path - n_pos)]
-        ubg_stage = np.r_[np.zeros(nx), np.tile(qmax[np.isfinite(qmax)], self.m - 1)[:n_pos],
-                          np.ones(self.n_path - n_pos)]
+        n_pos = self.n_positions  # groups of the bounded joints' positions (sub-steps, stopping points)
+        qmin_b, qmax_b = qmin[np.isfinite(qmin)], qmax[np.isfinite(qmax)]
+        groups = n_pos // max(len(qmin_b), 1)
+        lbg_stage = np.r_[np.zeros(nx), np.tile(qmin_b, groups), -np.ones(self.n_path - n_pos)]
+        ubg_stage = np.r_[np.zeros(nx), np.tile(qmax_b, groups), np.ones(self.n_path - n_pos)]
         self.lbg = np.r_[lbg_stage[:nx], np.zeros(self.n_initial), lbg_stage[nx:], np.tile(lbg_stage, N - 1)]
         self.ubg = np.r_[ubg_stage[:nx], np.zeros(self.n_initial), ubg_stage[nx:], np.tile(ubg_stage, N - 1)]
 

@@ -1,0 +1,278 @@
+"""On-line optimal motion cueing: a model predictive controller with a safe fallback (thesis chapter 7).
+
+With a pilot in the loop the desired path is known only a horizon T_h ahead. :class:`MPC` is built
+once and stepped every T_c = h seconds: ``step(state, preview) -> Command``. Each step solves the
+problem of :mod:`desdemona.problem` over the horizon (eq. 3.8) from the measured state, warm-started
+from the previous plan shifted by one step, with every limit hard and every planned state
+*stoppable* (each track and heave position can still brake to rest within its limits: the end
+condition of chapter 7, section 3.4's K, imposed at every node so that any remainder of a plan ends
+stoppable too).
+
+Fallback, in order, whenever the solver fails, misses its deadline or is given an unusable preview:
+the next step of the previous plan; when no plan is left, a braking command. Every command, whatever
+its source, is checked against every limit over the coming step before it is returned; a braking
+command is scaled down until it passes. The controller never returns a command that violates a limit.
+
+Predictors (:data:`PREDICTORS`) turn what is known now into the preview: ``perfect`` (the thesis'
+assumption: the true future), ``hold`` (the present value held) and ``linear`` (extrapolated from the
+last two samples).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Literal
+
+import numpy as np
+
+from desdemona.model import Model
+from desdemona.problem import CueingProblem, ProblemOptions
+from desdemona.profiles import DesiredPath
+from desdemona.simulate import TOLERANCE
+
+
+@dataclass(frozen=True)
+class MPCOptions:
+    """horizon : T_h [s]; step : h = T_c [s], the control period and the grid of the plan; deadline :
+    compute budget per step [s] (default: the step); substeps, regularisation, margin, weights : as in
+    :class:`desdemona.problem.ProblemOptions`; braking : fraction of the acceleration limit assumed
+    for stopping; max_iter : solver iterations per step."""
+
+    horizon: float = 2.0
+    step: float = 0.02
+    deadline: float | None = None
+    substeps: int = 1
+    regularisation: float = 1e-4
+    margin: float = 1e-3
+    braking: float = 0.5
+    weights: tuple[float, ...] | None = None
+    max_iter: int = 100
+
+    def __post_init__(self):
+        if not (self.step > 0 and self.horizon >= 2 * self.step):
+            raise ValueError(f"need step > 0 and horizon >= 2 steps, got step {self.step}, horizon {self.horizon}")
+
+
+@dataclass(frozen=True)
+class Command:
+    """What one step returns: the joint accelerations to hold for the next step, and why.
+
+    source : "mpc" (this step's plan), "shifted" (the previous plan), "brake" (no plan left);
+    compute_time [s] of the step; reason : why a fallback was used ("" for "mpc").
+    """
+
+    qdd: np.ndarray
+    source: Literal["mpc", "shifted", "brake"]
+    compute_time: float
+    reason: str = ""
+
+
+def predict_perfect(path: DesiredPath, now: float, horizon: float) -> DesiredPath:
+    """The true future of the path over [now, now + horizon] (the thesis' assumption in 7.3)."""
+    return _window(path, now, horizon, lambda t: t)
+
+
+def predict_hold(path: DesiredPath, now: float, horizon: float) -> DesiredPath:
+    """The value at ``now`` held over the horizon."""
+    return _window(path, now, horizon, lambda t: np.full_like(t, now))
+
+
+def predict_linear(path: DesiredPath, now: float, horizon: float) -> DesiredPath:
+    """Linear extrapolation from the last two samples at or before ``now``."""
+    k = max(1, int(np.searchsorted(path.t, now, side="right")) - 1)
+    t0, t1 = path.t[k - 1], path.t[k]
+
+    def values(column):
+        slope = (column[k] - column[k - 1]) / (t1 - t0)
+        return lambda t: column[k] + slope * (t - t1)
+
+    t = now + np.linspace(0.0, horizon, max(2, int(round(horizon / np.min(np.diff(path.t)))) + 1))
+    S = None if path.S_d is None else np.column_stack([values(path.S_d[:, i])(t) for i in range(6)])
+    M = None if path.S_d is not None else np.maximum(values(path.M_d)(t), 0.0)
+    return DesiredPath(path.name, t - now, S, path.weights, path.description, M)
+
+
+PREDICTORS = {"perfect": predict_perfect, "hold": predict_hold, "linear": predict_linear}
+
+
+def _window(path: DesiredPath, now: float, horizon: float, source_times) -> DesiredPath:
+    dt = float(np.min(np.diff(path.t)))
+    t = now + np.linspace(0.0, horizon, max(2, int(round(horizon / dt)) + 1))
+    times = np.clip(source_times(t), path.t[0], path.t[-1])
+    S = None if path.S_d is None else path.sample(times)
+    M = None if path.S_d is not None else path.sample_modulus(times)
+    return DesiredPath(path.name, t - now, S, path.weights, path.description, M)
+
+
+class MPC:
+    """The model predictive cueing controller, built once for a model and options, then stepped."""
+
+    def __init__(self, model: Model, options: MPCOptions = MPCOptions(), weights=None):
+        self.model, self.options = model, options
+        self.deadline = options.deadline if options.deadline is not None else options.step
+        n_steps = int(round(options.horizon / options.step))
+        t = np.linspace(0.0, n_steps * options.step, n_steps + 1)
+        # A placeholder path fixes the problem's shape; the preview arrives as its parameter each step.
+        placeholder = DesiredPath("preview", t, None if model.config.modulus_cost else np.zeros((len(t), 6)),
+                                  weights=weights or (1, 1, 1, 1, 1, 1),
+                                  modulus=np.zeros(len(t)) if model.config.modulus_cost else None)
+        problem_options = ProblemOptions(
+            h_u=options.step, substeps=options.substeps, initial="given",
+            initial_state=(np.zeros(model.n), np.zeros(model.n)), regularisation=options.regularisation,
+            margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6,
+            stoppable=True, braking=options.braking)
+        self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
+        self.plan: tuple[np.ndarray, np.ndarray] | None = None  # node states, controls
+        self.plan_age = 0
+        self.history: list[Command] = []
+
+    # ------------------------------------------------------------------------------------------
+
+    def step(self, state, preview) -> Command:
+        """The command for the next step from the measured state (q, qd) and the preview of S_d.
+
+        preview : a :class:`DesiredPath` starting now, or raw arrays ``(t, values)`` with t (K,) [s]
+            from now and values (K, 6) of S_d or (K,) of M_d for ``dfs`` (as a predictor may deliver
+            them, NaN included: such a preview is not used).
+        """
+        start = time.perf_counter()
+        q, qd = (np.asarray(v, dtype=float).reshape(self.model.n) for v in state)
+        t, values = self._preview_arrays(preview)
+        reason = self._preview_problem(t, values)
+        plan = None
+        if not reason:
+            plan, success, elapsed = self._solve(q, qd, self._data(t, values))
+            if not success:
+                reason, plan = "solver failed", None
+            elif elapsed > self.deadline:
+                reason, plan = f"deadline missed ({elapsed * 1e3:.1f} ms > {self.deadline * 1e3:.1f} ms)", None
+        if plan is not None and self._safe(q, qd, plan[1][0]):
+            self.plan, self.plan_age = plan, 0
+            command = Command(plan[1][0].copy(), "mpc", time.perf_counter() - start)
+        else:
+            reason = reason or "plan fails the limit check"
+            command = self._fallback(q, qd, reason, start)
+        self.history.append(command)
+        return command
+
+    def _preview_arrays(self, preview):
+        if isinstance(preview, DesiredPath):
+            values = preview.M_d if self.model.config.modulus_cost else preview.S_d
+            return preview.t, values
+        t, values = preview
+        return np.asarray(t, dtype=float), None if values is None else np.asarray(values, dtype=float)
+
+    def _preview_problem(self, t, values) -> str:
+        shape = (len(t),) if self.model.config.modulus_cost else (len(t), 6)
+        if values is None or values.shape != shape:
+            return "preview misses the channels this configuration needs"
+        if not (np.all(np.isfinite(values)) and np.all(np.isfinite(t))):
+            return "preview has NaN or inf"
+        if len(t) < 2 or np.any(np.diff(t) <= 0):
+            return "preview time does not increase"
+        if t[-1] < self.options.horizon - 1e-9:
+            return f"preview covers {t[-1]:.3g} s of the {self.options.horizon:g} s horizon"
+        return ""
+
+    def _data(self, t, values) -> np.ndarray:
+        times = self.problem.sub_times()  # relative to now: the placeholder starts at 0
+        if self.model.config.modulus_cost:
+            return np.interp(times, t, values).T
+        S_d = np.column_stack([np.interp(times.ravel(), t, values[:, i]) for i in range(6)])
+        return S_d.reshape(self.problem.N, -1).T
+
+    def _solve(self, q, qd, data):
+        """One warm-started solve from (q, qd); returns ((x, u), success, elapsed seconds)."""
+        prob = self.problem
+        n = self.model.n
+        if self.plan is not None:
+            x_prev, u_prev = self.plan
+            shift = min(self.plan_age + 1, len(u_prev) - 1)
+            u = np.vstack([u_prev[shift:], np.repeat(u_prev[-1:], shift, axis=0)])
+        else:
+            u = np.zeros((prob.N, n))
+        x = prob.states_from(q, qd, u)
+        lbx, ubx = prob.lbx.copy(), prob.ubx.copy()
+        lbx[:n], ubx[:n] = q, q
+        lbx[n:2 * n], ubx[n:2 * n] = qd, qd
+        start = time.perf_counter()
+        sol = prob.solver(x0=prob.pack(x, u), lbx=lbx, ubx=ubx, lbg=prob.lbg, ubg=prob.ubg,
+                          p=np.asarray(data).ravel(order="F"))
+        elapsed = time.perf_counter() - start
+        success = bool(prob.solver.stats()["success"])
+        return prob.unpack(sol["x"]), success, elapsed
+
+    def _safe(self, q, qd, qdd) -> bool:
+        """Every limit over the coming step with this command, at the step's sub-points, to the
+        tolerance of the independent check."""
+        lim, h = self.model.limits, self.options.step
+        ok = 1.0 + TOLERANCE
+        if np.any(np.abs(qdd) > lim["acceleration"] * ok):
+            return False
+        s = np.linspace(0.0, h, 5)[:, None]
+        qs, qds = q + qd * s + 0.5 * qdd * s * s, qd + qdd * s
+        lo, hi = lim["position_min"], lim["position_max"]
+        span = np.where(np.isfinite(hi - lo), hi - lo, 1.0)
+        if np.any(qs < lo - TOLERANCE * span) or np.any(qs > hi + TOLERANCE * span):
+            return False
+        if np.any(np.abs(qds) > lim["velocity"] * ok):
+            return False
+        tau = self.model.tau(qs, qds, np.tile(qdd, (len(s), 1)))
+        return not (np.any(np.abs(tau) > lim["effort"] * ok) or np.any(np.abs(tau * qds) > lim["power"] * ok))
+
+    def _fallback(self, q, qd, reason: str, start: float) -> Command:
+        if self.plan is not None and self.plan_age + 1 < len(self.plan[1]):
+            self.plan_age += 1
+            qdd = self.plan[1][self.plan_age]
+            if self._safe(q, qd, qdd):
+                return Command(qdd.copy(), "shifted", time.perf_counter() - start, reason)
+        self.plan = None
+        return Command(self.brake(q, qd), "brake", time.perf_counter() - start, reason)
+
+    def brake(self, q, qd) -> np.ndarray:
+        """The strongest deceleration towards rest (at most ``braking`` x the acceleration limit, not
+        past zero rate within the step) that keeps every limit over the step; scaled down until safe."""
+        lim, h = self.model.limits, self.options.step
+        full = -np.sign(qd) * np.minimum(self.options.braking * lim["acceleration"], np.abs(qd) / h)
+        for scale in (1.0, 0.75, 0.5, 0.25, 0.1, 0.0):
+            qdd = scale * full
+            if self._safe(q, qd, qdd):
+                return qdd
+        return np.zeros_like(qd)  # holding: the last resort (the independent check reports any excess)
+
+
+@dataclass(frozen=True, eq=False)
+class ClosedLoop:
+    """A closed-loop run: the commands, their sources and compute times, on the control grid."""
+
+    t_nodes: np.ndarray
+    q0: np.ndarray
+    qd0: np.ndarray
+    u: np.ndarray
+    sources: tuple[str, ...]
+    compute_times: np.ndarray
+    reasons: tuple[str, ...] = field(default=())
+
+
+def run_closed_loop(controller: MPC, path: DesiredPath, predictor: str = "perfect", q0=None, qd0=None,
+                    duration: float | None = None) -> ClosedLoop:
+    """Simulate the controller on the plant: the commanded accelerations held for one step each and
+    integrated exactly (the same model), the preview from ``predictor`` at every step."""
+    predict = PREDICTORS[predictor]
+    h, n = controller.options.step, controller.model.n
+    steps = int(math.floor((duration or path.duration) / h + 1e-9))
+    q = np.zeros(n) if q0 is None else np.asarray(q0, float).copy()
+    qd = np.zeros(n) if qd0 is None else np.asarray(qd0, float).copy()
+    start_q, start_qd = q.copy(), qd.copy()
+    u, sources, times, reasons = [], [], [], []
+    for k in range(steps):
+        command = controller.step((q, qd), predict(path, k * h, controller.options.horizon))
+        u.append(command.qdd)
+        sources.append(command.source)
+        times.append(command.compute_time)
+        reasons.append(command.reason)
+        q, qd = q + qd * h + 0.5 * command.qdd * h * h, qd + command.qdd * h
+    return ClosedLoop(np.arange(steps + 1) * h, start_q, start_qd, np.array(u), tuple(sources), np.array(times),
+                      tuple(reasons))

@@ -1,0 +1,123 @@
+"""The on-line controller: closed loop against the classical loop and the off-line optimum, faults."""
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+from desdemona import Model, profiles
+from desdemona.baselines import classical_dfs
+from desdemona.offline import OptimizeOptions, optimize
+from desdemona.online import MPC, MPCOptions, predict_hold, predict_linear, predict_perfect, run_closed_loop
+from desdemona.problem import ProblemOptions
+from desdemona.simulate import check
+
+# No deadline in tests: timings are measured in the benchmark, never asserted here.
+OPTIONS = MPCOptions(horizon=1.0, step=0.05, deadline=float("inf"))
+
+
+def dfs_runs(params, path):
+    model = Model(params, "dfs")
+    _, _, q1d, _ = classical_dfs(path, model)
+    run = run_closed_loop(MPC(model, OPTIONS), path, "perfect", q0=[0.0], qd0=[q1d[0]])
+    mpc, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=OPTIONS.step)
+    t, q1, q1d, q1dd = classical_dfs(path, model, times=run.t_nodes)
+    classical, _ = check(model, path, t, q1[:1], q1d[:1], q1dd[:-1, None], step=OPTIONS.step)
+    offline = optimize(path, "dfs", params, OptimizeOptions(ProblemOptions(h_u=OPTIONS.step), starts=2))
+    return run, mpc, classical, offline.check
+
+
+@pytest.mark.parametrize("path", [profiles.dfs_catapult(), profiles.roller_coaster(duration=15.0)],
+                         ids=["catapult", "roller-coaster"])
+def test_dfs_mpc_beats_the_classical_loop_and_nears_the_offline_optimum(params, path):
+    run, mpc, classical, offline = dfs_runs(params, path)
+    assert mpc.passed and classical.passed
+    assert mpc.rms < classical.rms
+    assert mpc.rms <= 1.2 * offline.rms
+    assert set(run.sources) == {"mpc"}
+
+
+def test_yaw_track_cabin_closed_loop_keeps_every_limit(params):
+    path = profiles.catapult(level=15.0, push=1.0, quiet=0.5, duration=4.0)
+    model = Model(params, "yaw-track-cabin")
+    run = run_closed_loop(MPC(model, OPTIONS, weights=path.weights), path, "perfect")
+    result, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=OPTIONS.step)
+    assert result.passed
+    assert result.rms_channels[4] < np.sqrt(np.mean(path.S_d[:, 4] ** 2))  # better than not moving
+
+
+class Faulty(MPC):
+    """An MPC whose solver fails or runs late on chosen steps."""
+
+    def __init__(self, *args, fail=(), late=(), **kw):
+        super().__init__(*args, **kw)
+        self.fail, self.late, self.count = set(fail), set(late), 0
+
+    def _solve(self, q, qd, data):
+        plan, success, elapsed = super()._solve(q, qd, data)
+        self.count += 1
+        if self.count - 1 in self.fail:
+            return plan, False, elapsed
+        if self.count - 1 in self.late:
+            return plan, True, 2.0 * self.deadline
+        return plan, success, elapsed
+
+
+def faulty_predictor(bad_steps, kind):
+    def predict(path, now, horizon):
+        preview = predict_perfect(path, now, horizon)
+        if round(now / OPTIONS.step) in bad_steps:
+            if kind == "nan":
+                M = preview.M_d.copy()
+                M[3] = np.nan
+                return preview.t, M
+            return predict_perfect(path, now, horizon / 3)  # short
+        return preview
+    return predict
+
+
+@pytest.mark.parametrize("fault", ["fail", "late", "nan", "short", "long outage"])
+def test_fallback_engages_and_the_run_stays_within_limits(params, fault, monkeypatch):
+    model = Model(params, "dfs")
+    path = profiles.dfs_catapult()
+    steps = range(60, 70) if fault != "long outage" else range(60, 140)  # 80 steps: four horizons
+    kwargs = {"fail": steps} if fault in ("fail", "long outage") else {"late": steps} if fault == "late" else {}
+    # a deadline no real solve comes near, so that only the injected steps are late
+    controller = Faulty(model, dataclasses.replace(OPTIONS, deadline=30.0), **kwargs)
+    if fault in ("nan", "short"):
+        from desdemona import online
+        monkeypatch.setitem(online.PREDICTORS, "perfect", faulty_predictor(set(steps), fault))
+    _, _, q1d, _ = classical_dfs(path, model)
+    run = run_closed_loop(controller, path, "perfect", q0=[0.0], qd0=[q1d[0]])
+    assert len(run.u) == int(path.duration / OPTIONS.step)
+    assert all(run.sources[k] != "mpc" for k in steps)
+    assert run.sources[59] == "mpc" and run.sources[-1] == "mpc"
+    if fault == "long outage":
+        assert "brake" in run.sources and "shifted" in run.sources
+    else:
+        assert {run.sources[k] for k in steps} == {"shifted"}
+    result, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=OPTIONS.step)
+    assert result.passed, result.describe_violations()
+
+
+def test_brake_command_keeps_every_limit(params):
+    model = Model(params, "yaw-track-cabin")
+    mpc = MPC(model, OPTIONS)
+    lim = model.limits
+    q = np.array([0.0, 0.5, 0.0])  # a stoppable state: 0.83 m to brake the track from 2.9 m/s
+    qd = np.array([0.95, 0.9, 1.0]) * lim["velocity"]
+    qdd = mpc.brake(q, qd)
+    assert np.all(np.sign(qdd) == -np.sign(qd)) and mpc._safe(q, qd, qdd)
+
+
+def test_predictors():
+    path = profiles.catapult()
+    now, horizon = 1.1, 0.5
+    perfect = predict_perfect(path, now, horizon)
+    np.testing.assert_allclose(perfect.S_d[:, 4], path.sample(now + perfect.t)[:, 4])
+    hold = predict_hold(path, now, horizon)
+    np.testing.assert_allclose(hold.S_d[:, 4], path.sample([now])[0, 4])
+    linear = predict_linear(path, now, horizon)
+    k = np.searchsorted(path.t, now, side="right") - 1
+    slope = (path.S_d[k, 4] - path.S_d[k - 1, 4]) / (path.t[k] - path.t[k - 1])
+    np.testing.assert_allclose(linear.S_d[-1, 4], path.S_d[k, 4] + slope * (now + horizon - path.t[k]), rtol=1e-9)
