@@ -16,10 +16,11 @@ from desdemona.simulate import check
 OPTIONS = MPCOptions(horizon=1.0, step=0.05, deadline=float("inf"))
 
 
-def dfs_runs(params, path):
+def dfs_runs(params, path, method="rti"):
     model = Model(params, "dfs")
     _, _, q1d, _ = classical_dfs(path, model)
-    run = run_closed_loop(MPC(model, OPTIONS), path, "perfect", q0=[0.0], qd0=[q1d[0]])
+    options = dataclasses.replace(OPTIONS, method=method)
+    run = run_closed_loop(MPC(model, options), path, "perfect", q0=[0.0], qd0=[q1d[0]])
     mpc, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=OPTIONS.step)
     t, q1, q1d, q1dd = classical_dfs(path, model, times=run.t_nodes)
     classical, _ = check(model, path, t, q1[:1], q1d[:1], q1dd[:-1, None], step=OPTIONS.step)
@@ -27,10 +28,11 @@ def dfs_runs(params, path):
     return run, mpc, classical, offline.check
 
 
-@pytest.mark.parametrize("path", [profiles.dfs_catapult(), profiles.roller_coaster(duration=15.0)],
-                         ids=["catapult", "roller-coaster"])
-def test_dfs_mpc_beats_the_classical_loop_and_nears_the_offline_optimum(params, path):
-    run, mpc, classical, offline = dfs_runs(params, path)
+@pytest.mark.parametrize("path, method", [(profiles.dfs_catapult(), "rti"), (profiles.dfs_catapult(), "nlp"),
+                                          (profiles.roller_coaster(duration=15.0), "rti")],
+                         ids=["catapult-rti", "catapult-nlp", "roller-coaster-rti"])
+def test_dfs_mpc_beats_the_classical_loop_and_nears_the_offline_optimum(params, path, method):
+    run, mpc, classical, offline = dfs_runs(params, path, method)
     assert mpc.passed and classical.passed
     assert mpc.rms < classical.rms
     assert mpc.rms <= 1.2 * offline.rms

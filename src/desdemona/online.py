@@ -25,6 +25,7 @@ import time
 from dataclasses import dataclass, field
 from typing import Literal
 
+import casadi as ca
 import numpy as np
 
 from desdemona.model import Model
@@ -38,7 +39,9 @@ class MPCOptions:
     """horizon : T_h [s]; step : h = T_c [s], the control period and the grid of the plan; deadline :
     compute budget per step [s] (default: the step); substeps, regularisation, margin, weights : as in
     :class:`desdemona.problem.ProblemOptions`; braking : fraction of the acceleration limit assumed
-    for stopping; max_iter : solver iterations per step."""
+    for stopping; method : "rti" (real-time iteration: one Gauss-Newton QP per step, linearised at the
+    shifted previous plan, solved by CasADi's ``qp_solver`` plugin) or "nlp" (IPOPT to convergence,
+    warm-started, at most ``max_iter`` iterations)."""
 
     horizon: float = 2.0
     step: float = 0.02
@@ -49,6 +52,8 @@ class MPCOptions:
     braking: float = 0.5
     weights: tuple[float, ...] | None = None
     max_iter: int = 100
+    method: Literal["rti", "nlp"] = "rti"
+    qp_solver: str = "hpipm"
 
     def __post_init__(self):
         if not (self.step > 0 and self.horizon >= 2 * self.step):
@@ -124,6 +129,8 @@ class MPC:
             margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6,
             stoppable=True, braking=options.braking)
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
+        if options.method == "rti":
+            self._qp_data, self._qp = self._real_time_iteration(options.qp_solver)
         self.plan: tuple[np.ndarray, np.ndarray] | None = None  # node states, controls
         self.plan_age = 0
         self.history: list[Command] = []
@@ -183,6 +190,46 @@ class MPC:
         S_d = np.column_stack([np.interp(times.ravel(), t, values[:, i]) for i in range(6)])
         return S_d.reshape(self.problem.N, -1).T
 
+    def _real_time_iteration(self, qp_solver: str):
+        """The Gauss-Newton QP of one real-time iteration, as a data Function and a conic solver.
+
+        Cost: sum of squared stage residuals r (the problem's own), Hessian 2 J_r^T J_r (convex, so
+        active-set solvers such as daqp apply), gradient 2 J_r^T r; constraints linearised with their
+        exact Jacobian; all at the linearisation point w and the preview p.
+        """
+        prob = self.problem
+        N, nx, nu = prob.N, prob.nx, prob.nu
+        nw = nx + nu
+        x, u = ca.SX.sym("x", nx), ca.SX.sym("u", nu)
+        d = ca.SX.sym("d", prob._stage.size1_in(2))
+        r = prob._residual(x, u, d)
+        J = ca.jacobian(r, ca.vertcat(x, u))
+        stage = ca.Function("stage_gn", [x, u, d], [2.0 * J.T @ J, 2.0 * J.T @ r])
+        w, p = prob.nlp["x"], prob.nlp["p"]
+        XU = ca.reshape(w[: N * nw], nw, N)
+        data = ca.reshape(p, d.numel(), N)
+        H_blocks, g_blocks = stage.map(N, "serial")(XU[:nx, :], XU[nx:, :], data)
+        # a tiny diagonal keeps the QP strictly convex in directions the cost does not see
+        H = ca.diagcat(*[H_blocks[:, k * nw:(k + 1) * nw] for k in range(N)], ca.MX(nx, nx))
+        H = H + 1e-9 * ca.MX.eye(N * nw + nx)
+        gradient = ca.vertcat(ca.vec(g_blocks), ca.MX.zeros(nx))
+        g, A = prob._derivatives["jac_g"](w, p)
+        qp_data = ca.Function("qp_data", [w, p], [H, gradient, A, g])
+        options = {"error_on_fail": False, "print_time": False}
+        if qp_solver == "hpipm":
+            # HPIPM exploits the stage structure (measured: 1.0 ms for the 2 s dfs horizon at 50 Hz,
+            # against 38 ms for dense daqp on the same QP); it must be told the stages' sizes.
+            ng = prob.n_path
+            options.update(N=N, nx=[nx] * (N + 1), nu=[nu] * N + [0], ng=[ng + prob.n_initial] + [ng] * (N - 1) + [0],
+                           hpipm={"iter_max": 50, "mode": "speed", "res_g_max": 1e-6, "res_b_max": 1e-8,
+                                  "res_d_max": 1e-8, "res_m_max": 1e-7})
+        elif qp_solver == "qpoases":
+            options.update(printLevel="none")
+        elif qp_solver == "osqp":
+            options["osqp"] = {"verbose": False, "eps_abs": 1e-7, "eps_rel": 1e-7, "max_iter": 4000}
+        qp = ca.conic("rti", qp_solver, {"h": qp_data.sparsity_out(0), "a": qp_data.sparsity_out(2)}, options)
+        return qp_data, qp
+
     def _solve(self, q, qd, data):
         """One warm-started solve from (q, qd); returns ((x, u), success, elapsed seconds)."""
         prob = self.problem
@@ -193,16 +240,25 @@ class MPC:
             u = np.vstack([u_prev[shift:], np.repeat(u_prev[-1:], shift, axis=0)])
         else:
             u = np.zeros((prob.N, n))
-        x = prob.states_from(q, qd, u)
+        x = prob.states_from(q, qd, u, clip=self.options.method != "rti")  # RTI: a consistent point
         lbx, ubx = prob.lbx.copy(), prob.ubx.copy()
         lbx[:n], ubx[:n] = q, q
         lbx[n:2 * n], ubx[n:2 * n] = qd, qd
         start = time.perf_counter()
-        sol = prob.solver(x0=prob.pack(x, u), lbx=lbx, ubx=ubx, lbg=prob.lbg, ubg=prob.ubg,
-                          p=np.asarray(data).ravel(order="F"))
+        p = np.asarray(data).ravel(order="F")
+        w = prob.pack(x, u)
+        if self.options.method == "rti":
+            H, gradient, A, g = self._qp_data(w, p)
+            g = np.asarray(g).ravel()
+            sol = self._qp(h=H, g=gradient, a=A, lba=prob.lbg - g, uba=prob.ubg - g, lbx=lbx - w, ubx=ubx - w)
+            success = bool(self._qp.stats()["success"])
+            w = w + np.asarray(sol["x"]).ravel()
+        else:
+            sol = prob.solver(x0=w, lbx=lbx, ubx=ubx, lbg=prob.lbg, ubg=prob.ubg, p=p)
+            success = bool(prob.solver.stats()["success"])
+            w = sol["x"]
         elapsed = time.perf_counter() - start
-        success = bool(prob.solver.stats()["success"])
-        return prob.unpack(sol["x"]), success, elapsed
+        return prob.unpack(w), success, elapsed
 
     def _safe(self, q, qd, qdd) -> bool:
         """Every limit over the coming step with this command, at the step's sub-points, to the

@@ -209,7 +209,6 @@ class CueingProblem:
         q, qd, z = x[:n], x[n:2 * n], x[2 * n:]
         lim = self.model.limits
         margin = 1.0 - self.options.margin
-        weights = ca.DM(self.weights)
         bounded = [i for i in range(n) if np.isfinite(lim["position_max"][i])]
         nd = (m + 1) if self.modulus else (m * 6 if self.vestibular else (m + 1) * 6)
         d = ca.SX.sym("d", nd)
@@ -228,25 +227,29 @@ class CueingProblem:
             powers.append(tau * qdj / ca.DM(lim["power"] * margin))
             if 0 < j < m and bounded:
                 positions.append(qj[bounded])
+        # The cost is a sum of squared residuals (trapezoid rule, or zero-order hold with perception),
+        # so that a Gauss-Newton Hessian can be formed from the same definition (see online.py).
         T = self.path.duration
         trapezoid = np.full(m + 1, h)
         trapezoid[[0, -1]] = 0.5 * h
-        cost = 0
+        root_w = ca.DM(np.sqrt(self.weights))
+        residuals = []
         if self.modulus:
-            cost = sum(trapezoid[j] * values[j] ** 2 for j in range(m + 1))
+            residuals = [math.sqrt(trapezoid[j] / T) * values[j] for j in range(m + 1)]
         elif self.vestibular is None:
-            for j in range(m + 1):
-                e = values[j] - d[6 * j: 6 * j + 6]
-                cost += trapezoid[j] * ca.dot(weights * e, e)
+            residuals = [math.sqrt(trapezoid[j] / T) * root_w * (values[j] - d[6 * j: 6 * j + 6])
+                         for j in range(m + 1)]
         else:
             A, B = ca.DM(self.filter.Ad), ca.DM(self.filter.Bd)
             C, D = ca.DM(self.filter.C), ca.DM(self.filter.D)
             for j in range(m):  # zero-order hold of S over each sub-step
-                e = C @ z + D @ values[j] - d[6 * j: 6 * j + 6]
-                cost += h * ca.dot(weights * e, e)
+                residuals.append(math.sqrt(h / T) * root_w * (C @ z + D @ values[j] - d[6 * j: 6 * j + 6]))
                 z = A @ z + B @ values[j]
             x_next = ca.vertcat(x_next[:2 * n], z)
-        reg = self.options.regularisation * self.options.h_u * ca.sumsqr(u / ca.DM(lim["acceleration"]))
+        rho = self.options.regularisation * self.options.h_u / T
+        residuals.append(math.sqrt(rho) * u / ca.DM(lim["acceleration"]))
+        r = ca.vertcat(*residuals)
+        self._residual = ca.Function("stage_residual", [x, u, d], [r], ["x", "u", "d"], ["r"])
         if self.options.stoppable and bounded:
             # where the joint would come to rest braking at braking * qdd_max from the interval's end
             q_end, qd_end = x_next[:n][bounded], x_next[n:2 * n][bounded]
@@ -255,7 +258,7 @@ class CueingProblem:
         g = ca.vertcat(*positions, *taus, *powers)
         self.n_path = g.numel()
         self.n_positions = sum(p.numel() for p in positions)
-        return ca.Function("stage", [x, u, d], [x_next, (cost + reg) / T, g], ["x", "u", "d"],
+        return ca.Function("stage", [x, u, d], [x_next, ca.sumsqr(r), g], ["x", "u", "d"],
                            ["x_next", "L", "g"])
 
     # ------------------------------------------------------------------------------------------
@@ -415,16 +418,16 @@ class CueingProblem:
         XU = w[: N * (nx + nu)].reshape(N, nx + nu)
         return np.vstack([XU[:, :nx], w[N * (nx + nu):]]), XU[:, nx:]
 
-    def states_from(self, q0, qd0, u) -> np.ndarray:
-        """Node states (N + 1, nx) of a guess: the exact double integral of ``u``, clipped to the limits,
-        filter states at the steady state of the first S."""
-        n, h, lim = self.model.n, self.options.h_u, self.model.limits
-        q, qd = np.empty((self.N + 1, n)), np.empty((self.N + 1, n))
-        q[0], qd[0] = q0, qd0
-        for k in range(self.N):
-            q[k + 1] = q[k] + qd[k] * h + 0.5 * u[k] * h * h
-            qd[k + 1] = np.clip(qd[k] + u[k] * h, -lim["velocity"], lim["velocity"])
-            q[k + 1] = np.clip(q[k + 1], lim["position_min"], lim["position_max"])
+    def states_from(self, q0, qd0, u, clip: bool = True) -> np.ndarray:
+        """Node states (N + 1, nx) of a guess: the exact double integral of ``u`` (clipped to the
+        limits with ``clip``), filter states at the steady state of the first S."""
+        h, lim = self.options.h_u, self.model.limits
+        u = np.asarray(u, dtype=float)
+        qd = np.vstack([qd0, qd0 + np.cumsum(u * h, axis=0)])
+        q = np.vstack([q0, q0 + np.cumsum(qd[:-1] * h + 0.5 * u * h * h, axis=0)])
+        if clip:
+            qd = np.clip(qd, -lim["velocity"], lim["velocity"])
+            q = np.clip(q, lim["position_min"], lim["position_max"])
         x = np.hstack([q, qd])
         if self.nz:
             S0 = self.model.S(q0, qd0, u[0])
