@@ -123,3 +123,24 @@ def test_predictors():
     k = np.searchsorted(path.t, now, side="right") - 1
     slope = (path.S_d[k, 4] - path.S_d[k - 1, 4]) / (path.t[k] - path.t[k - 1])
     np.testing.assert_allclose(linear.S_d[-1, 4], path.S_d[k, 4] + slope * (now + horizon - path.t[k]), rtol=1e-9)
+
+
+def test_online_command_writes_the_folder(tmp_path, capsys):
+    import json
+
+    from desdemona.cli import main
+
+    out = tmp_path / "online"
+    assert main(["online", "dfs-catapult", "--config", "dfs", "--horizon", "1", "--step", "0.05",
+                 "--predictor", "perfect", "--out", str(out)]) == 0
+    names = {p.name for p in out.iterdir()}
+    assert {"trajectory.csv", "summary.json", "trajectory.mat", "cycles.csv", "online.png",
+            "compute_time.png", "modulus.png", "limits.png"} <= names
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["metrics"]["limits_kept"] is True
+    assert summary["metrics"]["rms_modulus"] < summary["metrics"]["rms_modulus_classical_loop"]
+    assert summary["cycles"]["count"] == 240
+    assert (out / "cycles.csv").read_text().count("\n") == 241
+    assert main(["online", "dfs-catapult", "--horizon", "50", "--out", str(tmp_path / "x")]) == 2
+    assert "--horizon" in capsys.readouterr().err
+    assert not (tmp_path / "x").exists()

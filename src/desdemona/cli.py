@@ -101,6 +101,26 @@ def _parser() -> argparse.ArgumentParser:
                        help="Dask scheduler address (tcp://host:8786): run the jobs on that cluster")
     batch.set_defaults(run=_run_batch)
 
+    online = sub.add_parser(
+        "online", help="run the on-line MPC in closed loop on a desired path",
+        description="Simulate the on-line model predictive controller: at every step it sees only the "
+                    "horizon ahead (through the predictor), plans, and commands the next step; a "
+                    "failed or late plan falls back to the previous plan, then to braking. The whole "
+                    "run is checked against every limit and written as a result folder with per-cycle "
+                    "timings (cycles.csv) and figures.")
+    online.add_argument("profile", metavar="PROFILE_OR_CSV")
+    _add_machine_options(online, default_config="dfs")
+    online.add_argument("--out", required=True, metavar="DIR")
+    online.add_argument("--horizon", type=float, default=2.0, metavar="SECONDS", help="T_h (default: 2)")
+    online.add_argument("--step", type=float, default=0.02, metavar="SECONDS",
+                        help="control period T_c, also the deadline of each cycle (default: 0.02)")
+    online.add_argument("--predictor", choices=("perfect", "hold", "linear"), default="perfect",
+                        help="how the future path is guessed from what is known now (default: perfect)")
+    online.add_argument("--method", choices=("rti", "nlp"), default="rti",
+                        help="rti: one QP per cycle (fast); nlp: IPOPT to convergence (default: rti)")
+    online.add_argument("--overwrite", action="store_true", help="replace DIR if it exists")
+    online.set_defaults(run=_run_online)
+
     prof = sub.add_parser("profiles", help="list the built-in desired paths",
                           description="List the built-in desired paths with a one-line description.")
     prof.set_defaults(run=_run_profiles)
@@ -215,6 +235,71 @@ def _run_batch(args) -> int:
     results = batch.run_batch(jobs, params, options, args.out, args.processes, args.dask)
     print(batch.table(results))
     return 0 if all(r.status == "ok" for r in results) else EXIT_UNSAFE
+
+
+def _run_online(args) -> int:
+    from desdemona import report
+    from desdemona.baselines import classical_dfs
+    from desdemona.online import MPC, MPCOptions, run_closed_loop
+    from desdemona.simulate import LimitViolation, check, evaluate, integrate
+
+    model = _machine(args)
+    path = _load_profile(args.profile)
+    out = Path(args.out)
+    if out.exists() and not args.overwrite:
+        raise UserError(f"{out}: already exists; choose another folder or add --overwrite")
+    if not out.resolve().parent.is_dir() or not os.access(out.resolve().parent, os.W_OK):
+        raise UserError(f"{out}: cannot create it: {out.resolve().parent} is not a writable folder")
+    if not (0 < args.step and 2 * args.step <= args.horizon <= path.duration):
+        raise UserError(f"need 0 < --step, 2 steps <= --horizon <= the path's {path.duration:g} s")
+    if not model.config.modulus_cost and path.S_d is None:
+        raise UserError(f"configuration {model.config.name!r} needs a full path; {args.profile} gives only "
+                        f"the modulus (use --config dfs)")
+    q0 = qd0 = None
+    classical = None
+    if model.config.modulus_cost:
+        t, q1, q1d, q1dd = classical_dfs(path, model)
+        q0, qd0 = [0.0], [q1d[0]]
+    controller = MPC(model, MPCOptions(horizon=args.horizon, step=args.step, method=args.method),
+                     weights=path.weights)
+    run = run_closed_loop(controller, path, args.predictor, q0=q0, qd0=qd0)
+    result, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=args.step)
+    if not result.passed:
+        raise LimitViolation(result, "the closed-loop trajectory")
+    t = run.t_nodes
+    traj = evaluate(model, path, t, *integrate(run.t_nodes, run.q0, run.qd0, run.u, t))
+    summary_classical = None
+    if model.config.modulus_cost:
+        tc, q1, q1d, q1dd = classical_dfs(path, model, times=t)
+        classical = evaluate(model, path, tc, q1[:, None], q1d[:, None], q1dd[:, None])
+        summary_classical = float(np.sqrt(np.mean((classical.M - classical.M_d) ** 2)))
+    times = run.compute_times
+    summary = {
+        "command": report.command_line(),
+        "path": {"name": path.name, "description": path.description, "duration_s": path.duration,
+                 "weights": list(path.weights)},
+        "configuration": {"name": model.config.name, "free_joints": list(model.config.joint_names),
+                          "held_positions": list(model.config.fixed)},
+        "method": f"mpc ({args.method}), predictor {args.predictor}, horizon {args.horizon:g} s, step {args.step:g} s",
+        "metrics": {"rms_weighted": result.rms, "rms_modulus": result.rms_modulus,
+                    "rms_modulus_classical_loop": summary_classical, "limits_kept": result.passed,
+                    "worst_use": result.worst, "check_grid_step_s": result.step},
+        "cycles": {"count": len(times), "deadline_s": controller.deadline,
+                   "compute_time_s": {"median": float(np.median(times)), "p99": float(np.percentile(times, 99)),
+                                      "max": float(times.max())},
+                   "sources": {s: run.sources.count(s) for s in ("mpc", "shifted", "brake")},
+                   "deadline_misses": int(np.sum(times > controller.deadline))},
+        "parameters": model.params.to_dict(),
+        "versions": report.versions(),
+    }
+    report.write_online(run, controller, path, traj, result, summary, out, classical, args.overwrite)
+    cycles = summary["cycles"]
+    print(f"{path.name} on-line on {model.config.name}: RMS = {result.rms:.4g}"
+          + (f" (classical loop {summary_classical:.4g})" if summary_classical is not None else "")
+          + f", worst limit use {result.worst_use:.4f}, compute per cycle median "
+          f"{1e3 * cycles['compute_time_s']['median']:.2f} ms, p99 {1e3 * cycles['compute_time_s']['p99']:.2f} ms, "
+          f"fallbacks {cycles['sources']['shifted'] + cycles['sources']['brake']}; written to {out}")
+    return 0
 
 
 def _run_profiles(args) -> int:

@@ -93,8 +93,12 @@ def write(result, out_dir: str | Path, command: str | None = None, overwrite: bo
     return write_folder(result.trajectory, summary, result.config.joint_names, out_dir, overwrite)
 
 
-def write_folder(traj: Trajectory, summary: dict, joint_names, out_dir: str | Path, overwrite: bool = False) -> Path:
-    """Write trajectory.csv, summary.json, trajectory.mat and the figures into ``out_dir`` atomically."""
+def write_folder(traj: Trajectory, summary: dict, joint_names, out_dir: str | Path, overwrite: bool = False,
+                 extra=None) -> Path:
+    """Write trajectory.csv, summary.json, trajectory.mat and the figures into ``out_dir`` atomically.
+
+    extra : optional ``extra(folder)`` that writes more files into the folder before it is moved in.
+    """
     import scipy.io
 
     out = Path(out_dir)
@@ -115,6 +119,8 @@ def write_folder(traj: Trajectory, summary: dict, joint_names, out_dir: str | Pa
         scipy.io.savemat(tmp / "trajectory.mat", {n.replace("-", "_"): table[:, i] for i, n in enumerate(names)},
                          oned_as="column")
         draw_figures(traj, summary, tmp)
+        if extra is not None:
+            extra(tmp)
         if out.exists():
             old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old.", dir=parent))
             os.replace(out, old / out.name)
@@ -254,3 +260,62 @@ def _json_default(value):
 
 def command_line() -> str:
     return " ".join(["desdemona", *sys.argv[1:]])
+
+
+def write_online(run, controller, path, traj: Trajectory, result_check, summary: dict, out_dir: str | Path,
+                 classical: Trajectory | None = None, overwrite: bool = False) -> Path:
+    """The result folder of a closed-loop run: the usual files plus ``cycles.csv`` (per-cycle compute
+    time, source of the command, fallback reason), ``online.png`` (like thesis figures 7.5/7.6) and
+    ``compute_time.png`` (histogram of compute time per cycle against the deadline)."""
+
+    def extra(folder: Path) -> None:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        with open(folder / "cycles.csv", "w") as fh:
+            fh.write("t,compute_time_s,source,reason\n")
+            for t, c, s, r in zip(run.t_nodes, run.compute_times, run.sources, run.reasons):
+                fh.write(f"{t:.6g},{c:.6g},{s},\"{r}\"\n")
+        fig, axes = plt.subplots(3, 2, figsize=(11, 9), sharex=True)
+        axes[0, 0].plot(traj.t, traj.M_d, "k-", label="M_d")
+        axes[0, 0].plot(traj.t, traj.M, "C0--", label="M (MPC)")
+        axes[1, 0].plot(traj.t, traj.M_d - traj.M, "C0", label="M_d - M (MPC)")
+        if classical is not None:
+            axes[0, 0].plot(classical.t, classical.M, "C3:", label="M_org (classical loop)")
+            axes[1, 0].plot(classical.t, classical.M_d - classical.M, "C3:", label="M_d - M_org")
+        axes[0, 0].set_ylabel("modulus [m/s^2]")
+        axes[1, 0].set_ylabel("error [m/s^2]")
+        axes[0, 1].plot(traj.t, traj.S[:, 3], label="S_x")
+        axes[1, 1].plot(traj.t, traj.S[:, 4], label="S_y")
+        axes[0, 1].set_ylabel("S_x [m/s^2]")
+        axes[1, 1].set_ylabel("S_y [m/s^2]")
+        lim = controller.model.limits
+        axes[2, 0].plot(traj.t, traj.tau / lim["effort"])
+        axes[2, 0].set_ylabel("force / max")
+        axes[2, 1].plot(traj.t, traj.power / lim["power"])
+        axes[2, 1].set_ylabel("power / max")
+        for ax in axes.ravel():
+            ax.grid(alpha=0.3)
+            if ax.get_legend_handles_labels()[0]:
+                ax.legend(fontsize=8)
+        for ax in axes[2]:
+            ax.axhline(1, color="r", lw=0.8, ls=":")
+            ax.axhline(-1, color="r", lw=0.8, ls=":")
+            ax.set_xlabel("t [s]")
+        fig.suptitle(f"{path.name} on-line, {controller.model.config.name}")
+        fig.tight_layout()
+        fig.savefig(folder / "online.png", dpi=100)
+        plt.close(fig)
+        fig, ax = plt.subplots(figsize=(8, 4))
+        ax.hist(run.compute_times * 1e3, bins=50)
+        ax.axvline(controller.deadline * 1e3, color="r", ls=":", label=f"deadline {controller.deadline * 1e3:g} ms")
+        ax.set_xlabel("compute time per cycle [ms]")
+        ax.set_ylabel("cycles")
+        ax.legend()
+        fig.tight_layout()
+        fig.savefig(folder / "compute_time.png", dpi=100)
+        plt.close(fig)
+
+    return write_folder(traj, summary, controller.model.config.joint_names, out_dir, overwrite, extra)
