@@ -144,3 +144,18 @@ def test_online_command_writes_the_folder(tmp_path, capsys):
     assert main(["online", "dfs-catapult", "--horizon", "50", "--out", str(tmp_path / "x")]) == 2
     assert "--horizon" in capsys.readouterr().err
     assert not (tmp_path / "x").exists()
+
+
+def test_perceived_mpc_lowers_the_perceived_error(params):
+    """yaw-track-cabin on-line with the thesis' vestibular model carried from step to step."""
+    model = Model(params, "yaw-track-cabin")
+    path = profiles.catapult(level=15.0, push=1.0, quiet=0.5, duration=4.0)
+    perceived = {}
+    for perception in (None, "thesis"):
+        options = dataclasses.replace(OPTIONS, perception=perception)
+        run = run_closed_loop(MPC(model, options, weights=path.weights), path, "perfect")
+        result, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=OPTIONS.step,
+                          perception="thesis")
+        assert result.passed and set(run.sources) == {"mpc"}
+        perceived[perception] = result.rms_perceived
+    assert perceived["thesis"] < perceived[None]

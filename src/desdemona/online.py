@@ -41,7 +41,9 @@ class MPCOptions:
     :class:`desdemona.problem.ProblemOptions`; braking : fraction of the acceleration limit assumed
     for stopping; method : "rti" (real-time iteration: one Gauss-Newton QP per step, linearised at the
     shifted previous plan, solved by CasADi's ``qp_solver`` plugin) or "nlp" (IPOPT to convergence,
-    warm-started, at most ``max_iter`` iterations)."""
+    warm-started, at most ``max_iter`` iterations); perception : minimise the perceived difference
+    through this vestibular model (chapter 6): the controller then carries the filter states of what
+    the person has felt and of what they should have felt from step to step."""
 
     horizon: float = 2.0
     step: float = 0.02
@@ -54,6 +56,7 @@ class MPCOptions:
     max_iter: int = 100
     method: Literal["rti", "nlp"] = "rti"
     qp_solver: str = "hpipm"
+    perception: str | None = None
 
     def __post_init__(self):
         if not (self.step > 0 and self.horizon >= 2 * self.step):
@@ -127,9 +130,10 @@ class MPC:
             h_u=options.step, substeps=options.substeps, initial="given",
             initial_state=(np.zeros(model.n), np.zeros(model.n)), regularisation=options.regularisation,
             margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6,
-            stoppable=True, braking=options.braking)
+            stoppable=True, braking=options.braking, perception=options.perception, initial_filter="given")
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         self.limits = model.limits
+        self.z = self.z_d = None  # filter states of the felt and the desired path (with perception)
         if options.method == "rti":
             self._qp_data, self._qp = self._real_time_iteration(options.qp_solver)
         self.plan: tuple[np.ndarray, np.ndarray] | None = None  # node states, controls
@@ -147,6 +151,8 @@ class MPC:
         """
         start = time.perf_counter()
         q, qd = (np.asarray(v, dtype=float).reshape(self.model.n) for v in state)
+        if self.problem.nz and self.z is None:  # the person has sat still before the run
+            self.z = self.problem.filter.steady_state(self.model.S(q, qd, np.zeros_like(q)))
         t, values = self._preview_arrays(preview)
         reason = self._preview_problem(t, values)
         plan = None
@@ -163,7 +169,21 @@ class MPC:
             reason = reason or "plan fails the limit check"
             command = self._fallback(q, qd, reason, start)
         self.history.append(command)
+        if self.problem.nz:
+            self._advance_filters(q, qd, command.qdd, reason)
         return command
+
+    def _advance_filters(self, q, qd, qdd, reason: str) -> None:
+        """Carry the felt filter state over the step just commanded, and the desired one with it."""
+        prob = self.problem
+        s = prob.tau_sub[:-1, None]
+        S = self.model.S(q + qd * s + 0.5 * qdd * s * s, qd + qdd * s, np.tile(qdd, (len(s), 1)))
+        for row in S:
+            self.z = prob.filter.Ad @ self.z + prob.filter.Bd @ row
+        if not reason and getattr(self, "_z_d_next", None) is not None:
+            self.z_d = self._z_d_next
+        elif self.z_d is not None:
+            self.z_d = None  # unknown without a usable preview: restart from the next preview's steady state
 
     def _preview_arrays(self, preview):
         if isinstance(preview, DesiredPath):
@@ -185,11 +205,20 @@ class MPC:
         return ""
 
     def _data(self, t, values) -> np.ndarray:
-        times = self.problem.sub_times()  # relative to now: the placeholder starts at 0
+        prob = self.problem
+        times = prob.sub_times()  # relative to now: the placeholder starts at 0
         if self.model.config.modulus_cost:
             return np.interp(times, t, values).T
         S_d = np.column_stack([np.interp(times.ravel(), t, values[:, i]) for i in range(6)])
-        return S_d.reshape(self.problem.N, -1).T
+        if prob.nz == 0:
+            return S_d.reshape(prob.N, -1).T
+        # perceived desired path over the horizon, from the desired filter state carried so far
+        held = S_d.reshape(prob.N, prob.m + 1, 6)[:, :-1, :].reshape(-1, 6)
+        if self.z_d is None:
+            self.z_d = prob.filter.steady_state(held[0])
+        y_d, states = prob.filter.simulate(held, self.z_d)
+        self._z_d_next = states[prob.m]  # after this step's sub-steps
+        return y_d.reshape(prob.N, -1).T
 
     def _real_time_iteration(self, qp_solver: str):
         """The Gauss-Newton QP of one real-time iteration, as a data Function and a conic solver.
@@ -246,6 +275,9 @@ class MPC:
         lbx, ubx = prob.lbx.copy(), prob.ubx.copy()
         lbx[:n], ubx[:n] = q, q
         lbx[n:2 * n], ubx[n:2 * n] = qd, qd
+        if prob.nz:
+            x[:, 2 * n:] = self.z
+            lbx[2 * n:prob.nx], ubx[2 * n:prob.nx] = self.z, self.z
         start = time.perf_counter()
         p = np.asarray(data).ravel(order="F")
         w = prob.pack(x, u)

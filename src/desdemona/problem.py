@@ -74,6 +74,8 @@ class ProblemOptions:
     regularisation : rho, see the module docstring.
     margin : relative back-off of torque and power limits inside the optimiser.
     solver : "ipopt" or "fatrop"; max_iter, tol : solver stopping criteria.
+    initial_filter : with perception, the filters start in the steady state of the first S ("steady",
+        off-line) or in a state the caller fixes through the bounds of x0 ("given", on-line).
     stoppable : every planned state must be able to brake to rest within the position limits at
         ``braking`` times the acceleration limit (the on-line end condition of chapter 7, here at every
         node so that any shifted plan ends stoppable too).
@@ -96,6 +98,7 @@ class ProblemOptions:
     expand: bool | None = None
     stoppable: bool = False
     braking: float = 0.5
+    initial_filter: Literal["steady", "given"] = "steady"
 
     def __post_init__(self):
         if not (math.isfinite(self.h_u) and self.h_u > 0):
@@ -293,7 +296,7 @@ class CueingProblem:
     def _initial_constraint(self) -> ca.Function:
         x, u = ca.SX.sym("x", self.nx), ca.SX.sym("u", self.nu)
         residual = ca.SX(0, 1)
-        if self.nz:
+        if self.nz and self.options.initial_filter == "steady":
             n = self.model.n
             steady = np.linalg.solve(np.eye(self.nz) - self.filter.Ad, self.filter.Bd)
             residual = x[2 * n:] - ca.DM(steady) @ self.model.functions["S"](x[:n], x[n:2 * n], u)
