@@ -166,12 +166,8 @@ def _load_profile(name: str) -> profiles.DesiredPath:
     return profiles.get_profile(name)  # raises, listing the built-in profiles
 
 
-def _run_optimize(args) -> int:
-    from desdemona import report
-    from desdemona.baselines import ThesisOptions
-    from desdemona.offline import OptimizeOptions, optimize, thesis_result
-    from desdemona.problem import ProblemOptions
-
+def _run_inputs(args):
+    """The machine, the desired path and the output folder of a run, each checked before any work."""
     model = _machine(args)
     path = _load_profile(args.profile)
     out = Path(args.out)
@@ -179,15 +175,25 @@ def _run_optimize(args) -> int:
         raise UserError(f"{out}: already exists; choose another folder or add --overwrite")
     if not out.resolve().parent.is_dir() or not os.access(out.resolve().parent, os.W_OK):
         raise UserError(f"{out}: cannot create it: {out.resolve().parent} is not a writable folder")
+    if not model.config.modulus_cost and path.S_d is None:
+        raise UserError(f"configuration {model.config.name!r} needs a full path t,wx,wy,wz,fx,fy,fz; "
+                        f"{args.profile} gives only the modulus (use --config dfs)")
+    return model, path, out
+
+
+def _run_optimize(args) -> int:
+    from desdemona import report
+    from desdemona.baselines import ThesisOptions
+    from desdemona.offline import OptimizeOptions, optimize, thesis_result
+    from desdemona.problem import ProblemOptions
+
+    model, path, out = _run_inputs(args)
     if args.starts < 1 or args.workers < 1:
         raise UserError("--starts and --workers must be at least 1")
     if not 0 < args.h_u <= path.duration:
         raise UserError(f"--h-u {args.h_u:g}: must be positive and at most the path's {path.duration:g} s")
     if model.config.modulus_cost and args.perception:
         raise UserError("--perception applies to the full path S, not to the dfs modulus")
-    if not model.config.modulus_cost and path.S_d is None:
-        raise UserError(f"configuration {model.config.name!r} needs a full path t,wx,wy,wz,fx,fy,fz; "
-                        f"{args.profile} gives only the modulus (use --config dfs)")
     progress = _progress_bar() if sys.stderr.isatty() else None
     if args.method == "thesis":
         result = thesis_result(path, model.config, model.params,
@@ -198,11 +204,9 @@ def _run_optimize(args) -> int:
         result = optimize(path, model.config, model.params, options, progress=progress)
     report.write(result, out, command=report.command_line(), overwrite=args.overwrite)
     c = result.check
-    print(f"{path.name} on {model.config.name}: RMS(S - S_d) = {c.rms:.4g} "
-          f"(perceived {c.rms_perceived:.4g})" if c.rms_perceived is not None else
-          f"{path.name} on {model.config.name}: RMS = {c.rms:.4g}", end="")
-    print(f", worst limit use {c.worst_use:.4f}, solver {result.solution.status}, "
-          f"{result.timings['wall']:.2f} s; written to {out}")
+    perceived = f" (perceived {c.rms_perceived:.4g})" if c.rms_perceived is not None else ""
+    print(f"{path.name} on {model.config.name}: RMS = {c.rms:.4g}{perceived}, worst limit use "
+          f"{c.worst_use:.4f}, solver {result.solution.status}, {result.timings['wall']:.2f} s; written to {out}")
     return 0
 
 
@@ -243,18 +247,9 @@ def _run_online(args) -> int:
     from desdemona.online import MPC, MPCOptions, run_closed_loop
     from desdemona.simulate import LimitViolation, check, evaluate, integrate
 
-    model = _machine(args)
-    path = _load_profile(args.profile)
-    out = Path(args.out)
-    if out.exists() and not args.overwrite:
-        raise UserError(f"{out}: already exists; choose another folder or add --overwrite")
-    if not out.resolve().parent.is_dir() or not os.access(out.resolve().parent, os.W_OK):
-        raise UserError(f"{out}: cannot create it: {out.resolve().parent} is not a writable folder")
+    model, path, out = _run_inputs(args)
     if not (0 < args.step and 2 * args.step <= args.horizon <= path.duration):
         raise UserError(f"need 0 < --step, 2 steps <= --horizon <= the path's {path.duration:g} s")
-    if not model.config.modulus_cost and path.S_d is None:
-        raise UserError(f"configuration {model.config.name!r} needs a full path; {args.profile} gives only "
-                        f"the modulus (use --config dfs)")
     q0 = qd0 = None
     classical = None
     if model.config.modulus_cost:
