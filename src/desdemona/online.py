@@ -134,6 +134,7 @@ class MPC:
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         self.limits = model.limits
         self.z = self.z_d = None  # filter states of the felt and the desired path (with perception)
+        self._z_d_next = None  # the desired filter state one step on, from this step's preview
         if options.method == "rti":
             self._qp_data, self._qp = self._real_time_iteration(options.qp_solver)
         self.plan: tuple[np.ndarray, np.ndarray] | None = None  # node states, controls
@@ -155,6 +156,7 @@ class MPC:
             self.z = self.problem.filter.steady_state(self.model.S(q, qd, np.zeros_like(q)))
         t, values = self._preview_arrays(preview)
         reason = self._preview_problem(t, values)
+        self._z_d_next = None
         plan = None
         if not reason:
             plan, success, elapsed = self._solve(q, qd, self._data(t, values))
@@ -170,20 +172,18 @@ class MPC:
             command = self._fallback(q, qd, reason, start)
         self.history.append(command)
         if self.problem.nz:
-            self._advance_filters(q, qd, command.qdd, reason)
+            self._advance_filters(q, qd, command.qdd)
         return command
 
-    def _advance_filters(self, q, qd, qdd, reason: str) -> None:
+    def _advance_filters(self, q, qd, qdd) -> None:
         """Carry the felt filter state over the step just commanded, and the desired one with it."""
         prob = self.problem
         s = prob.tau_sub[:-1, None]
         S = self.model.S(q + qd * s + 0.5 * qdd * s * s, qd + qdd * s, np.tile(qdd, (len(s), 1)))
         for row in S:
             self.z = prob.filter.Ad @ self.z + prob.filter.Bd @ row
-        if not reason and getattr(self, "_z_d_next", None) is not None:
-            self.z_d = self._z_d_next
-        elif self.z_d is not None:
-            self.z_d = None  # unknown without a usable preview: restart from the next preview's steady state
+        # without a usable preview the desired state is unknown: restart from the next preview's steady state
+        self.z_d = self._z_d_next
 
     def _preview_arrays(self, preview):
         if isinstance(preview, DesiredPath):
