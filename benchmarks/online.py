@@ -19,9 +19,9 @@ import numpy as np
 from desdemona import Model, default_params, profiles
 from desdemona.baselines import classical_dfs
 from desdemona.offline import OptimizeOptions, optimize
-from desdemona.online import MPC, MPCOptions, run_closed_loop
+from desdemona.online import MPC, PREDICTORS, MPCOptions
 from desdemona.problem import ProblemOptions
-from desdemona.simulate import check
+from desdemona.simulate import check, closed_loop
 
 
 def row(path, config, horizon, step, method, params):
@@ -33,7 +33,7 @@ def row(path, config, horizon, step, method, params):
         q0, qd0 = [0.0], [q1d[0]]
     controller = MPC(model, MPCOptions(horizon=horizon, step=step, deadline=float("inf"), method=method),
                      weights=path.weights)
-    run = run_closed_loop(controller, path, "perfect", q0=q0, qd0=qd0)
+    run = closed_loop(controller, path, PREDICTORS["perfect"], q0=q0, qd0=qd0)
     mpc, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=step)
     if config == "dfs":
         t, q1, q1d, q1dd = classical_dfs(path, model, times=run.t_nodes)

@@ -8,9 +8,9 @@ import pytest
 from desdemona import Model, profiles
 from desdemona.baselines import classical_dfs
 from desdemona.offline import OptimizeOptions, optimize
-from desdemona.online import MPC, MPCOptions, predict_hold, predict_linear, predict_perfect, run_closed_loop
+from desdemona.online import MPC, PREDICTORS, MPCOptions, predict_hold, predict_linear, predict_perfect
 from desdemona.problem import ProblemOptions
-from desdemona.simulate import check
+from desdemona.simulate import check, closed_loop
 
 # No deadline in tests: timings are measured in the benchmark, never asserted here.
 OPTIONS = MPCOptions(horizon=1.0, step=0.05, deadline=float("inf"))
@@ -20,7 +20,7 @@ def dfs_runs(params, path, method="rti"):
     model = Model(params, "dfs")
     _, _, q1d, _ = classical_dfs(path, model)
     options = dataclasses.replace(OPTIONS, method=method)
-    run = run_closed_loop(MPC(model, options), path, "perfect", q0=[0.0], qd0=[q1d[0]])
+    run = closed_loop(MPC(model, options), path, predict_perfect, q0=[0.0], qd0=[q1d[0]])
     mpc, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=OPTIONS.step)
     t, q1, q1d, q1dd = classical_dfs(path, model, times=run.t_nodes)
     classical, _ = check(model, path, t, q1[:1], q1d[:1], q1dd[:-1, None], step=OPTIONS.step)
@@ -42,7 +42,7 @@ def test_dfs_mpc_beats_the_classical_loop_and_nears_the_offline_optimum(params, 
 def test_yaw_track_cabin_closed_loop_keeps_every_limit(params):
     path = profiles.catapult(level=15.0, push=1.0, quiet=0.5, duration=4.0)
     model = Model(params, "yaw-track-cabin")
-    run = run_closed_loop(MPC(model, OPTIONS, weights=path.weights), path, "perfect")
+    run = closed_loop(MPC(model, OPTIONS, weights=path.weights), path, predict_perfect)
     result, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=OPTIONS.step)
     assert result.passed
     assert result.rms_channels[4] < np.sqrt(np.mean(path.S_d[:, 4] ** 2))  # better than not moving
@@ -79,18 +79,16 @@ def faulty_predictor(bad_steps, kind):
 
 
 @pytest.mark.parametrize("fault", ["fail", "late", "nan", "short", "long outage"])
-def test_fallback_engages_and_the_run_stays_within_limits(params, fault, monkeypatch):
+def test_fallback_engages_and_the_run_stays_within_limits(params, fault):
     model = Model(params, "dfs")
     path = profiles.dfs_catapult()
     steps = range(60, 70) if fault != "long outage" else range(60, 140)  # 80 steps: four horizons
     kwargs = {"fail": steps} if fault in ("fail", "long outage") else {"late": steps} if fault == "late" else {}
     # a deadline no real solve comes near, so that only the injected steps are late
     controller = Faulty(model, dataclasses.replace(OPTIONS, deadline=30.0), **kwargs)
-    if fault in ("nan", "short"):
-        from desdemona import online
-        monkeypatch.setitem(online.PREDICTORS, "perfect", faulty_predictor(set(steps), fault))
+    predictor = faulty_predictor(set(steps), fault) if fault in ("nan", "short") else PREDICTORS["perfect"]
     _, _, q1d, _ = classical_dfs(path, model)
-    run = run_closed_loop(controller, path, "perfect", q0=[0.0], qd0=[q1d[0]])
+    run = closed_loop(controller, path, predictor, q0=[0.0], qd0=[q1d[0]])
     assert len(run.u) == int(path.duration / OPTIONS.step)
     assert all(run.sources[k] != "mpc" for k in steps)
     assert run.sources[59] == "mpc" and run.sources[-1] == "mpc"
@@ -153,7 +151,7 @@ def test_perceived_mpc_lowers_the_perceived_error(params):
     perceived = {}
     for perception in (None, "thesis"):
         options = dataclasses.replace(OPTIONS, perception=perception)
-        run = run_closed_loop(MPC(model, options, weights=path.weights), path, "perfect")
+        run = closed_loop(MPC(model, options, weights=path.weights), path, predict_perfect)
         result, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=OPTIONS.step,
                           perception="thesis")
         assert result.passed and set(run.sources) == {"mpc"}

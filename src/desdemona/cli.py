@@ -244,8 +244,8 @@ def _run_batch(args) -> int:
 def _run_online(args) -> int:
     from desdemona import report
     from desdemona.baselines import classical_dfs
-    from desdemona.online import MPC, MPCOptions, run_closed_loop
-    from desdemona.simulate import LimitViolation, check, evaluate, integrate
+    from desdemona.online import MPC, PREDICTORS, MPCOptions
+    from desdemona.simulate import LimitViolation, check, closed_loop, evaluate, integrate
 
     model, path, out = _run_inputs(args)
     if not (0 < args.step and 2 * args.step <= args.horizon <= path.duration):
@@ -257,7 +257,7 @@ def _run_online(args) -> int:
         q0, qd0 = [0.0], [q1d[0]]
     controller = MPC(model, MPCOptions(horizon=args.horizon, step=args.step, method=args.method),
                      weights=path.weights)
-    run = run_closed_loop(controller, path, args.predictor, q0=q0, qd0=qd0)
+    run = closed_loop(controller, path, PREDICTORS[args.predictor], q0=q0, qd0=qd0)
     result, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=args.step)
     if not result.passed:
         raise LimitViolation(result, "the closed-loop trajectory")

@@ -20,9 +20,8 @@ last two samples).
 
 from __future__ import annotations
 
-import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Literal
 
 import casadi as ca
@@ -333,38 +332,3 @@ class MPC:
             if self._safe(q, qd, qdd):
                 return qdd
         return np.zeros_like(qd)  # holding: the last resort (the independent check reports any excess)
-
-
-@dataclass(frozen=True, eq=False)
-class ClosedLoop:
-    """A closed-loop run: the commands, their sources and compute times, on the control grid."""
-
-    t_nodes: np.ndarray
-    q0: np.ndarray
-    qd0: np.ndarray
-    u: np.ndarray
-    sources: tuple[str, ...]
-    compute_times: np.ndarray
-    reasons: tuple[str, ...] = field(default=())
-
-
-def run_closed_loop(controller: MPC, path: DesiredPath, predictor: str = "perfect", q0=None, qd0=None,
-                    duration: float | None = None) -> ClosedLoop:
-    """Simulate the controller on the plant: the commanded accelerations held for one step each and
-    integrated exactly (the same model), the preview from ``predictor`` at every step."""
-    predict = PREDICTORS[predictor]
-    h, n = controller.options.step, controller.model.n
-    steps = int(math.floor((duration or path.duration) / h + 1e-9))
-    q = np.zeros(n) if q0 is None else np.asarray(q0, float).copy()
-    qd = np.zeros(n) if qd0 is None else np.asarray(qd0, float).copy()
-    start_q, start_qd = q.copy(), qd.copy()
-    u, sources, times, reasons = [], [], [], []
-    for k in range(steps):
-        command = controller.step((q, qd), predict(path, k * h, controller.options.horizon))
-        u.append(command.qdd)
-        sources.append(command.source)
-        times.append(command.compute_time)
-        reasons.append(command.reason)
-        q, qd = q + qd * h + 0.5 * command.qdd * h * h, qd + command.qdd * h
-    return ClosedLoop(np.arange(steps + 1) * h, start_q, start_qd, np.array(u), tuple(sources), np.array(times),
-                      tuple(reasons))

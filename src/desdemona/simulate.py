@@ -9,6 +9,7 @@ compared with S_d there. A trajectory that uses more than 1 + 1e-6 of any limit 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -176,3 +177,43 @@ def check(model: Model, path: DesiredPath, t_nodes, q0, qd0, u, step: float, fin
                         rms_channels=rms_channels, rms_perceived=rms_perceived, rms_modulus=rms_modulus,
                         step=step / fine, joint_names=model.config.joint_names)
     return result, traj
+
+
+@dataclass(frozen=True, eq=False)
+class ClosedLoop:
+    """A closed-loop run: the commands, their sources and compute times, on the control grid."""
+
+    t_nodes: np.ndarray
+    q0: np.ndarray
+    qd0: np.ndarray
+    u: np.ndarray
+    sources: tuple[str, ...]
+    compute_times: np.ndarray
+    reasons: tuple[str, ...] = field(default=())
+
+
+def closed_loop(controller, path: DesiredPath, predictor, q0=None, qd0=None,
+                duration: float | None = None) -> ClosedLoop:
+    """Run a controller against the plant: each step's commanded accelerations are held for one
+    control period T_c and integrated exactly (the same model, as the machine's servos follow it).
+
+    controller : has ``step((q, qd), preview) -> command`` with ``command.qdd``, ``.source``,
+        ``.compute_time``, ``.reason``, and ``options.step`` / ``options.horizon`` (e.g.
+        :class:`desdemona.online.MPC`); predictor : ``predictor(path, now, horizon) -> preview``,
+        e.g. from :data:`desdemona.online.PREDICTORS`. Every step's compute time is recorded.
+    """
+    h, n = controller.options.step, controller.model.n
+    steps = int(math.floor((duration or path.duration) / h + 1e-9))
+    q = np.zeros(n) if q0 is None else np.asarray(q0, float).copy()
+    qd = np.zeros(n) if qd0 is None else np.asarray(qd0, float).copy()
+    start_q, start_qd = q.copy(), qd.copy()
+    u, sources, times, reasons = [], [], [], []
+    for k in range(steps):
+        command = controller.step((q, qd), predictor(path, k * h, controller.options.horizon))
+        u.append(command.qdd)
+        sources.append(command.source)
+        times.append(command.compute_time)
+        reasons.append(command.reason)
+        q, qd = q + qd * h + 0.5 * command.qdd * h * h, qd + command.qdd * h
+    return ClosedLoop(np.arange(steps + 1) * h, start_q, start_qd, np.array(u), tuple(sources), np.array(times),
+                      tuple(reasons))
