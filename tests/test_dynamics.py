@@ -149,7 +149,7 @@ def test_configuration_rows_equal_full_model_with_held_joints_at_rest(params):
 
 
 def test_yaw_track_interaction_at_the_rim(params):
-    """DESIGN: holding what rides on the track at the rim at full yaw rate takes most of the track force."""
+    """Holding what rides on the track at the rim at full yaw rate takes most of the track force."""
     model = Model(params, "yaw-track")
     lim = model.limits
     tau = model.tau([0.0, lim["position_max"][1]], [lim["velocity"][0], 0.0], [0.0, 0.0])

@@ -14,7 +14,7 @@ def write(tmp_path, text):
     return path
 
 
-def test_defaults_match_design_table():
+def test_defaults_match_the_documented_table():
     p = default_params()
     deg = math.pi / 180
     np.testing.assert_allclose(p.velocity_max, [155.4 * deg, 3.2, 2.2, 180 * deg, 180 * deg, 180 * deg])

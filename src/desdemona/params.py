@@ -207,7 +207,7 @@ def load_params(path: str | Path | None = None, base: str | None = None) -> Mach
 
 
 def default_params() -> MachineParams:
-    """The built-in defaults of DESIGN.md (assumptions standing in for thesis tables A.1-A.4)."""
+    """The built-in defaults (assumptions standing in for thesis tables A.1-A.4, see data/default.toml)."""
     return _builtin("default")
 
 
