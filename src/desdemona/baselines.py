@@ -186,14 +186,16 @@ class ThesisProblem:
 
     def solve(self, z0) -> ThesisRun:
         o = self.options
-        history = []
+        history, why = [], []
 
         def stop(intermediate_result):
             # 5.4: stop when the cost (with barriers) changes by less than min_cost_change
             history.append(2.0 * intermediate_result.cost)
             if len(history) >= o.max_iter:
+                why.append(f"iteration cap ({o.max_iter})")
                 raise StopIteration
             if len(history) > 1 and abs(history[-2] - history[-1]) < o.min_cost_change:
+                why.append(f"cost change below {o.min_cost_change:g} (5.4)")
                 raise StopIteration
 
         start = time.perf_counter()
@@ -203,8 +205,9 @@ class ThesisProblem:
         q0, qd0, u = self.unpack(result.x)
         if not o.optimize_initial:
             q0, qd0 = np.zeros(self.model.n), np.zeros(self.model.n)
+        message = f"stopped: {why[0]}" if why else str(result.message)
         return ThesisRun(self.t_nodes.copy(), q0, qd0, u, float(2.0 * result.cost), len(history),
-                         int(result.nfev), elapsed, str(result.message))
+                         int(result.nfev), elapsed, message)
 
 
 def optimize_thesis(path: DesiredPath, config: str | Configuration = "yaw-track",
