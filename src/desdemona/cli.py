@@ -271,10 +271,7 @@ def _run_online(args) -> int:
     times = run.compute_times
     summary = {
         "command": report.command_line(),
-        "path": {"name": path.name, "description": path.description, "duration_s": path.duration,
-                 "weights": list(path.weights)},
-        "configuration": {"name": model.config.name, "free_joints": list(model.config.joint_names),
-                          "held_positions": list(model.config.fixed)},
+        **report.run_description(path, model.config),
         "method": f"mpc ({args.method}), predictor {args.predictor}, horizon {args.horizon:g} s, step {args.step:g} s",
         "metrics": {"rms_weighted": result.rms, "rms_modulus": result.rms_modulus,
                     "rms_modulus_classical_loop": summary_classical, "limits_kept": result.passed,

@@ -132,13 +132,6 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
     return guesses[:count]
 
 
-def zero_guess(problem: CueingProblem) -> tuple[np.ndarray, np.ndarray]:
-    """Zero motion: a stationary point of the problem, kept to show why the others exist."""
-    u = np.zeros((problem.N, problem.model.n))
-    q0 = np.zeros(problem.model.n)
-    return problem.states_from(q0, q0, u), u
-
-
 # ----------------------------------------------------------------------------------------------
 # solving
 

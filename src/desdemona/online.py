@@ -139,7 +139,6 @@ class MPC:
             self._qp_data, self._qp = self._real_time_iteration(options.qp_solver)
         self.plan: tuple[np.ndarray, np.ndarray] | None = None  # node states, controls
         self.plan_age = 0
-        self.history: list[Command] = []
 
     # ------------------------------------------------------------------------------------------
 
@@ -170,7 +169,6 @@ class MPC:
         else:
             reason = reason or "plan fails the limit check"
             command = self._fallback(q, qd, reason, start)
-        self.history.append(command)
         if self.problem.nz:
             self._advance_filters(q, qd, command.qdd)
         return command

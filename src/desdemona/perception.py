@@ -138,9 +138,13 @@ class DiscreteSystem:
     D: np.ndarray
     dt: float
 
+    def steady_gain(self) -> np.ndarray:
+        """(nx, 6) matrix G with x = G u the state a constant input u holds still (x = Ad x + Bd u)."""
+        return np.linalg.solve(np.eye(len(self.Ad)) - self.Ad, self.Bd)
+
     def steady_state(self, u) -> np.ndarray:
-        """The state that a constant input ``u`` holds still: x = Ad x + Bd u."""
-        return np.linalg.solve(np.eye(len(self.Ad)) - self.Ad, self.Bd @ np.asarray(u, dtype=float))
+        """The state that a constant input ``u`` holds still."""
+        return self.steady_gain() @ np.asarray(u, dtype=float)
 
     def simulate(self, u, x0=None) -> tuple[np.ndarray, np.ndarray]:
         """Outputs (N, 6) and states (N + 1, nx) for inputs u (N, 6), from x0 (default: steady for u[0])."""

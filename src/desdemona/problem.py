@@ -122,7 +122,7 @@ class Solution:
 
     t_nodes : (N + 1,) control grid [s]; x : (N + 1, nx) states at the nodes (q, qd, filter states);
     u : (N, n) joint accelerations per interval; cost : objective value; status, success, iterations,
-    solve_time [s] of the solver itself; build_time [s] of the problem it came from.
+    solve_time [s] of the solver itself; lam_g, lam_x : multipliers, for warm starts.
     """
 
     t_nodes: np.ndarray
@@ -197,10 +197,6 @@ class CueingProblem:
         # perceived desired path, from the steady state of its first sample, held over each sub-step
         y_d = self.filter.simulate(S_d[:, :-1, :].reshape(-1, 6))[0]
         return y_d.reshape(self.N, -1).T
-
-    def initial_filter_state(self, S0) -> np.ndarray:
-        """Filter state at t = 0: the steady state of the cabin's first S (felt as steady)."""
-        return self.filter.steady_state(S0)
 
     # ------------------------------------------------------------------------------------------
     # the stage: one control interval
@@ -298,8 +294,7 @@ class CueingProblem:
         residual = ca.SX(0, 1)
         if self.nz and self.options.initial_filter == "steady":
             n = self.model.n
-            steady = np.linalg.solve(np.eye(self.nz) - self.filter.Ad, self.filter.Bd)
-            residual = x[2 * n:] - ca.DM(steady) @ self.model.functions["S"](x[:n], x[n:2 * n], u)
+            residual = x[2 * n:] - ca.DM(self.filter.steady_gain()) @ self.model.functions["S"](x[:n], x[n:2 * n], u)
         return ca.Function("initial", [x, u], [residual])
 
     def _derivative_functions(self, w, XU, data) -> dict[str, ca.Function]:
@@ -434,7 +429,7 @@ class CueingProblem:
         x = np.hstack([q, qd])
         if self.nz:
             S0 = self.model.S(q0, qd0, u[0])
-            x = np.hstack([x, np.tile(self.initial_filter_state(S0), (self.N + 1, 1))])
+            x = np.hstack([x, np.tile(self.filter.steady_state(S0), (self.N + 1, 1))])
         return x
 
     def solve(self, x_guess: np.ndarray, u_guess: np.ndarray, warm: Solution | None = None) -> Solution:

@@ -62,14 +62,19 @@ def trajectory_table(traj: Trajectory, joint_names) -> tuple[list[str], np.ndarr
     return names, np.hstack(columns)
 
 
+def run_description(path, config) -> dict:
+    """The "path" and "configuration" entries of a summary.json."""
+    return {"path": {"name": path.name, "description": path.description, "duration_s": path.duration,
+                     "weights": list(path.weights)},
+            "configuration": {"name": config.name, "free_joints": list(config.joint_names),
+                              "held_positions": list(config.fixed)}}
+
+
 def write(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False) -> Path:
     """Write the result folder of an off-line :class:`~desdemona.offline.Result` atomically."""
     summary = {
         "command": command,
-        "path": {"name": result.path.name, "description": result.path.description,
-                 "duration_s": result.path.duration, "weights": list(result.path.weights)},
-        "configuration": {"name": result.config.name, "free_joints": list(result.config.joint_names),
-                          "held_positions": list(result.config.fixed)},
+        **run_description(result.path, result.config),
         "method": result.method,
         "metrics": {
             "rms_weighted": result.check.rms,
