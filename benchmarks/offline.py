@@ -5,8 +5,8 @@
 
 Every row is measured in this run, on this machine. Wall times are those of one start including the
 problem's construction (of the whole multi-start in rows with several starts), "build" the construction
-alone and "solve per start" the solver's own time per start, after one untimed run of each method
-(libraries loaded, model functions built); RMS is the fine-grid weighted RMS(S - S_d) of the independent check
+alone and "solve per start" the solver's own time per start, after one untimed run of each method on
+the cosine (libraries loaded); RMS is the fine-grid weighted RMS(S - S_d) of the independent check
 (grid 10x finer than the solver's), "worst" the highest use of any limit on that grid.
 """
 
