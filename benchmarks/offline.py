@@ -40,6 +40,7 @@ class Row:
     note: str = ""
     build: float = 0.0  # construction of the problem [s]
     per_start: float = 0.0  # the solver's time per start [s]
+    starts: int = 1
 
 
 def ours(path, config, params, solver, h_u, weights=None, starts=1) -> Row:
@@ -51,7 +52,7 @@ def ours(path, config, params, solver, h_u, weights=None, starts=1) -> Row:
     method = f"ours ({solver})" if starts == 1 else f"ours ({solver}, {starts} starts)"
     return Row(path.name, config, method, result.check.rms, result.check.worst_use, s.iterations,
                seconds, s.status, f"N = {len(result.solution.u)}", result.timings["build"],
-               result.timings["solve"] / len(result.starts))
+               result.timings["solve"] / len(result.starts), starts)
 
 
 def thesis(path, config, params, h_u, label, **kw) -> Row:
@@ -76,7 +77,7 @@ def table(rows: list[Row]) -> str:
         speed = rms = ""
         if baseline is not None and r.method.startswith("ours"):
             speed = f"{baseline.seconds / r.seconds:.1f}x"
-            if "starts)" in r.method:  # per start, the construction shared by all of them
+            if r.starts > 1:  # per start, the construction shared by all of them
                 speed = f"{baseline.per_start / r.per_start:.1f}x per start"
             rms = f"{r.rms / baseline.rms:.3f}"
         lines.append(f"| {r.path} | {r.config} | {r.method} | {r.rms:.4f} | {r.worst:.6f} | {r.iterations} "
