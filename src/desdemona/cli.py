@@ -72,12 +72,9 @@ def _parser() -> argparse.ArgumentParser:
                           "least-squares method, for comparison (default: ipopt)")
     opt.add_argument("--perception", choices=tuple(perception_models.MODELS), default=None,
                      help="minimise the perceived difference through this vestibular model")
-    opt.add_argument("--starts", type=int, default=4, metavar="N", help="initial guesses (default: 4)")
+    _add_start_options(opt, starts=4)
     opt.add_argument("--workers", type=int, default=1, metavar="N",
                      help="parallel processes for the starts (default: 1)")
-    opt.add_argument("--seed", type=int, default=0, help="seed of the random starts (default: 0)")
-    opt.add_argument("--h-u", type=float, default=0.05, metavar="SECONDS", dest="h_u",
-                     help="control step: joint accelerations are held this long (default: 0.05)")
     opt.add_argument("--overwrite", action="store_true", help="replace DIR if it exists")
     opt.set_defaults(run=_run_optimize)
 
@@ -92,9 +89,7 @@ def _parser() -> argparse.ArgumentParser:
     batch.add_argument("--out", required=True, metavar="DIR", help="folder for all the jobs' results")
     batch.add_argument("--params", metavar="FILE", help="TOML file overriding machine parameters")
     batch.add_argument("--base", choices=BUILTIN_SETS, default=None, help="built-in parameter set")
-    batch.add_argument("--starts", type=int, default=2, metavar="N", help="starts per job (default: 2)")
-    batch.add_argument("--seed", type=int, default=0)
-    batch.add_argument("--h-u", type=float, default=0.05, metavar="SECONDS", dest="h_u")
+    _add_start_options(batch, starts=2)
     batch.add_argument("--processes", type=int, default=2, metavar="N",
                        help="local processes when no --dask is given (default: 2)")
     batch.add_argument("--dask", metavar="ADDRESS", default=None,
@@ -140,6 +135,14 @@ def _add_machine_options(parser: argparse.ArgumentParser, default_config: str = 
                         help="TOML file overriding any subset of the machine parameters")
     parser.add_argument("--base", choices=BUILTIN_SETS, default=None,
                         help="built-in parameter set to start from (default: default)")
+
+
+def _add_start_options(parser: argparse.ArgumentParser, starts: int) -> None:
+    parser.add_argument("--starts", type=int, default=starts, metavar="N",
+                        help=f"initial guesses (default: {starts})")
+    parser.add_argument("--seed", type=int, default=0, help="seed of the random starts (default: 0)")
+    parser.add_argument("--h-u", type=float, default=0.05, metavar="SECONDS", dest="h_u",
+                        help="control step: joint accelerations are held this long (default: 0.05)")
 
 
 def _machine(args) -> Model:
