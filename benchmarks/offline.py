@@ -20,7 +20,7 @@ import time
 
 import numpy as np
 
-from desdemona import default_params, profiles, thesis_toy_params
+from desdemona import Model, default_params, profiles, thesis_toy_params
 from desdemona.baselines import ThesisOptions, optimize_thesis
 from desdemona.offline import OptimizeOptions, optimize
 from desdemona.problem import ProblemOptions
@@ -46,7 +46,7 @@ class Row:
 def ours(path, config, params, solver, h_u, weights=None, starts=1) -> Row:
     options = OptimizeOptions(ProblemOptions(h_u=h_u, solver=solver, weights=weights), starts=starts)
     start = time.perf_counter()
-    result = optimize(path, config, params, options)
+    result = optimize(path, Model(params, config), options)
     seconds = time.perf_counter() - start
     s = min(result.starts, key=lambda r: r.rms)
     method = f"ours ({solver})" if starts == 1 else f"ours ({solver}, {starts} starts)"
@@ -58,10 +58,10 @@ def ours(path, config, params, solver, h_u, weights=None, starts=1) -> Row:
 def thesis(path, config, params, h_u, label, **kw) -> Row:
     options = ThesisOptions(h_u=h_u, starts=1, seed=0, **kw)
     start = time.perf_counter()
-    problem, runs = optimize_thesis(path, config, params, options)
+    problem, runs = optimize_thesis(path, Model(params, config), options)
     seconds = time.perf_counter() - start
     run = runs[0]
-    result, _ = check(problem.model, path, run.t_nodes, run.q0, run.qd0, run.u, step=0.01, weights=path.weights)
+    result, _ = check(problem.model, path, run.plan, step=0.01, weights=path.weights)
     return Row(path.name, config, label, result.rms, result.worst_use, run.iterations, seconds,
                "limits kept" if result.passed else "LIMITS EXCEEDED", f"{run.evaluations} evaluations",
                per_start=run.solve_time)

@@ -17,34 +17,22 @@ from collections import Counter
 import numpy as np
 
 from desdemona import Model, default_params, profiles
-from desdemona.baselines import classical_dfs
 from desdemona.offline import OptimizeOptions, optimize
-from desdemona.online import MPC, PREDICTORS, MPCOptions
+from desdemona.online import MPCOptions, OnlineOptions, run
 from desdemona.problem import ProblemOptions
-from desdemona.simulate import check, closed_loop
 
 
 def row(path, config, horizon, step, method, params):
     model = Model(params, config)
-    q0 = qd0 = None
-    classical = ""
-    if config == "dfs":
-        t, q1, q1d, q1dd = classical_dfs(path, model)
-        q0, qd0 = [0.0], [q1d[0]]
-    controller = MPC(model, MPCOptions(horizon=horizon, step=step, deadline=float("inf"), method=method),
-                     weights=path.weights)
-    run = closed_loop(controller, path, PREDICTORS["perfect"], q0=q0, qd0=qd0)
-    mpc, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=step)
-    if config == "dfs":
-        t, q1, q1d, q1dd = classical_dfs(path, model, times=run.t_nodes)
-        c, _ = check(model, path, t, q1[:1], q1d[:1], q1dd[:-1, None], step=step)
-        classical = f"{c.rms:.4f}"
-    offline = optimize(path, config, params, OptimizeOptions(ProblemOptions(h_u=step), starts=2)).check
-    times = np.percentile(run.compute_times, [50, 99, 100]) * 1e3
-    fallbacks = sum(v for k, v in Counter(run.sources).items() if k != "mpc")
+    mpc = MPCOptions(horizon=horizon, step=step, deadline=float("inf"), method=method)
+    result = run(path, model, OnlineOptions(mpc))
+    classical = "" if result.baseline_check is None else f"{result.baseline_check.rms:.4f}"
+    offline = optimize(path, model, OptimizeOptions(ProblemOptions(h_u=step), starts=2)).check
+    times = np.percentile(result.loop.compute_times, [50, 99, 100]) * 1e3
+    fallbacks = sum(v for k, v in Counter(result.loop.sources).items() if k != "mpc")
     return (f"| {path.name} | {config} | {horizon:g} | {step:g} | {method} | {times[0]:.2f} | {times[1]:.2f} "
-            f"| {times[2]:.2f} | {mpc.rms:.4f} | {classical} | {offline.rms:.4f} | {mpc.rms / offline.rms:.3f} "
-            f"| {fallbacks} | {'yes' if mpc.passed else 'NO'} |")
+            f"| {times[2]:.2f} | {result.check.rms:.4f} | {classical} | {offline.rms:.4f} "
+            f"| {result.check.rms / offline.rms:.3f} | {fallbacks} | {'yes' if result.check.passed else 'NO'} |")
 
 
 def main() -> int:

@@ -152,7 +152,7 @@ def test_yaw_track_interaction_at_the_rim(params):
     """Holding what rides on the track at the rim at full yaw rate takes most of the track force."""
     model = Model(params, "yaw-track")
     lim = model.limits
-    tau = model.tau([0.0, lim["position_max"][1]], [lim["velocity"][0], 0.0], [0.0, 0.0])
+    tau = model.tau([0.0, lim.position_max[1]], [lim.velocity[0], 0.0], [0.0, 0.0])
     riding = sum(b.mass for b in params.bodies[1:])
-    np.testing.assert_allclose(-tau[1], riding * 4.0 * lim["velocity"][0] ** 2, rtol=1e-12)
-    assert 0.5 < abs(tau[1]) / lim["effort"][1] < 1.0
+    np.testing.assert_allclose(-tau[1], riding * 4.0 * lim.velocity[0] ** 2, rtol=1e-12)
+    assert 0.5 < abs(tau[1]) / lim.effort[1] < 1.0

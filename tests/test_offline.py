@@ -9,8 +9,10 @@ from desdemona import Model, profiles, thesis_toy_params
 from desdemona.baselines import ThesisOptions, classical_dfs, optimize_thesis
 from desdemona.offline import OptimizeOptions, optimize
 from desdemona.problem import ProblemOptions
+from desdemona.perception import thesis_model
 from desdemona.profiles import DesiredPath
-from desdemona.simulate import check, integrate
+from desdemona.plan import Plan
+from desdemona.simulate import check
 
 
 def followable_path(params, duration=3.0, dt=0.01):
@@ -29,7 +31,7 @@ def followable_path(params, duration=3.0, dt=0.01):
 def test_known_optimum_is_found(params, solver, substeps, expand):
     path, (q0, qd0) = followable_path(params)
     options = ProblemOptions(h_u=0.1, substeps=substeps, solver=solver, expand=expand, regularisation=0.0)
-    result = optimize(path, "yaw-track", params, OptimizeOptions(options, starts=1))
+    result = optimize(path, Model(params, "yaw-track"), OptimizeOptions(options, starts=1))
     assert result.solution.cost <= 1e-8
     # the yaw angle itself is not felt (the machine is symmetric about its axis); all else is
     np.testing.assert_allclose(result.solution.q0[1:], q0[1:], atol=1e-3)
@@ -39,7 +41,7 @@ def test_known_optimum_is_found(params, solver, substeps, expand):
 
 def test_path_beyond_the_limits_touches_them(params):
     path = profiles.cosine(amplitude=40.0, omega=1.0, duration=4.0)
-    result = optimize(path, "yaw-track", params, OptimizeOptions(ProblemOptions(h_u=0.1), starts=2))
+    result = optimize(path, Model(params, "yaw-track"), OptimizeOptions(ProblemOptions(h_u=0.1), starts=2))
     assert result.check.passed
     assert result.check.worst_use > 0.999
     assert result.check.rms > 1.0  # 40 m/s^2 cannot be followed
@@ -49,10 +51,9 @@ def test_thesis_section_4_7_ours_against_the_thesis_method():
     """Toy parameters, f_y = 5 cos(2t), 5 s, h_u = 0.1 s: ours keeps every limit and is no worse."""
     toy = thesis_toy_params()
     path = profiles.cosine()
-    ours = optimize(path, "yaw-track", toy, OptimizeOptions(ProblemOptions(h_u=0.1), starts=2))
-    problem, runs = optimize_thesis(path, "yaw-track", toy, ThesisOptions(h_u=0.1, starts=1, seed=0))
-    thesis_check, _ = check(problem.model, path, runs[0].t_nodes, runs[0].q0, runs[0].qd0, runs[0].u,
-                            step=0.01, weights=path.weights)
+    ours = optimize(path, Model(toy, "yaw-track"), OptimizeOptions(ProblemOptions(h_u=0.1), starts=2))
+    problem, runs = optimize_thesis(path, Model(toy, "yaw-track"), ThesisOptions(h_u=0.1, starts=1, seed=0))
+    thesis_check, _ = check(problem.model, path, runs[0].plan, step=0.01, weights=path.weights)
     assert ours.check.passed
     assert ours.check.rms <= thesis_check.rms
     assert runs[0].iterations >= 1
@@ -69,7 +70,7 @@ def test_every_configuration_solves_and_passes_the_check(params, config, kind):
     h_u = 0.05 if config in ("dfs", "yaw-track") else 0.1
     # Q on every channel: with six joints, channels left out of the cost are free and flat
     options = ProblemOptions(h_u=h_u, weights=(1.0,) * 6 if config == "full" else None)
-    result = optimize(path, config, params, OptimizeOptions(options, starts=1))
+    result = optimize(path, Model(params, config), OptimizeOptions(options, starts=1))
     assert result.check.passed, result.check.describe_violations()
     assert result.check.worst_use <= 1.0 + 1e-6
     assert np.isfinite(result.check.rms)
@@ -80,22 +81,20 @@ def test_every_configuration_solves_and_passes_the_check(params, config, kind):
 def test_perception_lowers_the_perceived_error(params):
     path = profiles.catapult(level=15.0, push=1.0, quiet=0.5, duration=3.0)
     base = ProblemOptions(h_u=0.1)
-    plain = optimize(path, "yaw-track", params, OptimizeOptions(base, starts=1))
-    felt = optimize(path, "yaw-track", params,
-                    OptimizeOptions(dataclasses.replace(base, perception="thesis"), starts=1))
+    plain = optimize(path, Model(params, "yaw-track"), OptimizeOptions(base, starts=1))
+    felt = optimize(path, Model(params, "yaw-track"),
+                    OptimizeOptions(dataclasses.replace(base, perception=thesis_model()), starts=1))
     assert felt.check.passed and felt.check.rms_perceived is not None
-    plain_perceived, _ = check(Model(params, "yaw-track"), path, plain.solution.t_nodes,
-                               plain.solution.q0, plain.solution.qd0, plain.solution.u, step=0.05,
-                               perception="thesis")
+    plain_perceived, _ = check(Model(params, "yaw-track"), path, plain.plan, step=0.05, perception=thesis_model())
     assert felt.check.rms_perceived <= plain_perceived.rms_perceived * 1.001
 
 
 def test_multistart_is_reproducible_and_parallel_equals_serial(params):
     path = profiles.catapult(level=15.0, push=1.0, quiet=0.5, duration=3.0)
     options = OptimizeOptions(ProblemOptions(h_u=0.1), starts=3, seed=7)
-    a = optimize(path, "yaw-track", params, options)
-    b = optimize(path, "yaw-track", params, options)
-    c = optimize(path, "yaw-track", params, dataclasses.replace(options, workers=2))
+    a = optimize(path, Model(params, "yaw-track"), options)
+    b = optimize(path, Model(params, "yaw-track"), options)
+    c = optimize(path, Model(params, "yaw-track"), dataclasses.replace(options, workers=2))
     np.testing.assert_array_equal(a.solution.u, b.solution.u)
     np.testing.assert_array_equal(a.solution.u, c.solution.u)
     assert [s.guess for s in a.starts] == [s.guess for s in c.starts]
@@ -103,16 +102,15 @@ def test_multistart_is_reproducible_and_parallel_equals_serial(params):
 
 def test_simplified_dynamics_first_then_refine(params):
     path = profiles.catapult(level=15.0, push=1.0, quiet=0.5, duration=3.0)
-    result = optimize(path, "yaw-track-cabin", params,
+    result = optimize(path, Model(params, "yaw-track-cabin"),
                       OptimizeOptions(ProblemOptions(h_u=0.1), starts=1, refine=True))
     assert result.check.passed
 
 
-def test_integrate_is_exact_for_piecewise_constant_acceleration():
-    t_nodes = np.array([0.0, 0.5, 1.0])
-    u = np.array([[2.0], [-1.0]])
+def test_plan_is_exact_for_piecewise_constant_acceleration():
+    plan = Plan([0.0, 0.5, 1.0], [1.0], [0.5], [[2.0], [-1.0]])
     times = np.array([0.0, 0.25, 0.5, 0.75, 1.0])
-    q, qd, qdd = integrate(t_nodes, np.array([1.0]), np.array([0.5]), u, times)
+    q, qd, qdd = plan.at(times)
     # by hand: q(0.5) = 1 + 0.25 + 0.25 = 1.5, qd(0.5) = 1.5; then q(1) = 1.5 + 0.75 - 0.125
     np.testing.assert_allclose(q[:, 0], [1.0, 1.1875, 1.5, 1.84375, 2.125])
     np.testing.assert_allclose(qd[:, 0], [0.5, 1.0, 1.5, 1.25, 1.0])
@@ -124,8 +122,8 @@ def test_check_reports_a_violation(params):
     path, _ = followable_path(params)
     t_nodes = np.linspace(0, 3, 31)
     u = np.zeros((30, 2))
-    u[10, 1] = 1.5 * model.limits["acceleration"][1]
-    result, _ = check(model, path, t_nodes, np.zeros(2), np.zeros(2), u, step=0.05)
+    u[10, 1] = 1.5 * model.limits.acceleration[1]
+    result, _ = check(model, path, Plan(t_nodes, np.zeros(2), np.zeros(2), u), step=0.05)
     assert not result.passed
     assert "acceleration of track at 1.5" in result.describe_violations()
 
@@ -135,7 +133,7 @@ def test_classical_dfs_loop_reaches_the_steady_rate_within_limits(params):
     t = np.arange(0.0, 30.0, 0.01)
     M = 15.0
     path = DesiredPath("steady", t, None, modulus=np.full(len(t), M))
-    t, q1, q1d, q1dd = classical_dfs(path, model)
-    np.testing.assert_allclose(q1d[-1], np.sqrt(np.sqrt(M**2 - params.gravity**2) / 4.0), rtol=1e-6)
-    result, _ = check(model, path, t, q1[:1], q1d[:1], q1dd[:-1, None], step=0.01)
+    plan = classical_dfs(path, model)
+    np.testing.assert_allclose(plan.nodes()[1][-1], np.sqrt(np.sqrt(M**2 - params.gravity**2) / 4.0), rtol=1e-6)
+    result, _ = check(model, path, plan, step=0.01)
     assert result.passed

@@ -8,7 +8,9 @@ import pytest
 from desdemona import Model, profiles
 from desdemona.baselines import classical_dfs
 from desdemona.offline import OptimizeOptions, optimize
-from desdemona.online import MPC, PREDICTORS, MPCOptions, predict_hold, predict_linear, predict_perfect
+from desdemona.online import (MPC, PREDICTORS, MPCOptions, OnlineOptions, predict_hold, predict_linear,
+                              predict_perfect, run)
+from desdemona.perception import thesis_model
 from desdemona.problem import ProblemOptions
 from desdemona.simulate import check, closed_loop
 
@@ -18,32 +20,26 @@ OPTIONS = MPCOptions(horizon=1.0, step=0.05, deadline=float("inf"))
 
 def dfs_runs(params, path, method="rti"):
     model = Model(params, "dfs")
-    _, _, q1d, _ = classical_dfs(path, model)
-    options = dataclasses.replace(OPTIONS, method=method)
-    run = closed_loop(MPC(model, options), path, predict_perfect, q0=[0.0], qd0=[q1d[0]])
-    mpc, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=OPTIONS.step)
-    t, q1, q1d, q1dd = classical_dfs(path, model, times=run.t_nodes)
-    classical, _ = check(model, path, t, q1[:1], q1d[:1], q1dd[:-1, None], step=OPTIONS.step)
-    offline = optimize(path, "dfs", params, OptimizeOptions(ProblemOptions(h_u=OPTIONS.step), starts=2))
-    return run, mpc, classical, offline.check
+    result = run(path, model, OnlineOptions(dataclasses.replace(OPTIONS, method=method)))
+    offline = optimize(path, model, OptimizeOptions(ProblemOptions(h_u=OPTIONS.step), starts=2))
+    return result.loop, result.check, result.baseline_check, offline.check
 
 
 @pytest.mark.parametrize("path, method", [(profiles.dfs_catapult(), "rti"), (profiles.dfs_catapult(), "nlp"),
                                           (profiles.roller_coaster(duration=15.0), "rti")],
                          ids=["catapult-rti", "catapult-nlp", "roller-coaster-rti"])
 def test_dfs_mpc_beats_the_classical_loop_and_nears_the_offline_optimum(params, path, method):
-    run, mpc, classical, offline = dfs_runs(params, path, method)
+    loop, mpc, classical, offline = dfs_runs(params, path, method)
     assert mpc.passed and classical.passed
     assert mpc.rms < classical.rms
     assert mpc.rms <= 1.2 * offline.rms
-    assert set(run.sources) == {"mpc"}
+    assert set(loop.sources) == {"mpc"}
 
 
 def test_yaw_track_cabin_closed_loop_keeps_every_limit(params):
     path = profiles.catapult(level=15.0, push=1.0, quiet=0.5, duration=4.0)
     model = Model(params, "yaw-track-cabin")
-    run = closed_loop(MPC(model, OPTIONS, weights=path.weights), path, predict_perfect)
-    result, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=OPTIONS.step)
+    result = run(path, model, OnlineOptions(OPTIONS)).check
     assert result.passed
     assert result.rms_channels[4] < np.sqrt(np.mean(path.S_d[:, 4] ** 2))  # better than not moving
 
@@ -87,16 +83,16 @@ def test_fallback_engages_and_the_run_stays_within_limits(params, fault):
     # a deadline no real solve comes near, so that only the injected steps are late
     controller = Faulty(model, dataclasses.replace(OPTIONS, deadline=30.0), **kwargs)
     predictor = faulty_predictor(set(steps), fault) if fault in ("nan", "short") else PREDICTORS["perfect"]
-    _, _, q1d, _ = classical_dfs(path, model)
-    run = closed_loop(controller, path, predictor, q0=[0.0], qd0=[q1d[0]])
-    assert len(run.u) == int(path.duration / OPTIONS.step)
-    assert all(run.sources[k] != "mpc" for k in steps)
-    assert run.sources[59] == "mpc" and run.sources[-1] == "mpc"
+    start = classical_dfs(path, model)
+    loop = closed_loop(controller, path, predictor, q0=start.q0, qd0=start.qd0)
+    assert len(loop.plan.u) == int(path.duration / OPTIONS.step)
+    assert all(loop.sources[k] != "mpc" for k in steps)
+    assert loop.sources[59] == "mpc" and loop.sources[-1] == "mpc"
     if fault == "long outage":
-        assert "brake" in run.sources and "shifted" in run.sources
+        assert "brake" in loop.sources and "shifted" in loop.sources
     else:
-        assert {run.sources[k] for k in steps} == {"shifted"}
-    result, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=OPTIONS.step)
+        assert {loop.sources[k] for k in steps} == {"shifted"}
+    result, _ = check(model, path, loop.plan, step=OPTIONS.step)
     assert result.passed, result.describe_violations()
 
 
@@ -105,7 +101,7 @@ def test_brake_command_keeps_every_limit(params):
     mpc = MPC(model, OPTIONS)
     lim = model.limits
     q = np.array([0.0, 0.5, 0.0])  # a stoppable state: 0.83 m to brake the track from 2.9 m/s
-    qd = np.array([0.95, 0.9, 1.0]) * lim["velocity"]
+    qd = np.array([0.95, 0.9, 1.0]) * lim.velocity
     qdd = mpc.brake(q, qd)
     assert np.all(np.sign(qdd) == -np.sign(qd)) and mpc._safe(q, qd, qdd)
 
@@ -149,11 +145,9 @@ def test_perceived_mpc_lowers_the_perceived_error(params):
     model = Model(params, "yaw-track-cabin")
     path = profiles.catapult(level=15.0, push=1.0, quiet=0.5, duration=4.0)
     perceived = {}
-    for perception in (None, "thesis"):
-        options = dataclasses.replace(OPTIONS, perception=perception)
-        run = closed_loop(MPC(model, options, weights=path.weights), path, predict_perfect)
-        result, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=OPTIONS.step,
-                          perception="thesis")
-        assert result.passed and set(run.sources) == {"mpc"}
-        perceived[perception] = result.rms_perceived
-    assert perceived["thesis"] < perceived[None]
+    for perception in (None, thesis_model()):
+        loop = run(path, model, OnlineOptions(dataclasses.replace(OPTIONS, perception=perception))).loop
+        result, _ = check(model, path, loop.plan, step=OPTIONS.step, perception=thesis_model())
+        assert result.passed and set(loop.sources) == {"mpc"}
+        perceived[perception is not None] = result.rms_perceived
+    assert perceived[True] < perceived[False]

@@ -145,11 +145,11 @@ def test_unknown_option_exits_2(tmp_path, capsys):
 
 
 def test_progress_is_told_after_each_start():
-    from desdemona import default_params, profiles
+    from desdemona import Model, default_params, profiles
     from desdemona.offline import OptimizeOptions, optimize
     from desdemona.problem import ProblemOptions
 
     seen = []
-    optimize(profiles.catapult(duration=3.0, push=1.0, quiet=0.5), "yaw-track", default_params(),
+    optimize(profiles.catapult(duration=3.0, push=1.0, quiet=0.5), Model(default_params(), "yaw-track"),
              OptimizeOptions(ProblemOptions(h_u=0.1), starts=3), progress=lambda done, total: seen.append((done, total)))
     assert seen == [(1, 3), (2, 3), (3, 3)]

@@ -3,7 +3,8 @@
 - :func:`classical_dfs`: the control loop that dynamic flight simulators use for the central yaw
   (thesis 7.4.2, figure 7.4): the yaw rate that would give the desired modulus in steady rotation,
   qd1_ref = sqrt(sqrt(M_d^2 - g^2) / R) (the inversion of eq. 7.7 without yaw acceleration), tracked by
-  a rate- and acceleration-limited first-order loop. Its result is the thesis' M_org.
+  a rate- and acceleration-limited first-order loop. Its result (a :class:`~desdemona.plan.Plan`) gives
+  the thesis' M_org.
 - :func:`optimize_thesis`: the numerical method of chapters 4-5, reproduced on purpose as it was:
   unknowns qdd per control interval (and optionally the initial state, 5.2), Runge-Kutta integration
   on the step h_itr, the cost as a sum over the samples of S_d (eq. 4.1, 4.3), limits as barrier terms
@@ -22,21 +23,20 @@ from typing import Literal
 import numpy as np
 import scipy.optimize
 
-from desdemona.configs import Configuration, get_configuration
 from desdemona.model import Model
-from desdemona.params import MachineParams, default_params
+from desdemona.plan import Plan, advance
 from desdemona.profiles import DesiredPath
 
 DFS_RADIUS = 4.0  # |q2| of the dfs configuration [m]
 
 
-def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.0):
+def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.0) -> Plan:
     """The classical yaw loop of figure 7.4 on the dfs configuration.
 
     path : desired modulus M_d (from its S_d or given); model : a dfs Model (its limits are respected:
     yaw rate, acceleration, torque and power); times : grid to run the loop on (default the path's);
     gain : bandwidth of the rate loop [1/s].
-    Returns (t, q1, q1d, q1dd), each (K,); q1dd[k] is held from t[k] to t[k + 1].
+    Returns the yaw's plan on ``times``: it starts at the reference rate of the first sample.
     """
     t = path.t if times is None else np.asarray(times, dtype=float)
     M_d = path.sample_modulus(t)
@@ -44,23 +44,21 @@ def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.
     radius = abs(model.config.fixed[1]) if model.config.modulus_cost else DFS_RADIUS
     lim = model.limits
     reference = np.sqrt(np.sqrt(np.maximum(M_d**2 - g**2, 0.0)) / radius)
-    reference = np.minimum(reference, lim["velocity"][0])
+    reference = np.minimum(reference, lim.velocity[0])
     inertia = float(model.mass_matrix(np.zeros(1))[0, 0])  # yaw inertia: constant in dfs
-    q1, q1d, q1dd = np.zeros(len(t)), np.zeros(len(t)), np.zeros(len(t))
-    q1d[0] = reference[0]
+    u = np.zeros(len(t) - 1)
+    rate = reference[0]
     for k in range(len(t) - 1):
         h = t[k + 1] - t[k]
         # the most acceleration that torque and power allow at this rate (tau = I qdd for dfs)
-        a_max = min(lim["acceleration"][0], lim["effort"][0] / inertia,
-                    lim["power"][0] / (inertia * max(abs(q1d[k]), 1e-9)))
+        a_max = min(lim.acceleration[0], lim.effort[0] / inertia,
+                    lim.power[0] / (inertia * max(abs(rate), 1e-9)))
         # rate command: do not overshoot the reference within one step, nor the rate limit
-        a = np.clip(gain * (reference[k + 1] - q1d[k]), -a_max, a_max)
-        a = np.clip(a, (-lim["velocity"][0] - q1d[k]) / h, (lim["velocity"][0] - q1d[k]) / h)
-        q1dd[k] = a
-        q1d[k + 1] = q1d[k] + a * h
-        q1[k + 1] = q1[k] + q1d[k] * h + 0.5 * a * h * h
-    q1dd[-1] = q1dd[-2] if len(t) > 1 else 0.0
-    return t, q1, q1d, q1dd
+        a = np.clip(gain * (reference[k + 1] - rate), -a_max, a_max)
+        a = np.clip(a, (-lim.velocity[0] - rate) / h, (lim.velocity[0] - rate) / h)
+        u[k] = a
+        rate = rate + a * h
+    return Plan(t, [0.0], [reference[0]], u[:, None])
 
 
 @dataclass(frozen=True)
@@ -93,10 +91,7 @@ class ThesisOptions:
 class ThesisRun:
     """One start of the thesis method."""
 
-    t_nodes: np.ndarray
-    q0: np.ndarray
-    qd0: np.ndarray
-    u: np.ndarray
+    plan: Plan
     cost: float
     iterations: int
     evaluations: int
@@ -135,7 +130,11 @@ class ThesisProblem:
         For the double integrator with qdd held, the classical RK4 step reduces algebraically to
         q+ = q + h qd + h^2 qdd / 2, qd+ = qd + h qdd (its stages are k1 = (qd, u), k2 = k3 =
         (qd + h u / 2, u), k4 = (qd + h u, u)); it is applied here to all steps at once with
-        cumulative sums, the same numbers as stepping, without Python-loop overhead.
+        cumulative sums, the same numbers as stepping, without Python-loop overhead. The step is
+        written out in the RK4 reduction's own order of operations rather than through
+        :func:`desdemona.plan.advance`: the method differentiates by finite differences, which turn a
+        change of round-off into a different run (measured: 22 instead of 24 iterations on 4.7), and
+        this baseline must reproduce its published figures to the bit.
         """
         h = self.options.h_u / self.steps
         steps = np.repeat(u, self.steps, axis=0)
@@ -143,9 +142,7 @@ class ThesisProblem:
         q_all = np.vstack([q0, q0 + np.cumsum(h * qd_all[:-1] + 0.5 * h * h * steps, axis=0)])
         q_nodes, qd_nodes = q_all[:: self.steps], qd_all[:: self.steps]
         k = np.clip(np.searchsorted(self.t_nodes, self.samples, side="right") - 1, 0, self.N - 1)
-        dt = (self.samples - self.t_nodes[k])[:, None]
-        qd = qd_nodes[k] + u[k] * dt
-        q = q_nodes[k] + qd_nodes[k] * dt + 0.5 * u[k] * dt * dt
+        q, qd = advance(q_nodes[k], qd_nodes[k], u[k], (self.samples - self.t_nodes[k])[:, None])
         return q, qd, u[k]
 
     def residuals(self, z) -> np.ndarray:
@@ -165,10 +162,10 @@ class ThesisProblem:
             parts.append((math.sqrt(a) * q[:, prismatic]).ravel())
             parts.append((np.where(prismatic, math.sqrt(c), math.sqrt(b)) * tau).ravel())
         else:
-            bounded = np.isfinite(lim["position_max"])
-            for value, limit in ((q[:, bounded], lim["position_max"][bounded]), (qd, lim["velocity"]),
-                                 (qdd, lim["acceleration"]), (tau, lim["effort"]),
-                                 (tau * qd, lim["power"])):
+            bounded = np.isfinite(lim.position_max)
+            for value, limit in ((q[:, bounded], lim.position_max[bounded]), (qd, lim.velocity),
+                                 (qdd, lim.acceleration), (tau, lim.effort),
+                                 (tau * qd, lim.power)):
                 x = value / limit
                 over = np.abs(x) > o.onset
                 parts.append((math.sqrt(o.barrier_weight) * np.where(over, x**2 - o.onset**2, 0.0)).ravel())
@@ -176,12 +173,12 @@ class ThesisProblem:
 
     def random_start(self, rng: np.random.Generator) -> np.ndarray:
         lim = self.model.limits
-        lo = np.where(np.isfinite(lim["position_min"]), 0.5 * lim["position_min"], -np.pi)
-        hi = np.where(np.isfinite(lim["position_max"]), 0.5 * lim["position_max"], np.pi)
+        lo = np.where(np.isfinite(lim.position_min), 0.5 * lim.position_min, -np.pi)
+        hi = np.where(np.isfinite(lim.position_max), 0.5 * lim.position_max, np.pi)
         n = self.model.n
         q0 = rng.uniform(lo, hi)
-        qd0 = rng.uniform(-0.5, 0.5, n) * lim["velocity"]
-        u = rng.uniform(-0.2, 0.2, (self.N, n)) * lim["acceleration"]
+        qd0 = rng.uniform(-0.5, 0.5, n) * lim.velocity
+        u = rng.uniform(-0.2, 0.2, (self.N, n)) * lim.acceleration
         return self.pack(q0, qd0, u)
 
     def solve(self, z0) -> ThesisRun:
@@ -206,19 +203,17 @@ class ThesisProblem:
         if not o.optimize_initial:
             q0, qd0 = np.zeros(self.model.n), np.zeros(self.model.n)
         message = f"stopped: {why[0]}" if why else str(result.message)
-        return ThesisRun(self.t_nodes.copy(), q0, qd0, u, float(2.0 * result.cost), len(history),
+        return ThesisRun(Plan(self.t_nodes.copy(), q0, qd0, u), float(2.0 * result.cost), len(history),
                          int(result.nfev), elapsed, message)
 
 
-def optimize_thesis(path: DesiredPath, config: str | Configuration = "yaw-track",
-                    params: MachineParams | None = None, options: ThesisOptions = ThesisOptions()):
+def optimize_thesis(path: DesiredPath, model: Model, options: ThesisOptions = ThesisOptions()):
     """Run the thesis method from ``options.starts`` seeded random starts; every run, best first by cost.
 
     The runs are not checked here: the caller checks them with :func:`desdemona.simulate.check`, as it
     does ours, because barrier terms do not guarantee the limits.
     """
-    params = default_params() if params is None else params
-    problem = ThesisProblem(Model(params, get_configuration(config)), path, options)
+    problem = ThesisProblem(model, path, options)
     rng = np.random.default_rng(options.seed)
     runs = [problem.solve(problem.random_start(rng)) for _ in range(options.starts)]
     return problem, sorted(runs, key=lambda r: r.cost)

@@ -17,6 +17,7 @@ from pathlib import Path
 
 from desdemona import profiles, report
 from desdemona.configs import get_configuration
+from desdemona.model import Model
 from desdemona.offline import OptimizeOptions, optimize
 from desdemona.params import MachineParams
 from desdemona.simulate import LimitViolation
@@ -57,7 +58,7 @@ def run_job(job: Job, params: MachineParams, options: OptimizeOptions, out_dir: 
     start = time.perf_counter()
     folder = Path(out_dir) / job.folder_name
     try:
-        result = optimize(load_path(job.profile), job.config, params, options)
+        result = optimize(load_path(job.profile), Model(params, job.config), options)
         report.write(result, folder, command=f"desdemona batch ({job.profile} on {job.config})", overwrite=True)
         return JobResult(job.profile, job.config, "ok", result.check.rms, result.check.worst_use,
                          time.perf_counter() - start, str(folder))

@@ -199,12 +199,12 @@ def _run_optimize(args) -> int:
         raise UserError("--perception applies to the full path S, not to the dfs modulus")
     progress = _progress_bar() if sys.stderr.isatty() else None
     if args.method == "thesis":
-        result = thesis_result(path, model.config, model.params,
-                               ThesisOptions(h_u=max(args.h_u, 0.1), starts=args.starts, seed=args.seed))
+        result = thesis_result(path, model, ThesisOptions(h_u=max(args.h_u, 0.1), starts=args.starts, seed=args.seed))
     else:
-        problem = ProblemOptions(h_u=args.h_u, solver=args.method, perception=args.perception)
+        perception = perception_models.get_model(args.perception) if args.perception else None
+        problem = ProblemOptions(h_u=args.h_u, solver=args.method, perception=perception)
         options = OptimizeOptions(problem, starts=args.starts, seed=args.seed, workers=args.workers)
-        result = optimize(path, model.config, model.params, options, progress=progress)
+        result = optimize(path, model, options, progress=progress)
     report.write(result, out, command=report.command_line(), overwrite=args.overwrite)
     c = result.check
     perceived = f" (perceived {c.rms_perceived:.4g})" if c.rms_perceived is not None else ""
@@ -245,55 +245,21 @@ def _run_batch(args) -> int:
 
 
 def _run_online(args) -> int:
-    from desdemona import report
-    from desdemona.baselines import classical_dfs
-    from desdemona.online import MPC, PREDICTORS, MPCOptions
-    from desdemona.simulate import LimitViolation, check, closed_loop, evaluate, integrate
+    from desdemona import online, report
 
     model, path, out = _run_inputs(args)
     if not (0 < args.step and 2 * args.step <= args.horizon <= path.duration):
         raise UserError(f"need 0 < --step, 2 steps <= --horizon <= the path's {path.duration:g} s")
-    q0 = qd0 = None
-    classical = None
-    if model.config.modulus_cost:
-        t, q1, q1d, q1dd = classical_dfs(path, model)
-        q0, qd0 = [0.0], [q1d[0]]
-    controller = MPC(model, MPCOptions(horizon=args.horizon, step=args.step, method=args.method),
-                     weights=path.weights)
-    run = closed_loop(controller, path, PREDICTORS[args.predictor], q0=q0, qd0=qd0)
-    result, _ = check(model, path, run.t_nodes, run.q0, run.qd0, run.u, step=args.step)
-    if not result.passed:
-        raise LimitViolation(result, "the closed-loop trajectory")
-    t = run.t_nodes
-    traj = evaluate(model, path, t, *integrate(run.t_nodes, run.q0, run.qd0, run.u, t))
-    summary_classical = None
-    if model.config.modulus_cost:
-        tc, q1, q1d, q1dd = classical_dfs(path, model, times=t)
-        classical = evaluate(model, path, tc, q1[:, None], q1d[:, None], q1dd[:, None])
-        summary_classical = float(np.sqrt(np.mean((classical.M - classical.M_d) ** 2)))
-    times = run.compute_times
-    summary = {
-        "command": report.command_line(),
-        **report.run_description(path, model.config),
-        "method": f"mpc ({args.method}), predictor {args.predictor}, horizon {args.horizon:g} s, step {args.step:g} s",
-        "metrics": {"rms_weighted": result.rms, "rms_modulus": result.rms_modulus,
-                    "rms_modulus_classical_loop": summary_classical, "limits_kept": result.passed,
-                    "worst_use": result.worst, "check_grid_step_s": result.step},
-        "cycles": {"count": len(times), "deadline_s": controller.deadline,
-                   "compute_time_s": {"median": float(np.median(times)), "p99": float(np.percentile(times, 99)),
-                                      "max": float(times.max())},
-                   "sources": {s: run.sources.count(s) for s in ("mpc", "shifted", "brake")},
-                   "deadline_misses": int(np.sum(times > controller.deadline))},
-        "parameters": model.params.to_dict(),
-        "versions": report.versions(),
-    }
-    report.write_online(run, controller, path, traj, result, summary, out, classical, args.overwrite)
-    cycles = summary["cycles"]
-    print(f"{path.name} on-line on {model.config.name}: RMS = {result.rms:.4g}"
-          + (f" (classical loop {summary_classical:.4g})" if summary_classical is not None else "")
-          + f", worst limit use {result.worst_use:.4f}, compute per cycle median "
-          f"{1e3 * cycles['compute_time_s']['median']:.2f} ms, p99 {1e3 * cycles['compute_time_s']['p99']:.2f} ms, "
-          f"fallbacks {cycles['sources']['shifted'] + cycles['sources']['brake']}; written to {out}")
+    options = online.OnlineOptions(online.MPCOptions(horizon=args.horizon, step=args.step, method=args.method),
+                                   predictor=args.predictor)
+    result = online.run(path, model, options)
+    report.write_online(result, out, report.command_line(), args.overwrite)
+    c, times, sources = result.check, result.loop.compute_times, result.loop.sources
+    classical = "" if result.baseline_check is None else f" (classical loop {result.baseline_check.rms:.4g})"
+    print(f"{path.name} on-line on {model.config.name}: RMS = {c.rms:.4g}{classical}, worst limit use "
+          f"{c.worst_use:.4f}, compute per cycle median {1e3 * np.median(times):.2f} ms, "
+          f"p99 {1e3 * np.percentile(times, 99):.2f} ms, fallbacks {len(sources) - sources.count('mpc')}; "
+          f"written to {out}")
     return 0
 
 
@@ -306,10 +272,10 @@ def _run_profiles(args) -> int:
 
 
 def _run_plot(args) -> int:
-    from desdemona import report
+    from desdemona import figures, report
 
     traj, summary = report.load(args.folder)
-    for figure in report.draw_figures(traj, summary, args.folder):
+    for figure in figures.draw_result(traj, summary, args.folder):
         print(figure)
     return 0
 
@@ -341,8 +307,8 @@ def describe(model: Model) -> str:
                      f"inertia diag {[round(b.inertia[k][k], 6) for k in range(3)]} kg*m^2")
     # A sample state: every free joint moving at a third of its velocity and acceleration limits.
     lim = model.limits
-    q = np.where(np.isfinite(lim["position_max"]), 0.5 * lim["position_max"], 0.3)
-    qd, qdd = lim["velocity"] / 3.0, lim["acceleration"] / 3.0
+    q = np.where(np.isfinite(lim.position_max), 0.5 * lim.position_max, 0.3)
+    qd, qdd = lim.velocity / 3.0, lim.acceleration / 3.0
     S = model.S(q, qd, qdd)
     tau = model.tau(q, qd, qdd)
     power = model.power(q, qd, qdd)
@@ -352,8 +318,8 @@ def describe(model: Model) -> str:
               f"  q    = {fmt(q)}", f"  qd   = {fmt(qd)}", f"  qdd  = {fmt(qdd)}",
               f"  omega_cabin = {fmt(S[:3])} rad/s",
               f"  f_cabin     = {fmt(S[3:])} m/s^2   |f| = {np.linalg.norm(S[3:]):.4g} m/s^2",
-              f"  tau         = {fmt(tau)}   (use {fmt(np.abs(tau) / lim['effort'])} of the limits)",
-              f"  power       = {fmt(power)} W (use {fmt(np.abs(power) / lim['power'])} of the limits)",
+              f"  tau         = {fmt(tau)}   (use {fmt(np.abs(tau) / lim.effort)} of the limits)",
+              f"  power       = {fmt(power)} W (use {fmt(np.abs(power) / lim.power)} of the limits)",
               f"  inertia eigenvalues = {fmt(eig)}"]
     return "\n".join(lines)
 

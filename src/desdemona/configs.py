@@ -61,12 +61,33 @@ class Configuration:
         full[..., list(self.free)] = x
         return full
 
-    def limits(self, params: MachineParams) -> dict[str, np.ndarray]:
-        """Limits of the free joints, SI: position_min/max, velocity, acceleration, effort, power."""
+    def limits(self, params: MachineParams) -> "Limits":
+        """Limits of the free joints (eq. 3.3-3.5), SI."""
         idx = list(self.free)
-        return {"position_min": params.position_min[idx], "position_max": params.position_max[idx],
-                "velocity": params.velocity_max[idx], "acceleration": params.acceleration_max[idx],
-                "effort": params.effort_max[idx], "power": params.power_max[idx]}
+        return Limits(position_min=params.position_min[idx], position_max=params.position_max[idx],
+                      velocity=params.velocity_max[idx], acceleration=params.acceleration_max[idx],
+                      effort=params.effort_max[idx], power=params.power_max[idx])
+
+
+@dataclass(frozen=True, eq=False)
+class Limits:
+    """Limits of a set of joints, one (n,) array per kind of limit, SI (eq. 3.3-3.5).
+
+    position_min, position_max : [rad | m], -inf / inf where a joint is unbounded; velocity
+    [rad/s | m/s], acceleration [rad/s^2 | m/s^2], effort [N*m | N], power [W]: symmetric bounds.
+    """
+
+    position_min: np.ndarray
+    position_max: np.ndarray
+    velocity: np.ndarray
+    acceleration: np.ndarray
+    effort: np.ndarray
+    power: np.ndarray
+
+    @property
+    def bounded(self) -> list[int]:
+        """Indices of the joints whose position is bounded."""
+        return [i for i in range(len(self.velocity)) if np.isfinite(self.position_max[i])]
 
 
 CONFIGURATIONS: dict[str, Configuration] = {

@@ -14,9 +14,10 @@
 - Joint power P_i = tau_i qd_i (section A.4); forward dynamics qdd = M^-1 (tau - C qd - N) by a linear
   solve (eq. A.27).
 
-All functions take the full six-joint state (floats, (N, 6) arrays or CasADi symbols) and a
-:class:`~desdemona.params.MachineParams`; :class:`desdemona.model.Model` restricts them to the free
-joints of a configuration. The thesis' simplified dynamics (section 5.7) is ``params.simplified()``.
+:func:`functions` builds every model function of a configuration once (cached per parameters and
+configuration): the held joints enter as constants. The module-level functions below take the full
+six-joint state (floats, (N, 6) arrays or CasADi symbols) and a :class:`~desdemona.params.MachineParams`;
+:class:`desdemona.model.Model` evaluates the same Functions on the free joints of a configuration. The thesis' simplified dynamics (section 5.7) is ``params.simplified()``.
 """
 
 from __future__ import annotations
@@ -26,7 +27,8 @@ import functools
 import casadi as ca
 
 from desdemona._casadi import call
-from desdemona.kinematics import N_JOINTS, body_motion, frames
+from desdemona.configs import CONFIGURATIONS, Configuration
+from desdemona.kinematics import body_motion, frames, path_expression
 from desdemona.params import MachineParams
 
 
@@ -58,21 +60,48 @@ def christoffel_matrix(M, q, qd) -> ca.SX:
 
 
 @functools.lru_cache(maxsize=None)
-def dynamics_functions(params: MachineParams) -> dict[str, ca.Function]:
-    """CasADi Functions of the full chain: ``M(q)``, ``C(q, qd)``, ``N(q)``, ``tau(q, qd, qdd)``,
-    ``kinetic_energy(q, qd)``, ``potential_energy(q)``, ``forward(q, qd, tau)``."""
-    q, qd, qdd, tau = (ca.SX.sym(name, N_JOINTS) for name in ("q", "qd", "qdd", "tau"))
-    M, V = energy_expressions(q, qd, q, qd, params)
-    bias = lagrange_torque(M, V, q, qd, ca.SX.zeros(N_JOINTS))
-    return {
-        "M": ca.Function("M", [q], [M], ["q"], ["M"]),
-        "C": ca.Function("C", [q, qd], [christoffel_matrix(M, q, qd)], ["q", "qd"], ["C"]),
-        "N": ca.Function("N", [q], [ca.gradient(V, q)], ["q"], ["N"]),
-        "tau": ca.Function("tau", [q, qd, qdd], [lagrange_torque(M, V, q, qd, qdd)], ["q", "qd", "qdd"], ["tau"]),
-        "kinetic_energy": ca.Function("kinetic_energy", [q, qd], [0.5 * qd.T @ M @ qd], ["q", "qd"], ["T"]),
-        "potential_energy": ca.Function("potential_energy", [q], [V], ["q"], ["V"]),
-        "forward": ca.Function("forward", [q, qd, tau], [ca.solve(M, tau - bias)], ["q", "qd", "tau"], ["qdd"]),
+def functions(params: MachineParams, config: Configuration) -> dict[str, ca.Function]:
+    """Every model function on the free joints of ``config``, built once per (params, config).
+
+    CasADi Functions of the free joints: ``S``, ``omega_cabin``, ``f_cabin``, ``modulus`` (kinematics,
+    eq. A.18, A.19, 7.2), ``tau``, ``power`` (eq. A.26), ``M``, ``C``, ``N`` (eq. A.20-A.23),
+    ``forward`` (eq. A.27), ``kinetic_energy``, ``potential_energy``. The ``full`` configuration gives
+    the whole chain.
+    """
+    n = config.n
+    q, qd, qdd, tau = (ca.SX.sym(name, n) for name in ("q", "qd", "qdd", "tau"))
+    # Build on the reduced chain directly: held joints enter as constants, so their terms fold away
+    # and the expressions the optimisers differentiate stay small.
+    Q, Qd, Qdd = config.expand(q), config.expand(qd, "zero"), config.expand(qdd, "zero")
+    S = path_expression(Q, Qd, Qdd, params.gravity, params.head_offset)
+    M, V = energy_expressions(q, qd, Q, Qd, params)
+    # Lagrange's equation in the free joints: the rows of eq. A.26 with held joints at rest.
+    torque = lagrange_torque(M, V, q, qd, qdd)
+    bias = lagrange_torque(M, V, q, qd, ca.SX.zeros(n))
+    expressions = {
+        "S": ([q, qd, qdd], S),
+        "omega_cabin": ([q, qd], S[:3]),
+        "f_cabin": ([q, qd, qdd], S[3:]),
+        "modulus": ([q, qd, qdd], ca.norm_2(S[3:])),
+        "tau": ([q, qd, qdd], torque),
+        "power": ([q, qd, qdd], torque * qd),
+        "M": ([q], M),
+        "C": ([q, qd], christoffel_matrix(M, q, qd)),
+        "N": ([q], ca.gradient(V, q)),
+        "forward": ([q, qd, tau], ca.solve(M, tau - bias)),
+        "kinetic_energy": ([q, qd], 0.5 * qd.T @ M @ qd),
+        "potential_energy": ([q], V),
     }
+    names = {"q": q, "qd": qd, "qdd": qdd, "tau": tau}
+    result = {}
+    for name, (args, expr) in expressions.items():
+        arg_names = [next(k for k, v in names.items() if v is a) for a in args]
+        result[name] = ca.Function(name, args, [expr], arg_names, [name])
+    return result
+
+
+def _whole_chain(params: MachineParams) -> dict[str, ca.Function]:
+    return functions(params, CONFIGURATIONS["full"])
 
 
 def lagrange_torque(M, V, q, qd, qdd):
@@ -87,34 +116,34 @@ def lagrange_torque(M, V, q, qd, qdd):
 
 def mass_matrix(q, params: MachineParams):
     """(6, 6) joint-space inertia M(q) (eq. A.20). q : (6,) [rad | m]. Units kg, kg*m, kg*m^2."""
-    return call(dynamics_functions(params)["M"], q, matrix=True)
+    return call(_whole_chain(params)["M"], q, matrix=True)
 
 
 def coriolis_matrix(q, qd, params: MachineParams):
     """(6, 6) Coriolis and centrifugal matrix C(q, qd) of eq. A.23 (Christoffel form)."""
-    return call(dynamics_functions(params)["C"], q, qd, matrix=True)
+    return call(_whole_chain(params)["C"], q, qd, matrix=True)
 
 
 def gravity_vector(q, params: MachineParams):
     """(6,) conservative joint forces N(q) = dV/dq (eq. A.22) [N*m | N]."""
-    return call(dynamics_functions(params)["N"], q)
+    return call(_whole_chain(params)["N"], q)
 
 
 def inverse_dynamics(q, qd, qdd, params: MachineParams):
     """(6,) or (N, 6) joint torques and forces tau = M qdd + C qd + N (eq. A.26) [N*m | N]."""
-    return call(dynamics_functions(params)["tau"], q, qd, qdd)
+    return call(_whole_chain(params)["tau"], q, qd, qdd)
 
 
 def forward_dynamics(q, qd, tau, params: MachineParams):
     """(6,) joint accelerations qdd = M^-1 (tau - C qd - N) (eq. A.27), by a linear solve."""
-    return call(dynamics_functions(params)["forward"], q, qd, tau)
+    return call(_whole_chain(params)["forward"], q, qd, tau)
 
 
 def kinetic_energy(q, qd, params: MachineParams):
     """Kinetic energy 1/2 qd^T M(q) qd [J]."""
-    return call(dynamics_functions(params)["kinetic_energy"], q, qd)
+    return call(_whole_chain(params)["kinetic_energy"], q, qd)
 
 
 def potential_energy(q, params: MachineParams):
     """Potential energy V(q) = sum_i m_i g z_com,i (eq. A.21) [J]."""
-    return call(dynamics_functions(params)["potential_energy"], q)
+    return call(_whole_chain(params)["potential_energy"], q)

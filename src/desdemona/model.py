@@ -1,22 +1,21 @@
 """The Desdemona model for one configuration: every model function on the free joints only.
 
-``Model(params, config)`` composes the full-chain expressions of :mod:`desdemona.kinematics` and
-:mod:`desdemona.dynamics` with a configuration's held joints, and compiles them once into CasADi
-Functions of the free joints (``model.functions``), ready for the optimisers with exact derivatives.
+``Model(params, config)`` is the value every layer below the command line takes: the parameters and
+the configuration, resolved once. Its CasADi Functions of the free joints (``model.functions``, built
+once per parameters and configuration by :func:`desdemona.dynamics.functions`) serve the optimisers
+with exact derivatives.
 Its methods evaluate the same Functions on floats, arrays or CasADi symbols.
 """
 
 from __future__ import annotations
 
-import functools
 from dataclasses import dataclass
 
 import casadi as ca
-import numpy as np
 
-from desdemona import dynamics, kinematics
+from desdemona import dynamics
 from desdemona._casadi import call
-from desdemona.configs import Configuration, get_configuration
+from desdemona.configs import Configuration, Limits, get_configuration
 from desdemona.params import MachineParams, default_params
 
 
@@ -45,10 +44,10 @@ class Model:
     def functions(self) -> dict[str, ca.Function]:
         """CasADi Functions of the free joints: S, omega_cabin, f_cabin, modulus, tau, power, M, C, N,
         forward, kinetic_energy, potential_energy."""
-        return _functions(self.params, self.config)
+        return dynamics.functions(self.params, self.config)
 
     @property
-    def limits(self) -> dict[str, np.ndarray]:
+    def limits(self) -> Limits:
         """Limits of the free joints (SI): position_min/max, velocity, acceleration, effort, power."""
         return self.config.limits(self.params)
 
@@ -97,37 +96,3 @@ class Model:
 
     def potential_energy(self, q):
         return call(self.functions["potential_energy"], q)
-
-
-@functools.lru_cache(maxsize=None)
-def _functions(params: MachineParams, config: Configuration) -> dict[str, ca.Function]:
-    n = config.n
-    q, qd, qdd, tau = (ca.SX.sym(name, n) for name in ("q", "qd", "qdd", "tau"))
-    # Build on the reduced chain directly: held joints enter as constants, so their terms fold away
-    # and the expressions the optimisers differentiate stay small.
-    Q, Qd, Qdd = config.expand(q), config.expand(qd, "zero"), config.expand(qdd, "zero")
-    S = kinematics.path_expression(Q, Qd, Qdd, params.gravity, params.head_offset)
-    M, V = dynamics.energy_expressions(q, qd, Q, Qd, params)
-    # Lagrange's equation in the free joints: the rows of eq. A.26 with held joints at rest.
-    torque = dynamics.lagrange_torque(M, V, q, qd, qdd)
-    bias = dynamics.lagrange_torque(M, V, q, qd, ca.SX.zeros(n))
-    expressions = {
-        "S": ([q, qd, qdd], S),
-        "omega_cabin": ([q, qd], S[:3]),
-        "f_cabin": ([q, qd, qdd], S[3:]),
-        "modulus": ([q, qd, qdd], ca.norm_2(S[3:])),
-        "tau": ([q, qd, qdd], torque),
-        "power": ([q, qd, qdd], torque * qd),
-        "M": ([q], M),
-        "C": ([q, qd], dynamics.christoffel_matrix(M, q, qd)),
-        "N": ([q], ca.gradient(V, q)),
-        "forward": ([q, qd, tau], ca.solve(M, tau - bias)),
-        "kinetic_energy": ([q, qd], 0.5 * qd.T @ M @ qd),
-        "potential_energy": ([q], V),
-    }
-    names = {"q": q, "qd": qd, "qdd": qdd, "tau": tau}
-    functions = {}
-    for name, (args, expr) in expressions.items():
-        arg_names = [next(k for k, v in names.items() if v is a) for a in args]
-        functions[name] = ca.Function(name, args, [expr], arg_names, [name])
-    return functions

@@ -1,6 +1,6 @@
 """Off-line optimal motion cueing: initial guesses, multi-start, refinement, checked result (chapter 5).
 
-``optimize(path, config, params, options) -> Result``: builds the problem of :mod:`desdemona.problem`,
+``optimize(path, model, options) -> Result``: builds the problem of :mod:`desdemona.problem`,
 solves it from several initial guesses (in parallel processes when asked), re-checks every solution
 independently (:mod:`desdemona.simulate`) and returns the best one that keeps every limit. The problem
 is non-convex with many local optima (thesis 4.5, 5.8): zero motion is a stationary point (at zero yaw
@@ -18,12 +18,12 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from desdemona import baselines
-from desdemona.configs import Configuration, get_configuration
 from desdemona.model import Model
-from desdemona.params import MachineParams, default_params
+from desdemona.plan import Plan
 from desdemona.problem import CueingProblem, ProblemOptions, Solution
 from desdemona.profiles import DesiredPath
-from desdemona.simulate import LimitCheck, LimitViolation, Trajectory, check, evaluate, integrate
+from desdemona.report import trajectory_dataframe
+from desdemona.simulate import LimitCheck, LimitViolation, Trajectory, check, evaluate_plan
 
 
 @dataclass(frozen=True)
@@ -67,6 +67,7 @@ class StartReport:
 class Result:
     """A checked off-line solution.
 
+    model : the machine and configuration it was computed for;
     solution : the chosen start's nodes, controls and solver statistics.
     trajectory : the motion on the optimiser's sub-step grid (for files and figures).
     check : the independent fine-grid check (every limit <= 1 + 1e-6, RMS errors).
@@ -74,8 +75,7 @@ class Result:
     """
 
     path: DesiredPath
-    config: Configuration
-    params: MachineParams
+    model: Model
     options: OptimizeOptions
     method: str
     solution: Solution
@@ -83,6 +83,16 @@ class Result:
     check: LimitCheck
     starts: tuple[StartReport, ...]
     timings: dict
+
+    @property
+    def plan(self) -> Plan:
+        """The chosen joint plan (grid, initial state, accelerations)."""
+        return self.solution.plan
+
+    def to_dataframe(self):
+        """The trajectory as a pandas DataFrame indexed by time (needs pandas: ``pip install
+        'desdemona[dataframe]'``); the columns of ``trajectory.csv``."""
+        return trajectory_dataframe(self.trajectory, self.model.config.joint_names)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -101,9 +111,9 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
 
     free = model.config.free
     if model.config.modulus_cost:
-        t, q1, q1d, q1dd = baselines.classical_dfs(problem.path, model, times=problem.t_nodes)
-        add("classical-loop", q1[:1], q1d[:1], q1dd[:-1, None])
-        add("spinning", [0.0], [0.5 * lim["velocity"][0]])
+        classical = baselines.classical_dfs(problem.path, model, times=problem.t_nodes)
+        add("classical-loop", classical.q0, classical.qd0, classical.u)
+        add("spinning", [0.0], [0.5 * lim.velocity[0]])
     else:
         # Thesis table 5.2: the yaw turning, the track out, or both; the track on the side where the
         # centripetal specific force points along the mean demanded f_y. The "not turning" row gets a
@@ -112,7 +122,7 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
         track = free.index(1) if 1 in free else None
         demand = float(np.mean(problem.path.S_d[:, 4]))
         side = -1.0 if demand >= 0 else 1.0
-        spin = 0.5 * lim["velocity"][0]
+        spin = 0.5 * lim.velocity[0]
         rows = [("smart: yaw turning", 0.0, spin, 0.0),
                 ("smart: track out", 0.5, 0.1 * spin, 0.0),
                 ("smart: yaw turning, track in", 0.1, spin, -0.3)]
@@ -120,15 +130,15 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
             q0, qd0 = np.zeros(n), np.zeros(n)
             qd0[0] = q1d
             if track is not None:
-                q0[track] = side * q2 * lim["position_max"][track]
-                qd0[track] = -side * q2d * lim["velocity"][track]
+                q0[track] = side * q2 * lim.position_max[track]
+                qd0[track] = -side * q2d * lim.velocity[track]
             add(name, q0, qd0)
     rng = np.random.default_rng(seed)
-    lo = np.where(np.isfinite(lim["position_min"]), 0.5 * lim["position_min"], -np.pi)
-    hi = np.where(np.isfinite(lim["position_max"]), 0.5 * lim["position_max"], np.pi)
+    lo = np.where(np.isfinite(lim.position_min), 0.5 * lim.position_min, -np.pi)
+    hi = np.where(np.isfinite(lim.position_max), 0.5 * lim.position_max, np.pi)
     while len(guesses) < count:
-        u = rng.uniform(-0.2, 0.2, size=(N, n)) * lim["acceleration"]
-        add(f"random {len(guesses)}", rng.uniform(lo, hi), rng.uniform(-0.5, 0.5, size=n) * lim["velocity"], u)
+        u = rng.uniform(-0.2, 0.2, size=(N, n)) * lim.acceleration
+        add(f"random {len(guesses)}", rng.uniform(lo, hi), rng.uniform(-0.5, 0.5, size=n) * lim.velocity, u)
     return guesses[:count]
 
 
@@ -136,10 +146,10 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
 # solving
 
 
-def _problems(params: MachineParams, config: Configuration, path: DesiredPath, options: OptimizeOptions):
-    full = CueingProblem(Model(params, config), path, options.problem, solves=options.starts)
-    rough = (CueingProblem(Model(params.simplified(), config), path, options.problem, solves=options.starts)
-             if options.refine else None)
+def _problems(model: Model, path: DesiredPath, options: OptimizeOptions):
+    full = CueingProblem(model, path, options.problem, solves=options.starts)
+    rough = (CueingProblem(Model(model.params.simplified(), model.config), path, options.problem,
+                           solves=options.starts) if options.refine else None)
     return full, rough
 
 
@@ -159,19 +169,17 @@ def _worker_solve(guesses):
     return [(name, _solve_one(full, rough, x, u)) for name, x, u in guesses]
 
 
-def optimize(path: DesiredPath, config: str | Configuration = "yaw-track-cabin",
-             params: MachineParams | None = None, options: OptimizeOptions = OptimizeOptions(),
+def optimize(path: DesiredPath, model: Model, options: OptimizeOptions = OptimizeOptions(),
              progress=None) -> Result:
     """The best checked joint trajectory for a desired path (thesis chapters 3-7, off-line).
 
+    model : the machine and configuration, e.g. ``Model(default_params(), "yaw-track-cabin")``;
     progress : optional callable ``progress(done, total)`` told after each start.
     Raises :class:`LimitViolation` when no start yields a trajectory within every limit.
     """
     wall = time.perf_counter()
-    params = default_params() if params is None else params
-    config = get_configuration(config)
     build = time.perf_counter()
-    full, rough = _problems(params, config, path, options)
+    full, rough = _problems(model, path, options)
     build = time.perf_counter() - build
     guesses = initial_guesses(full, options.starts, options.seed)
     if options.workers > 1 and len(guesses) > 1:
@@ -218,35 +226,31 @@ def optimize(path: DesiredPath, config: str | Configuration = "yaw-track-cabin",
     chosen_check, chosen = min(passed, key=lambda cs: cs[0].rms)
     times = full.sub_times()
     t = np.r_[times[:, :-1].ravel(), full.t_nodes[-1]]
-    q, qd, qdd = integrate(chosen.t_nodes, chosen.q0, chosen.qd0, chosen.u, t)
-    trajectory = evaluate(full.model, path, t, q, qd, qdd, options.problem.perception)
+    trajectory = evaluate_plan(model, path, chosen.plan, t, options.problem.perception)
     timings = {"build": build, "solve": sum(r.solve_time for r in reports),
                "wall": time.perf_counter() - wall}
-    return Result(path=path, config=config, params=params, options=options, method=options.problem.solver,
+    return Result(path=path, model=model, options=options, method=options.problem.solver,
                   solution=chosen, trajectory=trajectory, check=chosen_check, starts=tuple(reports),
                   timings=timings)
 
 
 def _check(problem: CueingProblem, sol: Solution) -> tuple[LimitCheck, Trajectory]:
-    return check(problem.model, problem.path, sol.t_nodes, sol.q0, sol.qd0, sol.u, problem.h_sub,
-                 weights=problem.weights, perception=problem.options.perception)
+    return check(problem.model, problem.path, sol.plan, problem.h_sub, weights=problem.weights,
+                 perception=problem.options.perception)
 
 
-def thesis_result(path: DesiredPath, config: str | Configuration = "yaw-track",
-                  params: MachineParams | None = None, options=None) -> Result:
+def thesis_result(path: DesiredPath, model: Model, options: baselines.ThesisOptions | None = None) -> Result:
     """The thesis' own method (:func:`desdemona.baselines.optimize_thesis`), checked and packaged like ours.
 
     Its best start that keeps every limit on the fine grid is returned; :class:`LimitViolation` if none.
     """
     options = baselines.ThesisOptions() if options is None else options
     wall = time.perf_counter()
-    params = default_params() if params is None else params
-    config = get_configuration(config)
-    problem, runs = baselines.optimize_thesis(path, config, params, options)
+    problem, runs = baselines.optimize_thesis(path, model, options)
     step = float(np.min(np.diff(path.t)))
     reports, candidates = [], []
     for k, run in enumerate(runs):
-        result_check, _ = check(problem.model, path, run.t_nodes, run.q0, run.qd0, run.u, step)
+        result_check, _ = check(model, path, run.plan, step)
         reports.append(StartReport(f"random {k}", run.message, result_check.passed, run.iterations,
                                    run.solve_time, run.cost, result_check.rms, result_check.worst_use,
                                    result_check.passed))
@@ -255,13 +259,10 @@ def thesis_result(path: DesiredPath, config: str | Configuration = "yaw-track",
     if not passed:
         raise LimitViolation(min(candidates, key=lambda cr: cr[0].worst_use)[0], "the thesis method's trajectory")
     chosen_check, run = min(passed, key=lambda cr: cr[0].rms)
-    q, qd, _ = integrate(run.t_nodes, run.q0, run.qd0, run.u, run.t_nodes)
-    solution = Solution(t_nodes=run.t_nodes, x=np.hstack([q, qd]), u=run.u, cost=run.cost, status=run.message,
+    plan = run.plan
+    solution = Solution(t_nodes=plan.t_nodes, x=plan.states(), u=plan.u, cost=run.cost, status=run.message,
                         success=True, iterations=run.iterations, solve_time=run.solve_time)
-    t = path.t[path.t <= run.t_nodes[-1] + 1e-12]
-    q, qd, qdd = integrate(run.t_nodes, run.q0, run.qd0, run.u, t)
-    trajectory = evaluate(problem.model, path, t, q, qd, qdd)
+    trajectory = evaluate_plan(model, path, plan, path.t[path.t <= plan.t_nodes[-1] + 1e-12])
     timings = {"build": 0.0, "solve": sum(r.solve_time for r in runs), "wall": time.perf_counter() - wall}
-    return Result(path=path, config=config, params=params, options=options, method="thesis",
-                  solution=solution, trajectory=trajectory, check=chosen_check, starts=tuple(reports),
-                  timings=timings)
+    return Result(path=path, model=model, options=options, method="thesis", solution=solution,
+                  trajectory=trajectory, check=chosen_check, starts=tuple(reports), timings=timings)

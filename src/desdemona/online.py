@@ -16,6 +16,10 @@ command is scaled down until it passes. The controller never returns a command t
 Predictors (:data:`PREDICTORS`) turn what is known now into the preview: ``perfect`` (the thesis'
 assumption: the true future), ``hold`` (the present value held) and ``linear`` (extrapolated from the
 last two samples).
+
+:func:`run` is a whole closed-loop session as a value: the MPC against the plant
+(:func:`desdemona.simulate.closed_loop`), the independent check, and the classical loop beside it
+(:class:`OnlineResult`); the ``online`` command, the benchmark and the tests all call it.
 """
 
 from __future__ import annotations
@@ -27,10 +31,14 @@ from typing import Literal
 import casadi as ca
 import numpy as np
 
+from desdemona.baselines import classical_dfs
 from desdemona.model import Model
+from desdemona.perception import VestibularModel
+from desdemona.plan import Plan, advance
 from desdemona.problem import CueingProblem, ProblemOptions
 from desdemona.profiles import DesiredPath
-from desdemona.simulate import TOLERANCE
+from desdemona.simulate import (TOLERANCE, ClosedLoop, LimitCheck, LimitViolation, Trajectory, check, closed_loop,
+                                evaluate_plan)
 
 
 @dataclass(frozen=True)
@@ -55,7 +63,7 @@ class MPCOptions:
     max_iter: int = 100
     method: Literal["rti", "nlp"] = "rti"
     qp_solver: str = "hpipm"
-    perception: str | None = None
+    perception: VestibularModel | None = None
 
     def __post_init__(self):
         if not (self.step > 0 and self.horizon >= 2 * self.step):
@@ -176,8 +184,7 @@ class MPC:
     def _advance_filters(self, q, qd, qdd) -> None:
         """Carry the felt filter state over the step just commanded, and the desired one with it."""
         prob = self.problem
-        s = prob.tau_sub[:-1, None]
-        S = self.model.S(q + qd * s + 0.5 * qdd * s * s, qd + qdd * s, np.tile(qdd, (len(s), 1)))
+        S = self.model.S(*advance(q, qd, qdd, prob.tau_sub[:-1, None]), np.tile(qdd, (prob.m, 1)))
         for row in S:
             self.z = prob.filter.Ad @ self.z + prob.filter.Bd @ row
         # without a usable preview the desired state is unknown: restart from the next preview's steady state
@@ -229,8 +236,8 @@ class MPC:
         N, nx, nu = prob.N, prob.nx, prob.nu
         nw = nx + nu
         x, u = ca.SX.sym("x", nx), ca.SX.sym("u", nu)
-        d = ca.SX.sym("d", prob._stage.size1_in(2))
-        r = prob._residual(x, u, d)
+        d = ca.SX.sym("d", prob.stage.size1_in(2))
+        r = prob.residual(x, u, d)
         J = ca.jacobian(r, ca.vertcat(x, u))
         stage = ca.Function("stage_gn", [x, u, d], [2.0 * J.T @ J, 2.0 * J.T @ r])
         w, p = prob.nlp["x"], prob.nlp["p"]
@@ -241,7 +248,7 @@ class MPC:
         H = ca.diagcat(*[H_blocks[:, k * nw:(k + 1) * nw] for k in range(N)], ca.MX(nx, nx))
         H = H + 1e-9 * ca.MX.eye(N * nw + nx)
         gradient = ca.vertcat(ca.vec(g_blocks), ca.MX.zeros(nx))
-        g, A = prob._derivatives["jac_g"](w, p)
+        g, A = prob.derivatives["jac_g"](w, p)
         # flattened to SX: the mapped graph spends more time slicing than computing (0.22 -> 0.10 ms
         # for the 2 s dfs horizon at 50 Hz; building the flat graph takes 0.01-0.1 s)
         qp_data = ca.Function("qp_data", [w, p], [H, gradient, A, g]).expand()
@@ -266,7 +273,7 @@ class MPC:
         prob = self.problem
         n = self.model.n
         if self.plan is not None:
-            x_prev, u_prev = self.plan
+            _, u_prev = self.plan
             shift = min(self.plan_age + 1, len(u_prev) - 1)
             u = np.vstack([u_prev[shift:], np.repeat(u_prev[-1:], shift, axis=0)])
         else:
@@ -306,14 +313,14 @@ class MPC:
         """
         lim, n, h = self.limits, self.model.n, self.options.step
         q, qd, qdd = (ca.SX.sym(k, n) for k in ("q", "qd", "qdd"))
-        uses = [ca.fabs(qdd) / ca.DM(lim["acceleration"])]
-        bounded = [i for i in range(n) if np.isfinite(lim["position_max"][i])]
-        lo, hi = lim["position_min"][bounded], lim["position_max"][bounded]
+        uses = [ca.fabs(qdd) / ca.DM(lim.acceleration)]
+        bounded = lim.bounded
+        lo, hi = lim.position_min[bounded], lim.position_max[bounded]
         for s in (0.0, 0.5 * h, h):
-            qs, qds = q + qd * s + 0.5 * qdd * s * s, qd + qdd * s
+            qs, qds = advance(q, qd, qdd, s)
             tau = self.model.functions["tau"](qs, qds, qdd)
-            uses += [ca.fabs(qds) / ca.DM(lim["velocity"]), ca.fabs(tau) / ca.DM(lim["effort"]),
-                     ca.fabs(tau * qds) / ca.DM(lim["power"])]
+            uses += [ca.fabs(qds) / ca.DM(lim.velocity), ca.fabs(tau) / ca.DM(lim.effort),
+                     ca.fabs(tau * qds) / ca.DM(lim.power)]
             if bounded:
                 # 1 + how far outside [lo, hi] as a share of the range: <= 1 + tol inside
                 outside = ca.fmax(ca.DM(lo) - qs[bounded], qs[bounded] - ca.DM(hi)) / ca.DM(hi - lo)
@@ -333,9 +340,85 @@ class MPC:
         """The strongest deceleration towards rest (at most ``braking`` x the acceleration limit, not
         past zero rate within the step) that keeps every limit over the step; scaled down until safe."""
         lim, h = self.limits, self.options.step
-        full = -np.sign(qd) * np.minimum(self.options.braking * lim["acceleration"], np.abs(qd) / h)
+        full = -np.sign(qd) * np.minimum(self.options.braking * lim.acceleration, np.abs(qd) / h)
         for scale in (1.0, 0.75, 0.5, 0.25, 0.1, 0.0):
             qdd = scale * full
             if self._safe(q, qd, qdd):
                 return qdd
         return np.zeros_like(qd)  # holding: the last resort (the independent check reports any excess)
+
+
+# ----------------------------------------------------------------------------------------------
+# a whole closed-loop run
+
+
+@dataclass(frozen=True)
+class OnlineOptions:
+    """Options of :func:`run`: the controller's (:class:`MPCOptions`) and the predictor's name
+    (:data:`PREDICTORS`)."""
+
+    mpc: MPCOptions = MPCOptions()
+    predictor: Literal["perfect", "hold", "linear"] = "perfect"
+
+    def __post_init__(self):
+        if self.predictor not in PREDICTORS:
+            raise ValueError(f"predictor = {self.predictor!r}: must be one of {', '.join(PREDICTORS)}")
+
+
+@dataclass(frozen=True, eq=False)
+class OnlineResult:
+    """A checked closed-loop run of the MPC against the plant, with the classical loop beside it.
+
+    loop : the plan the plant executed and the per-cycle records (source, compute time, reason);
+    deadline : the compute budget per cycle [s]; trajectory : the motion on the control grid;
+    check : the independent fine-grid check of the run (it passed: a run that does not is an error);
+    baseline, baseline_check : the classical loop (7.4.2) on the same grid and its check, where the
+    configuration has one (``dfs``), else None.
+    """
+
+    path: DesiredPath
+    model: Model
+    options: OnlineOptions
+    loop: ClosedLoop
+    deadline: float
+    trajectory: Trajectory
+    check: LimitCheck
+    baseline: Trajectory | None = None
+    baseline_check: LimitCheck | None = None
+
+    @property
+    def plan(self) -> Plan:
+        return self.loop.plan
+
+    def to_dataframe(self):
+        """The trajectory as a pandas DataFrame indexed by time (needs pandas)."""
+        from desdemona.report import trajectory_dataframe
+
+        return trajectory_dataframe(self.trajectory, self.model.config.joint_names)
+
+
+def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions()) -> OnlineResult:
+    """Run the MPC in closed loop over a whole desired path and check the result (thesis chapter 7).
+
+    The controller sees the path only through the predictor; each command is held for one step and
+    integrated exactly. On ``dfs`` the arm starts at the classical loop's initial rate, and the classical
+    loop runs beside it as the baseline. Raises :class:`LimitViolation` if the run breaks a limit on
+    the independent check's fine grid.
+    """
+    step = options.mpc.step
+    start = classical_dfs(path, model) if model.config.modulus_cost else None
+    controller = MPC(model, options.mpc, weights=path.weights)
+    loop = closed_loop(controller, path, PREDICTORS[options.predictor],
+                       q0=None if start is None else start.q0, qd0=None if start is None else start.qd0)
+    result, _ = check(model, path, loop.plan, step=step)
+    if not result.passed:
+        raise LimitViolation(result, "the closed-loop trajectory")
+    nodes = loop.plan.t_nodes
+    baseline = baseline_check = None
+    if start is not None:
+        classical = classical_dfs(path, model, times=nodes)
+        baseline_check, _ = check(model, path, classical, step=step)
+        baseline = evaluate_plan(model, path, classical, nodes)
+    return OnlineResult(path=path, model=model, options=options, loop=loop, deadline=controller.deadline,
+                        trajectory=evaluate_plan(model, path, loop.plan, nodes), check=result,
+                        baseline=baseline, baseline_check=baseline_check)

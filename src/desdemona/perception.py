@@ -41,7 +41,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from pathlib import Path
 
 import casadi as ca
 import numpy as np
@@ -167,10 +166,15 @@ class DiscreteSystem:
 
 @dataclass(frozen=True)
 class VestibularModel:
-    """Six channels in the order of S: canals (roll x, pitch y, yaw z), otoliths (x, y, z)."""
+    """Six channels in the order of S: canals (roll x, pitch y, yaw z), otoliths (x, y, z).
+
+    thresholds : (6,) the smallest perceived difference a person notices per channel [rad/s] x3,
+    [m/s^2] x3; by default those of Reid & Nahon (:data:`THRESHOLDS`).
+    """
 
     name: str
     channels: tuple[Channel, ...]
+    thresholds: tuple[float, ...] = tuple(THRESHOLDS)
 
     def state_space(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """Continuous block-diagonal (A, B, C, D) from S (6,) to perceived S (6,)."""
@@ -258,33 +262,3 @@ def below_threshold(difference, thresholds=THRESHOLDS) -> np.ndarray:
     Returns a boolean array of the same shape: True where |difference| < threshold.
     """
     return np.abs(np.asarray(difference, dtype=float)) < np.asarray(thresholds, dtype=float)
-
-
-def plot_bode(model: VestibularModel, path: str | Path, w=None) -> Path:
-    """Bode diagrams of a model's canal and otolith channels to a PNG (like thesis figures 6.4, 6.6)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    w = np.logspace(-3, 3, 600) if w is None else np.asarray(w)
-    fig, axes = plt.subplots(2, 2, figsize=(11, 7), sharex=True)
-    for col, (title, channels) in enumerate((("semicircular canals (input: angular velocity)",
-                                              model.channels[:3]),
-                                             ("otoliths (input: specific force)", model.channels[3:]))):
-        for ch in channels:
-            h = ch.frequency_response(w)
-            axes[0, col].semilogx(w, 20 * np.log10(np.abs(h)), label=ch.name)
-            axes[1, col].semilogx(w, np.degrees(np.unwrap(np.angle(h))), label=ch.name)
-        axes[0, col].set_title(f"{model.name}: {title}")
-        axes[0, col].set_ylabel("magnitude [dB]")
-        axes[1, col].set_ylabel("phase [deg]")
-        axes[1, col].set_xlabel("frequency [rad/s]")
-        for ax in axes[:, col]:
-            ax.grid(True, which="both", alpha=0.3)
-        axes[0, col].legend(fontsize=8)
-    fig.tight_layout()
-    path = Path(path)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path

@@ -44,7 +44,8 @@ from typing import Literal
 import casadi as ca
 import numpy as np
 
-from desdemona import perception as perception_models
+from desdemona.perception import VestibularModel
+from desdemona.plan import Plan, advance, node_states
 from desdemona.model import Model
 from desdemona.profiles import DesiredPath
 
@@ -69,7 +70,8 @@ class ProblemOptions:
     initial : "free" (optimised, section 5.2), "rest" (at rest, position free) or "given" (``initial_state``).
     initial_state : (q0, qd0) of the free joints when initial == "given".
     final : "none", "rest" (qd = 0 at the end) or "centre" (at rest with the track and heave centred).
-    perception : None or the name of a model of :mod:`desdemona.perception`.
+    perception : None, or the vestibular model (:mod:`desdemona.perception`) through which the
+        difference is perceived.
     weights : diagonal of Q (6,), None for the path's own.
     regularisation : rho, see the module docstring.
     margin : relative back-off of torque and power limits inside the optimiser.
@@ -88,7 +90,7 @@ class ProblemOptions:
     initial: Literal["free", "rest", "given"] = "free"
     initial_state: tuple | None = None
     final: Literal["none", "rest", "centre"] = "none"
-    perception: str | None = None
+    perception: VestibularModel | None = None
     weights: tuple[float, ...] | None = None
     regularisation: float = 1e-4
     margin: float = 1e-3
@@ -114,6 +116,16 @@ class ProblemOptions:
             raise ValueError("initial = 'given' needs initial_state = (q0, qd0)")
         if not (self.regularisation >= 0 and 0 <= self.margin < 0.5):
             raise ValueError("regularisation must be >= 0 and margin in [0, 0.5)")
+
+
+@dataclass(frozen=True, eq=False)
+class Family:
+    """One family of path constraints of a stage: lower <= expression <= upper, elementwise."""
+
+    name: str
+    expression: ca.SX
+    lower: np.ndarray
+    upper: np.ndarray
 
 
 @dataclass(frozen=True)
@@ -148,20 +160,24 @@ class Solution:
     def qd0(self) -> np.ndarray:
         return self.x[0, self.n: 2 * self.n]
 
+    @property
+    def plan(self) -> Plan:
+        """The joints' plan: this solution's grid, initial state and accelerations."""
+        return Plan(self.t_nodes, self.q0, self.qd0, self.u)
+
 
 class CueingProblem:
     """The NLP for one model, desired path and set of options; built once, solved from many guesses."""
 
     def __init__(self, model: Model, path: DesiredPath, options: ProblemOptions = ProblemOptions(),
                  solves: int = 1, parametric: bool = False):
-        start = time.perf_counter()
         self.solves, self.parametric = solves, parametric
         self.model, self.path, self.options = model, path, options
         self.modulus = model.config.modulus_cost
         if not self.modulus and path.S_d is None:
             raise ValueError(f"configuration {model.config.name!r} needs a full path S_d; "
                              f"path {path.name!r} gives only the modulus")
-        if self.modulus and options.perception:
+        if self.modulus and options.perception is not None:
             raise ValueError("a perception model applies to the full path S, not to the dfs modulus")
         h_u = options.h_u
         self.N = max(1, int(round(path.duration / h_u)))
@@ -170,14 +186,13 @@ class CueingProblem:
         self.h_sub = h_u / self.m
         self.tau_sub = self.h_sub * np.arange(self.m + 1)  # sub-step times within an interval
         self.weights = np.array(options.weights if options.weights is not None else path.weights, float)
-        self.vestibular = perception_models.get_model(options.perception) if options.perception else None
+        self.vestibular = options.perception
         self.filter = self.vestibular.discretize(self.h_sub) if self.vestibular else None
         self.nz = self.vestibular.n_states if self.vestibular else 0
         n = model.n
         self.nx, self.nu = 2 * n + self.nz, n
-        self._stage = self._stage_function()
+        self.stage = self._stage_function()
         self._build_nlp()
-        self.build_time = time.perf_counter() - start
 
     # ------------------------------------------------------------------------------------------
     # data on the sub-step grid
@@ -202,37 +217,47 @@ class CueingProblem:
     # the stage: one control interval
 
     def _stage_function(self) -> ca.Function:
-        n, m, h = self.model.n, self.m, self.h_sub
-        fn = self.model.functions
+        """One control interval: the next node state, the stage cost and the path constraints.
+
+        The motion at the sub-step points is exact (:func:`desdemona.plan.advance`); there the cue
+        (S, or the modulus against its desired value) and the torques are evaluated once, and shared by
+        the cost (:meth:`_residuals`) and the constraint families (:meth:`_families`).
+        """
+        n, h_u, fn = self.model.n, self.options.h_u, self.model.functions
+        lim, margin = self.model.limits, 1.0 - self.options.margin
         x, u = ca.SX.sym("x", self.nx), ca.SX.sym("u", self.nu)
-        q, qd, z = x[:n], x[n:2 * n], x[2 * n:]
-        lim = self.model.limits
-        margin = 1.0 - self.options.margin
-        bounded = [i for i in range(n) if np.isfinite(lim["position_max"][i])]
-        nd = (m + 1) if self.modulus else (m * 6 if self.vestibular else (m + 1) * 6)
-        d = ca.SX.sym("d", nd)
-        values, taus, powers, positions = [], [], [], []
-        h_u = self.options.h_u
-        x_next = ca.vertcat(q + qd * h_u + 0.5 * u * h_u**2, qd + u * h_u, z)  # z advanced below
+        q, qd = x[:n], x[n:2 * n]
+        d = ca.SX.sym("d", (self.m + 1) if self.modulus else (self.m * 6 if self.vestibular else (self.m + 1) * 6))
+        q_next, qd_next = advance(q, qd, u, h_u)
+        positions, values, efforts, powers = [], [], [], []
         for j, tj in enumerate(self.tau_sub):
-            qj = q + qd * tj + 0.5 * u * tj**2
-            qdj = qd + u * tj
-            if self.modulus:
-                values.append(fn["modulus"](qj, qdj, u) - d[j])
-            else:
-                values.append(fn["S"](qj, qdj, u))
+            qj, qdj = advance(q, qd, u, tj)
+            values.append(fn["modulus"](qj, qdj, u) - d[j] if self.modulus else fn["S"](qj, qdj, u))
             tau = fn["tau"](qj, qdj, u)
-            taus.append(tau / ca.DM(lim["effort"] * margin))
-            powers.append(tau * qdj / ca.DM(lim["power"] * margin))
-            if 0 < j < m and bounded:
-                positions.append(qj[bounded])
-        # The cost is a sum of squared residuals (trapezoid rule, or zero-order hold with perception),
-        # so that a Gauss-Newton Hessian can be formed from the same definition (see online.py).
-        T = self.path.duration
+            efforts.append(tau / ca.DM(lim.effort * margin))
+            powers.append(tau * qdj / ca.DM(lim.power * margin))
+            positions.append(qj)
+        residuals, z_next = self._residuals(values, u, x[2 * n:], d)
+        r = ca.vertcat(*residuals)
+        self.residual = ca.Function("stage_residual", [x, u, d], [r], ["x", "u", "d"], ["r"])
+        self.families = self._families(positions, efforts, powers, q_next, qd_next)
+        g = ca.vertcat(*[f.expression for f in self.families])
+        self.n_path = g.numel()
+        x_next = ca.vertcat(q_next, qd_next, z_next)
+        return ca.Function("stage", [x, u, d], [x_next, ca.sumsqr(r), g], ["x", "u", "d"],
+                           ["x_next", "L", "g"])
+
+    def _residuals(self, values, u, z, d) -> tuple[list, ca.SX]:
+        """The stage's cost as squared residuals, and the filter states at its end.
+
+        values : per sub-step point, S (full paths) or M - M_d (modulus paths). A sum of squared
+        residuals (trapezoid rule, or zero-order hold with perception), so that a Gauss-Newton
+        Hessian can be formed from the same definition (see :mod:`desdemona.online`).
+        """
+        m, h, T = self.m, self.h_sub, self.path.duration
         trapezoid = np.full(m + 1, h)
         trapezoid[[0, -1]] = 0.5 * h
         root_w = ca.DM(np.sqrt(self.weights))
-        residuals = []
         if self.modulus:
             residuals = [math.sqrt(trapezoid[j] / T) * values[j] for j in range(m + 1)]
         elif self.vestibular is None:
@@ -241,24 +266,48 @@ class CueingProblem:
         else:
             A, B = ca.DM(self.filter.Ad), ca.DM(self.filter.Bd)
             C, D = ca.DM(self.filter.C), ca.DM(self.filter.D)
+            residuals = []
             for j in range(m):  # zero-order hold of S over each sub-step
                 residuals.append(math.sqrt(h / T) * root_w * (C @ z + D @ values[j] - d[6 * j: 6 * j + 6]))
                 z = A @ z + B @ values[j]
-            x_next = ca.vertcat(x_next[:2 * n], z)
         rho = self.options.regularisation * self.options.h_u / T
-        residuals.append(math.sqrt(rho) * u / ca.DM(lim["acceleration"]))
-        r = ca.vertcat(*residuals)
-        self._residual = ca.Function("stage_residual", [x, u, d], [r], ["x", "u", "d"], ["r"])
-        if self.options.stoppable and bounded:
-            # where the joint would come to rest braking at braking * qdd_max from the interval's end
-            q_end, qd_end = x_next[:n][bounded], x_next[n:2 * n][bounded]
-            brake = ca.DM(2.0 * self.options.braking * lim["acceleration"][bounded])
-            positions.append(q_end + qd_end * ca.sqrt(qd_end**2 + 1e-8) / brake)
-        g = ca.vertcat(*positions, *taus, *powers)
-        self.n_path = g.numel()
-        self.n_positions = sum(p.numel() for p in positions)
-        return ca.Function("stage", [x, u, d], [x_next, ca.sumsqr(r), g], ["x", "u", "d"],
-                           ["x_next", "L", "g"])
+        residuals.append(math.sqrt(rho) * u / ca.DM(self.model.limits.acceleration))
+        return residuals, z
+
+    def _families(self, positions, efforts, powers, q_next, qd_next) -> list[Family]:
+        """The path constraints of one interval, family by family, each with its own bounds.
+
+        position : bounded joints at the inner sub-step points, backed off by the bulge of a parabola
+            between two points (qdd_max h^2 / 8), so they hold for all t (nodes are variable bounds);
+        stopping : with ``stoppable``, where each bounded joint comes to rest braking at ``braking``
+            times its acceleration limit from the interval's end (the on-line end condition, chapter 7);
+        effort, power : |tau| and |tau qd| over their limits (less ``margin``) at every sub-step point.
+        Velocity and acceleration limits are bounds on the variables (linear and constant in t).
+        """
+        lim, o = self.model.limits, self.options
+        bounded = lim.bounded
+        qmin, qmax = (bound[bounded] for bound in self.position_bounds())
+        families = []
+        inner = [qj[bounded] for qj in positions[1:-1]] if bounded else []
+        if inner:
+            families.append(Family("position", ca.vertcat(*inner), np.tile(qmin, len(inner)),
+                                   np.tile(qmax, len(inner))))
+        if o.stoppable and bounded:
+            q_end, qd_end = q_next[bounded], qd_next[bounded]
+            brake = ca.DM(2.0 * o.braking * lim.acceleration[bounded])
+            families.append(Family("stopping", q_end + qd_end * ca.sqrt(qd_end**2 + 1e-8) / brake, qmin, qmax))
+        for name, rows in (("effort", efforts), ("power", powers)):
+            expression = ca.vertcat(*rows)
+            families.append(Family(name, expression, -np.ones(expression.numel()), np.ones(expression.numel())))
+        return families
+
+    def position_bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """(n,) lower and upper position bounds, backed off by the largest bulge of a parabola between
+        two sub-step points, qdd_max h^2 / 8 (unbounded joints stay infinite)."""
+        lim = self.model.limits
+        backoff = lim.acceleration * self.h_sub**2 / 8.0
+        return (lim.position_min + np.where(np.isfinite(lim.position_min), backoff, 0.0),
+                lim.position_max - np.where(np.isfinite(lim.position_max), backoff, 0.0))
 
     # ------------------------------------------------------------------------------------------
     # the NLP
@@ -271,9 +320,9 @@ class CueingProblem:
         X, U = XU[:nx, :], XU[nx:, :]
         X_next = ca.horzcat(X[:, 1:], w[N * nw:])
         # The desired values are constants, or a parameter p (columns per stage) for an MPC.
-        nd = self._stage.size1_in(2)
+        nd = self.stage.size1_in(2)
         data = ca.MX.sym("p", nd, N) if self.parametric else ca.DM(self.stage_data())
-        x_next, L, g = self._stage.map(N, "serial")(X, U, data)
+        x_next, L, g = self.stage.map(N, "serial")(X, U, data)
         G = ca.vertcat(X_next - x_next, g)  # per stage: gap, then path constraints
         # With perception, the filters start in the steady state of the first S: the person has sat
         # still before the run, and the optimiser may not choose what they felt before t = 0.
@@ -285,7 +334,7 @@ class CueingProblem:
             self.nlp["p"] = ca.vec(data)
         stage_eq = [True] * nx + [False] * self.n_path
         self.equality = stage_eq[:nx] + [True] * self.n_initial + stage_eq[nx:] + stage_eq * (N - 1)
-        self._derivatives = self._derivative_functions(w, XU, data)
+        self.derivatives = self._derivative_functions(w, XU, data)
         self._bounds()
         self.solver = self._solver()
 
@@ -307,8 +356,8 @@ class CueingProblem:
         """
         N, nx, nu, nw, ni = self.N, self.nx, self.nu, self.nx + self.nu, self.n_initial
         x, u = ca.SX.sym("x", nx), ca.SX.sym("u", nu)
-        d = ca.SX.sym("d", self._stage.size1_in(2))
-        x_next, L, g = self._stage(x, u, d)
+        d = ca.SX.sym("d", self.stage.size1_in(2))
+        x_next, L, g = self.stage(x, u, d)
         init = self._initial_constraint()(x, u)
         xu = ca.vertcat(x, u)
         sigma, l_gap, l_init, l_path = (ca.SX.sym(k, m) for k, m in
@@ -352,18 +401,15 @@ class CueingProblem:
         }
 
     def _bounds(self) -> None:
-        n, N, nx, nu, o = self.model.n, self.N, self.nx, self.nu, self.options
+        n, N, nx, o = self.model.n, self.N, self.nx, self.options
         lim = self.model.limits
-        amax = lim["acceleration"]
-        backoff = amax * self.h_sub**2 / 8.0  # bulge of a parabola between two sub-step points
-        qmin = lim["position_min"] + np.where(np.isfinite(lim["position_min"]), backoff, 0.0)
-        qmax = lim["position_max"] - np.where(np.isfinite(lim["position_max"]), backoff, 0.0)
-        x_lo = np.r_[qmin, -lim["velocity"], np.full(self.nz, -np.inf)]
-        x_hi = np.r_[qmax, lim["velocity"], np.full(self.nz, np.inf)]
-        lbx = np.tile(np.r_[x_lo, -amax], N)
-        ubx = np.tile(np.r_[x_hi, amax], N)
+        qmin, qmax = self.position_bounds()
+        x_lo = np.r_[qmin, -lim.velocity, np.full(self.nz, -np.inf)]
+        x_hi = np.r_[qmax, lim.velocity, np.full(self.nz, np.inf)]
+        lbx = np.tile(np.r_[x_lo, -lim.acceleration], N)
+        ubx = np.tile(np.r_[x_hi, lim.acceleration], N)
         lbx, ubx = np.r_[lbx, x_lo], np.r_[ubx, x_hi]
-        last = slice(N * (nx + nu), N * (nx + nu) + nx)
+        last = slice(N * (nx + self.nu), N * (nx + self.nu) + nx)
         if o.initial in ("rest", "given"):
             lbx[n:2 * n] = ubx[n:2 * n] = 0.0
         if o.initial == "given":
@@ -378,17 +424,15 @@ class CueingProblem:
                              if self.model.params.joints[i].kind == "prismatic"]
                 lo[prismatic] = hi[prismatic] = 0.0
         self.lbx, self.ubx = lbx, ubx
-        n_pos = self.n_positions  # groups of the bounded joints' positions (sub-steps, stopping points)
-        qmin_b, qmax_b = qmin[np.isfinite(qmin)], qmax[np.isfinite(qmax)]
-        groups = n_pos // max(len(qmin_b), 1)
-        lbg_stage = np.r_[np.zeros(nx), np.tile(qmin_b, groups), -np.ones(self.n_path - n_pos)]
-        ubg_stage = np.r_[np.zeros(nx), np.tile(qmax_b, groups), np.ones(self.n_path - n_pos)]
+        # per stage: the gaps (equalities), then the families in the order of the stage's g
+        lbg_stage = np.r_[np.zeros(nx), *[f.lower for f in self.families]]
+        ubg_stage = np.r_[np.zeros(nx), *[f.upper for f in self.families]]
         self.lbg = np.r_[lbg_stage[:nx], np.zeros(self.n_initial), lbg_stage[nx:], np.tile(lbg_stage, N - 1)]
         self.ubg = np.r_[ubg_stage[:nx], np.zeros(self.n_initial), ubg_stage[nx:], np.tile(ubg_stage, N - 1)]
 
     def _solver(self) -> ca.Function:
         o = self.options
-        size = self.N * self._stage.n_instructions()
+        size = self.N * self.stage.n_instructions()
         auto = size <= EXPAND_LIMIT and self.solves >= EXPAND_SOLVES
         self.expanded = o.expand if o.expand is not None else auto
         if o.solver == "ipopt":
@@ -397,7 +441,7 @@ class CueingProblem:
                               "linear_solver": "mumps"},
                     "print_time": False, "expand": self.expanded}
             if not self.expanded:  # a flat graph differentiates well by itself
-                opts.update(self._derivatives)
+                opts.update(self.derivatives)
             return ca.nlpsol("cueing", "ipopt", self.nlp, opts)
         opts = {"structure_detection": "auto", "equality": self.equality, "print_time": False,
                 "expand": self.expanded,
@@ -417,15 +461,13 @@ class CueingProblem:
         return np.vstack([XU[:, :nx], w[N * (nx + nu):]]), XU[:, nx:]
 
     def states_from(self, q0, qd0, u, clip: bool = True) -> np.ndarray:
-        """Node states (N + 1, nx) of a guess: the exact double integral of ``u`` (clipped to the
+        """Node states (N + 1, nx) of a guess: the plan of ``u`` from (q0, qd0) (clipped to the
         limits with ``clip``), filter states at the steady state of the first S."""
-        h, lim = self.options.h_u, self.model.limits
-        u = np.asarray(u, dtype=float)
-        qd = np.vstack([qd0, qd0 + np.cumsum(u * h, axis=0)])
-        q = np.vstack([q0, q0 + np.cumsum(qd[:-1] * h + 0.5 * u * h * h, axis=0)])
+        lim = self.model.limits
+        q, qd = node_states(q0, qd0, u, self.options.h_u)
         if clip:
-            qd = np.clip(qd, -lim["velocity"], lim["velocity"])
-            q = np.clip(q, lim["position_min"], lim["position_max"])
+            qd = np.clip(qd, -lim.velocity, lim.velocity)
+            q = np.clip(q, lim.position_min, lim.position_max)
         x = np.hstack([q, qd])
         if self.nz:
             S0 = self.model.S(q0, qd0, u[0])

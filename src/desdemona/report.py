@@ -1,13 +1,9 @@
 """Result folders: trajectory.csv, summary.json, trajectory.mat and figures like the thesis'.
 
 A folder is written to a temporary sibling and renamed into place only when complete, so a failed or
-interrupted run never leaves a half-written result. :func:`load` reads a folder back and
-:func:`draw_figures` re-draws its figures (``desdemona plot DIR``).
-
-Figures (PNG): ``path.png`` S against S_d per channel (thesis figures 5.7-5.16 (a)); ``joints.png``
-joint positions and rates ((b), (c)); ``limits.png`` normalised force/torque and power with the +-1
-limit lines ((d), (e)); for a modulus path ``modulus.png``, M_d against M and their difference
-(figure 7.3 (a), (b)); with perception ``perceived.png``.
+interrupted run never leaves a half-written result. :func:`write` takes an off-line result,
+:func:`write_online` an on-line one (both values, never live solver objects); :func:`load` reads a
+folder back. The figures are drawn by :mod:`desdemona.figures`.
 """
 
 from __future__ import annotations
@@ -22,12 +18,10 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona import __version__
+from desdemona import __version__, figures
 from desdemona.simulate import Trajectory
 
 CHANNELS = ("wx", "wy", "wz", "fx", "fy", "fz")
-CHANNEL_LABELS = ("omega_x [rad/s]", "omega_y [rad/s]", "omega_z [rad/s]",
-                  "f_x [m/s^2]", "f_y [m/s^2]", "f_z [m/s^2]")
 
 
 class ReportError(RuntimeError):
@@ -74,7 +68,7 @@ def write(result, out_dir: str | Path, command: str | None = None, overwrite: bo
     """Write the result folder of an off-line :class:`~desdemona.offline.Result` atomically."""
     summary = {
         "command": command,
-        **run_description(result.path, result.config),
+        **run_description(result.path, result.model.config),
         "method": result.method,
         "metrics": {
             "rms_weighted": result.check.rms,
@@ -85,17 +79,17 @@ def write(result, out_dir: str | Path, command: str | None = None, overwrite: bo
             "check_grid_step_s": result.check.step,
             "limits_kept": result.check.passed,
             "worst_use": result.check.worst,
-            "worst_use_per_joint": {k: dict(zip(result.config.joint_names, map(float, v)))
+            "worst_use_per_joint": {k: dict(zip(result.model.config.joint_names, map(float, v)))
                                     for k, v in result.check.use.items()},
         },
         "solver": {"status": result.solution.status, "success": result.solution.success,
                    "iterations": result.solution.iterations, "cost": result.solution.cost,
                    "starts": [vars(s) for s in result.starts], "timings_s": result.timings},
         "options": _plain(result.options),
-        "parameters": result.params.to_dict(),
+        "parameters": result.model.params.to_dict(),
         "versions": versions(),
     }
-    return write_folder(result.trajectory, summary, result.config.joint_names, out_dir, overwrite)
+    return write_folder(result.trajectory, summary, result.model.config.joint_names, out_dir, overwrite)
 
 
 def write_folder(traj: Trajectory, summary: dict, joint_names, out_dir: str | Path, overwrite: bool = False,
@@ -123,7 +117,7 @@ def write_folder(traj: Trajectory, summary: dict, joint_names, out_dir: str | Pa
         (tmp / "summary.json").write_text(json.dumps(summary, indent=2, default=_json_default))
         scipy.io.savemat(tmp / "trajectory.mat", {n.replace("-", "_"): table[:, i] for i, n in enumerate(names)},
                          oned_as="column")
-        draw_figures(traj, summary, tmp)
+        figures.draw_result(traj, summary, tmp)
         if extra is not None:
             extra(tmp)
         if out.exists():
@@ -166,87 +160,6 @@ def load(out_dir: str | Path) -> tuple[Trajectory, dict]:
     return traj, summary
 
 
-def draw_figures(traj: Trajectory, summary: dict, out_dir: str | Path) -> list[Path]:
-    """Draw the result's figures into ``out_dir``; returns their paths."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    out = Path(out_dir)
-    joints = summary["configuration"]["free_joints"]
-    limits = summary["parameters"]["joints"]
-    title = f"{summary['path']['name']} on {summary['configuration']['name']}"
-    paths = []
-
-    def save(fig, name):
-        fig.suptitle(title)
-        fig.tight_layout()
-        fig.savefig(out / name, dpi=100)
-        plt.close(fig)
-        paths.append(out / name)
-
-    def channels(desired, actual, labels, style):
-        fig, axes = plt.subplots(3, 2, figsize=(11, 8), sharex=True)
-        for i, ax in enumerate(axes.T.ravel()):
-            ax.plot(traj.t, desired[:, i], "k-", lw=1.5, label=labels[0])
-            ax.plot(traj.t, actual[:, i], style, lw=1.2, label=labels[1])
-            ax.set_ylabel(CHANNEL_LABELS[i])
-            ax.grid(alpha=0.3)
-        axes[0, 0].legend(fontsize=8)
-        for ax in axes[-1]:
-            ax.set_xlabel("t [s]")
-        return fig
-
-    if traj.S_d is not None:
-        save(channels(traj.S_d, traj.S, ("S_d (desired)", "S (Desdemona)"), "C0--"), "path.png")
-    fig, axes = plt.subplots(len(joints), 2, figsize=(11, 2.2 * len(joints) + 1), sharex=True, squeeze=False)
-    for k, name in enumerate(joints):
-        revolute = limits[name]["kind"] == "revolute"
-        scale, unit = (180.0 / np.pi, "deg") if revolute else (1.0, "m")
-        axes[k, 0].plot(traj.t, traj.q[:, k] * scale)
-        axes[k, 0].set_ylabel(f"{name} [{unit}]")
-        if limits[name]["position"] is not None:
-            for bound in limits[name]["position"]:
-                axes[k, 0].axhline(bound * scale, color="r", lw=0.8, ls=":")
-        axes[k, 1].plot(traj.t, traj.qd[:, k] * scale)
-        axes[k, 1].set_ylabel(f"rate [{unit}/s]")
-        for bound in (-1, 1):
-            axes[k, 1].axhline(bound * limits[name]["velocity"] * scale, color="r", lw=0.8, ls=":")
-    for ax in axes.ravel():
-        ax.grid(alpha=0.3)
-    for ax in axes[-1]:
-        ax.set_xlabel("t [s]")
-    save(fig, "joints.png")
-    fig, axes = plt.subplots(2, 1, figsize=(10, 6), sharex=True)
-    for k, name in enumerate(joints):
-        axes[0].plot(traj.t, traj.tau[:, k] / limits[name]["effort"], label=name)
-        axes[1].plot(traj.t, traj.power[:, k] / limits[name]["power"], label=name)
-    for ax, label in zip(axes, ("force / max", "power / max")):
-        ax.axhline(1, color="r", lw=0.8, ls=":")
-        ax.axhline(-1, color="r", lw=0.8, ls=":")
-        ax.set_ylabel(label)
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=8, loc="upper right")
-    axes[-1].set_xlabel("t [s]")
-    save(fig, "limits.png")
-    if traj.S_d is None or summary["configuration"]["name"] == "dfs":
-        fig, axes = plt.subplots(2, 1, figsize=(10, 6), sharex=True)
-        axes[0].plot(traj.t, traj.M_d, "k-", label="M_d (desired)")
-        axes[0].plot(traj.t, traj.M, "C0--", label="M (Desdemona)")
-        axes[0].set_ylabel("modulus [m/s^2]")
-        axes[1].plot(traj.t, traj.M_d - traj.M, "C0")
-        axes[1].set_ylabel("M_d - M [m/s^2]")
-        axes[1].set_xlabel("t [s]")
-        for ax in axes:
-            ax.grid(alpha=0.3)
-        axes[0].legend(fontsize=8)
-        save(fig, "modulus.png")
-    if traj.S_perc is not None:
-        save(channels(traj.S_d_perc, traj.S_perc, ("perceived S_d", "perceived S"), "C1--"), "perceived.png")
-    return paths
-
-
 def _plain(value):
     if hasattr(value, "__dataclass_fields__"):
         return {k: _plain(getattr(value, k)) for k in value.__dataclass_fields__}
@@ -267,60 +180,57 @@ def command_line() -> str:
     return " ".join(["desdemona", *sys.argv[1:]])
 
 
-def write_online(run, controller, path, traj: Trajectory, result_check, summary: dict, out_dir: str | Path,
-                 classical: Trajectory | None = None, overwrite: bool = False) -> Path:
-    """The result folder of a closed-loop run: the usual files plus ``cycles.csv`` (per-cycle compute
-    time, source of the command, fallback reason), ``online.png`` (like thesis figures 7.5/7.6) and
-    ``compute_time.png`` (histogram of compute time per cycle against the deadline)."""
+
+
+def trajectory_dataframe(traj: Trajectory, joint_names):
+    """A pandas DataFrame of a trajectory with the columns of trajectory.csv, indexed by t [s].
+
+    pandas is an optional extra (``pip install 'desdemona[dataframe]'``), not a dependency.
+    """
+    try:
+        import pandas
+    except ImportError:
+        raise ImportError("a DataFrame needs pandas: pip install 'desdemona[dataframe]'") from None
+    names, table = trajectory_table(traj, joint_names)
+    return pandas.DataFrame(table[:, 1:], index=pandas.Index(table[:, 0], name="t"), columns=names[1:])
+
+
+def online_summary(result, command: str | None = None) -> dict:
+    """The summary.json of an on-line :class:`~desdemona.online.OnlineResult`."""
+    mpc, c = result.options.mpc, result.check
+    times, sources = result.loop.compute_times, result.loop.sources
+    baseline = result.baseline_check
+    return {
+        "command": command,
+        **run_description(result.path, result.model.config),
+        "method": f"mpc ({mpc.method}), predictor {result.options.predictor}, horizon {mpc.horizon:g} s, "
+                  f"step {mpc.step:g} s",
+        "metrics": {"rms_weighted": c.rms, "rms_modulus": c.rms_modulus,
+                    "rms_modulus_classical_loop": None if baseline is None else baseline.rms_modulus,
+                    "limits_kept": c.passed, "worst_use": c.worst, "check_grid_step_s": c.step},
+        "cycles": {"count": len(times), "deadline_s": result.deadline,
+                   "compute_time_s": {"median": float(np.median(times)), "p99": float(np.percentile(times, 99)),
+                                      "max": float(times.max())},
+                   "sources": {s: sources.count(s) for s in ("mpc", "shifted", "brake")},
+                   "deadline_misses": int(np.sum(times > result.deadline))},
+        "options": _plain(result.options),
+        "parameters": result.model.params.to_dict(),
+        "versions": versions(),
+    }
+
+
+def write_online(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False) -> Path:
+    """The result folder of an on-line :class:`~desdemona.online.OnlineResult`: the usual files plus
+    ``cycles.csv`` (per-cycle compute time, source of the command, fallback reason), ``online.png``
+    (like thesis figures 7.5/7.6) and ``compute_time.png`` (compute time per cycle against the deadline)."""
+    summary = online_summary(result, command)
+    loop = result.loop
 
     def extra(folder: Path) -> None:
-        import matplotlib
-
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-
         with open(folder / "cycles.csv", "w") as fh:
             fh.write("t,compute_time_s,source,reason\n")
-            for t, c, s, r in zip(run.t_nodes, run.compute_times, run.sources, run.reasons):
+            for t, c, s, r in zip(loop.plan.t_nodes, loop.compute_times, loop.sources, loop.reasons):
                 fh.write(f"{t:.6g},{c:.6g},{s},\"{r}\"\n")
-        fig, axes = plt.subplots(3, 2, figsize=(11, 9), sharex=True)
-        axes[0, 0].plot(traj.t, traj.M_d, "k-", label="M_d")
-        axes[0, 0].plot(traj.t, traj.M, "C0--", label="M (MPC)")
-        axes[1, 0].plot(traj.t, traj.M_d - traj.M, "C0", label="M_d - M (MPC)")
-        if classical is not None:
-            axes[0, 0].plot(classical.t, classical.M, "C3:", label="M_org (classical loop)")
-            axes[1, 0].plot(classical.t, classical.M_d - classical.M, "C3:", label="M_d - M_org")
-        axes[0, 0].set_ylabel("modulus [m/s^2]")
-        axes[1, 0].set_ylabel("error [m/s^2]")
-        axes[0, 1].plot(traj.t, traj.S[:, 3], label="S_x")
-        axes[1, 1].plot(traj.t, traj.S[:, 4], label="S_y")
-        axes[0, 1].set_ylabel("S_x [m/s^2]")
-        axes[1, 1].set_ylabel("S_y [m/s^2]")
-        lim = controller.model.limits
-        axes[2, 0].plot(traj.t, traj.tau / lim["effort"])
-        axes[2, 0].set_ylabel("force / max")
-        axes[2, 1].plot(traj.t, traj.power / lim["power"])
-        axes[2, 1].set_ylabel("power / max")
-        for ax in axes.ravel():
-            ax.grid(alpha=0.3)
-            if ax.get_legend_handles_labels()[0]:
-                ax.legend(fontsize=8)
-        for ax in axes[2]:
-            ax.axhline(1, color="r", lw=0.8, ls=":")
-            ax.axhline(-1, color="r", lw=0.8, ls=":")
-            ax.set_xlabel("t [s]")
-        fig.suptitle(f"{path.name} on-line, {controller.model.config.name}")
-        fig.tight_layout()
-        fig.savefig(folder / "online.png", dpi=100)
-        plt.close(fig)
-        fig, ax = plt.subplots(figsize=(8, 4))
-        ax.hist(run.compute_times * 1e3, bins=50)
-        ax.axvline(controller.deadline * 1e3, color="r", ls=":", label=f"deadline {controller.deadline * 1e3:g} ms")
-        ax.set_xlabel("compute time per cycle [ms]")
-        ax.set_ylabel("cycles")
-        ax.legend()
-        fig.tight_layout()
-        fig.savefig(folder / "compute_time.png", dpi=100)
-        plt.close(fig)
+        figures.draw_online(result, folder)
 
-    return write_folder(traj, summary, controller.model.config.joint_names, out_dir, overwrite, extra)
+    return write_folder(result.trajectory, summary, result.model.config.joint_names, out_dir, overwrite, extra)

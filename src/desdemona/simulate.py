@@ -1,8 +1,8 @@
 """Plant integration and the independent limit check.
 
 Whatever an optimiser or controller returns is re-simulated here, independently of how it was
-computed: the joint accelerations are integrated with NumPy on a grid ``fine`` times finer than the
-optimiser's, every limit of eq. 3.3-3.5 is evaluated on that grid, and S (and the perceived S) is
+computed: its :class:`~desdemona.plan.Plan` is evaluated with NumPy on a grid ``fine`` times finer
+than the optimiser's, every limit of eq. 3.3-3.5 is evaluated on that grid, and S (and the perceived S) is
 compared with S_d there. A trajectory that uses more than 1 + 1e-6 of any limit is an error
 (:class:`LimitViolation`), never a result.
 """
@@ -14,8 +14,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from desdemona import perception as perception_models
 from desdemona.model import Model
+from desdemona.perception import VestibularModel
+from desdemona.plan import Plan, advance
 from desdemona.profiles import DesiredPath
 
 TOLERANCE = 1e-6
@@ -91,24 +92,6 @@ class LimitCheck:
         return "; ".join(parts) if parts else "none"
 
 
-def integrate(t_nodes, q0, qd0, u, times) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Joint positions, rates and accelerations at ``times`` for accelerations ``u`` held per interval.
-
-    t_nodes : (N + 1,) control grid; q0, qd0 : (n,) initial state; u : (N, n).
-    Each time belongs to the interval that starts at or before it (the last node to the last
-    interval). The states at the nodes are accumulated exactly, then each time is reached from its
-    interval's start: the double integral of a piecewise-constant acceleration.
-    """
-    t_nodes, u = np.asarray(t_nodes, float), np.asarray(u, float)
-    h = np.diff(t_nodes)[:, None]
-    qd_nodes = np.vstack([qd0, qd0 + np.cumsum(u * h, axis=0)])
-    q_nodes = np.vstack([q0, q0 + np.cumsum(qd_nodes[:-1] * h + 0.5 * u * h * h, axis=0)])
-    k = np.clip(np.searchsorted(t_nodes, times, side="right") - 1, 0, len(u) - 1)
-    dt = (np.asarray(times, float) - t_nodes[k])[:, None]
-    qdd = u[k]
-    return q_nodes[k] + qd_nodes[k] * dt + 0.5 * qdd * dt * dt, qd_nodes[k] + qdd * dt, qdd
-
-
 def fine_grid(t_nodes, step: float) -> np.ndarray:
     """Times from t_nodes[0] to t_nodes[-1] at ``step`` or finer, containing every node."""
     pieces = []
@@ -118,49 +101,55 @@ def fine_grid(t_nodes, step: float) -> np.ndarray:
     return np.concatenate(pieces + [np.asarray(t_nodes[-1:])])
 
 
-def evaluate(model: Model, path: DesiredPath, t, q, qd, qdd, perception: str | None = None) -> Trajectory:
-    """Everything along a trajectory of the free joints: torques, power, S, and what S_d asks there."""
+def evaluate(model: Model, path: DesiredPath, t, q, qd, qdd, perception: VestibularModel | None = None) -> Trajectory:
+    """Everything along a trajectory of the free joints: torques, power, S, and what S_d asks there.
+
+    perception : a vestibular model through which S and S_d are also perceived (full paths only).
+    """
     S = model.S(q, qd, qdd)
     tau = model.tau(q, qd, qdd)
     M = np.linalg.norm(S[:, 3:], axis=1)
     S_d = path.sample(t) if path.S_d is not None else None
     S_perc = S_d_perc = None
-    if perception and S_d is not None:
-        vestibular = perception_models.get_model(perception)
+    if perception is not None and S_d is not None:
         # t is uniform away from the last point; the filters hold each sample over one step
         step = float(np.median(np.diff(t)))
-        S_perc = vestibular.perceive(S, step)
-        S_d_perc = vestibular.perceive(S_d, step)
+        S_perc = perception.perceive(S, step)
+        S_d_perc = perception.perceive(S_d, step)
     return Trajectory(t=np.asarray(t, float), q=q, qd=qd, qdd=qdd, tau=tau, power=tau * qd, S=S, S_d=S_d,
                       M=M, M_d=path.sample_modulus(t), S_perc=S_perc, S_d_perc=S_d_perc)
+
+
+def evaluate_plan(model: Model, path: DesiredPath, plan: Plan, times,
+                  perception: VestibularModel | None = None) -> Trajectory:
+    """:func:`evaluate` along a plan at ``times`` (K,) [s]."""
+    return evaluate(model, path, times, *plan.at(times), perception)
 
 
 def limit_use(model: Model, traj: Trajectory) -> dict[str, np.ndarray]:
     """Worst use of each limit per free joint over a trajectory (1 = at the limit)."""
     lim = model.limits
-    lo, hi = lim["position_min"], lim["position_max"]
+    lo, hi = lim.position_min, lim.position_max
     bounded = np.isfinite(lo) & np.isfinite(hi)
     mid = 0.5 * (np.where(bounded, lo, 0.0) + np.where(bounded, hi, 0.0))
     half = np.where(bounded, 0.5 * (np.where(bounded, hi, 1.0) - np.where(bounded, lo, -1.0)), np.inf)
     return {
         "position": np.max(np.abs(traj.q - mid) / half, axis=0),
-        "velocity": np.max(np.abs(traj.qd) / lim["velocity"], axis=0),
-        "acceleration": np.max(np.abs(traj.qdd) / lim["acceleration"], axis=0),
-        "effort": np.max(np.abs(traj.tau) / lim["effort"], axis=0),
-        "power": np.max(np.abs(traj.power) / lim["power"], axis=0),
+        "velocity": np.max(np.abs(traj.qd) / lim.velocity, axis=0),
+        "acceleration": np.max(np.abs(traj.qdd) / lim.acceleration, axis=0),
+        "effort": np.max(np.abs(traj.tau) / lim.effort, axis=0),
+        "power": np.max(np.abs(traj.power) / lim.power, axis=0),
     }
 
 
-def check(model: Model, path: DesiredPath, t_nodes, q0, qd0, u, step: float, fine: int = 10,
-          weights=None, perception: str | None = None) -> tuple[LimitCheck, Trajectory]:
-    """The independent check: re-integrate ``u`` on a grid ``fine`` times finer than ``step``.
+def check(model: Model, path: DesiredPath, plan: Plan, step: float, fine: int = 10,
+          weights=None, perception: VestibularModel | None = None) -> tuple[LimitCheck, Trajectory]:
+    """The independent check: re-integrate a plan on a grid ``fine`` times finer than ``step``.
 
     step : the optimiser's finest grid (its sub-step) [s]; weights : diagonal of Q, default the path's.
     Returns the check and the fine-grid trajectory.
     """
-    t = fine_grid(np.asarray(t_nodes, float), step / fine)
-    q, qd, qdd = integrate(t_nodes, q0, qd0, u, t)
-    traj = evaluate(model, path, t, q, qd, qdd, perception)
+    traj = evaluate_plan(model, path, plan, fine_grid(plan.t_nodes, step / fine), perception)
     use = limit_use(model, traj)
     rms_modulus = float(np.sqrt(np.mean((traj.M - traj.M_d) ** 2)))
     w = np.asarray(weights if weights is not None else path.weights, float)
@@ -181,12 +170,10 @@ def check(model: Model, path: DesiredPath, t_nodes, q0, qd0, u, step: float, fin
 
 @dataclass(frozen=True, eq=False)
 class ClosedLoop:
-    """A closed-loop run: the commands, their sources and compute times, on the control grid."""
+    """A closed-loop run: the plan the plant executed, and per control cycle the source of the command,
+    the compute time [s] and the reason for any fallback."""
 
-    t_nodes: np.ndarray
-    q0: np.ndarray
-    qd0: np.ndarray
-    u: np.ndarray
+    plan: Plan
     sources: tuple[str, ...]
     compute_times: np.ndarray
     reasons: tuple[str, ...] = field(default=())
@@ -214,6 +201,6 @@ def closed_loop(controller, path: DesiredPath, predictor, q0=None, qd0=None,
         sources.append(command.source)
         times.append(command.compute_time)
         reasons.append(command.reason)
-        q, qd = q + qd * h + 0.5 * command.qdd * h * h, qd + command.qdd * h
-    return ClosedLoop(np.arange(steps + 1) * h, start_q, start_qd, np.array(u), tuple(sources), np.array(times),
-                      tuple(reasons))
+        q, qd = advance(q, qd, command.qdd, h)
+    return ClosedLoop(Plan(np.arange(steps + 1) * h, start_q, start_qd, np.array(u)), tuple(sources),
+                      np.array(times), tuple(reasons))

@@ -1,0 +1,184 @@
+"""Figures: every PNG that desdemona draws, in one module.
+
+- :func:`draw_result`: the figures of a result folder: ``path.png`` S against S_d per channel (thesis
+  figures 5.7-5.16 (a)); ``joints.png`` joint positions and rates ((b), (c)); ``limits.png``
+  normalised force/torque and power with the +-1 limit lines ((d), (e)); for a modulus path
+  ``modulus.png``, M_d against M and their difference (figure 7.3 (a), (b)); with perception
+  ``perceived.png``.
+- :func:`draw_online`: ``online.png`` (like thesis figures 7.5/7.6, with the classical loop) and
+  ``compute_time.png`` (compute time per cycle against the deadline).
+- :func:`plot_bode`: Bode diagrams of a vestibular model (thesis figures 6.4, 6.6).
+
+Figures are drawn with matplotlib's object interface (:class:`matplotlib.figure.Figure`), which needs
+no display and leaves matplotlib's global backend as the caller set it. matplotlib is imported only
+when a figure is drawn.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+CHANNEL_LABELS = ("omega_x [rad/s]", "omega_y [rad/s]", "omega_z [rad/s]",
+                  "f_x [m/s^2]", "f_y [m/s^2]", "f_z [m/s^2]")
+
+
+def _figure(**kw):
+    from matplotlib.figure import Figure
+
+    return Figure(**kw)
+
+
+def _save(fig, path: Path, title: str | None = None, dpi: int = 100) -> Path:
+    if title:
+        fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(path, dpi=dpi)
+    return path
+
+
+def _limit_lines(ax) -> None:
+    for bound in (-1, 1):
+        ax.axhline(bound, color="r", lw=0.8, ls=":")
+
+
+def draw_result(traj, summary: dict, out_dir: str | Path) -> list[Path]:
+    """Draw a result's figures into ``out_dir`` from its trajectory and summary; returns their paths.
+
+    traj : a :class:`desdemona.simulate.Trajectory`; summary : the result's summary.json as a dict.
+    """
+    out = Path(out_dir)
+    joints = summary["configuration"]["free_joints"]
+    limits = summary["parameters"]["joints"]
+    title = f"{summary['path']['name']} on {summary['configuration']['name']}"
+    paths = []
+
+    def channels(desired, actual, labels, style):
+        fig = _figure(figsize=(11, 8))
+        axes = fig.subplots(3, 2, sharex=True)
+        for i, ax in enumerate(axes.T.ravel()):
+            ax.plot(traj.t, desired[:, i], "k-", lw=1.5, label=labels[0])
+            ax.plot(traj.t, actual[:, i], style, lw=1.2, label=labels[1])
+            ax.set_ylabel(CHANNEL_LABELS[i])
+            ax.grid(alpha=0.3)
+        axes[0, 0].legend(fontsize=8)
+        for ax in axes[-1]:
+            ax.set_xlabel("t [s]")
+        return fig
+
+    if traj.S_d is not None:
+        paths.append(_save(channels(traj.S_d, traj.S, ("S_d (desired)", "S (Desdemona)"), "C0--"),
+                           out / "path.png", title))
+    fig = _figure(figsize=(11, 2.2 * len(joints) + 1))
+    axes = fig.subplots(len(joints), 2, sharex=True, squeeze=False)
+    for k, name in enumerate(joints):
+        revolute = limits[name]["kind"] == "revolute"
+        scale, unit = (180.0 / np.pi, "deg") if revolute else (1.0, "m")
+        axes[k, 0].plot(traj.t, traj.q[:, k] * scale)
+        axes[k, 0].set_ylabel(f"{name} [{unit}]")
+        if limits[name]["position"] is not None:
+            for bound in limits[name]["position"]:
+                axes[k, 0].axhline(bound * scale, color="r", lw=0.8, ls=":")
+        axes[k, 1].plot(traj.t, traj.qd[:, k] * scale)
+        axes[k, 1].set_ylabel(f"rate [{unit}/s]")
+        for bound in (-1, 1):
+            axes[k, 1].axhline(bound * limits[name]["velocity"] * scale, color="r", lw=0.8, ls=":")
+    for ax in axes.ravel():
+        ax.grid(alpha=0.3)
+    for ax in axes[-1]:
+        ax.set_xlabel("t [s]")
+    paths.append(_save(fig, out / "joints.png", title))
+    fig = _figure(figsize=(10, 6))
+    axes = fig.subplots(2, 1, sharex=True)
+    for k, name in enumerate(joints):
+        axes[0].plot(traj.t, traj.tau[:, k] / limits[name]["effort"], label=name)
+        axes[1].plot(traj.t, traj.power[:, k] / limits[name]["power"], label=name)
+    for ax, label in zip(axes, ("force / max", "power / max")):
+        _limit_lines(ax)
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8, loc="upper right")
+    axes[-1].set_xlabel("t [s]")
+    paths.append(_save(fig, out / "limits.png", title))
+    if traj.S_d is None or summary["configuration"]["name"] == "dfs":
+        fig = _figure(figsize=(10, 6))
+        axes = fig.subplots(2, 1, sharex=True)
+        axes[0].plot(traj.t, traj.M_d, "k-", label="M_d (desired)")
+        axes[0].plot(traj.t, traj.M, "C0--", label="M (Desdemona)")
+        axes[0].set_ylabel("modulus [m/s^2]")
+        axes[1].plot(traj.t, traj.M_d - traj.M, "C0")
+        axes[1].set_ylabel("M_d - M [m/s^2]")
+        axes[1].set_xlabel("t [s]")
+        for ax in axes:
+            ax.grid(alpha=0.3)
+        axes[0].legend(fontsize=8)
+        paths.append(_save(fig, out / "modulus.png", title))
+    if traj.S_perc is not None:
+        paths.append(_save(channels(traj.S_d_perc, traj.S_perc, ("perceived S_d", "perceived S"), "C1--"),
+                           out / "perceived.png", title))
+    return paths
+
+
+def draw_online(result, out_dir: str | Path) -> list[Path]:
+    """``online.png`` and ``compute_time.png`` of an :class:`desdemona.online.OnlineResult`."""
+    out = Path(out_dir)
+    traj, classical, lim = result.trajectory, result.baseline, result.model.limits
+    fig = _figure(figsize=(11, 9))
+    axes = fig.subplots(3, 2, sharex=True)
+    axes[0, 0].plot(traj.t, traj.M_d, "k-", label="M_d")
+    axes[0, 0].plot(traj.t, traj.M, "C0--", label="M (MPC)")
+    axes[1, 0].plot(traj.t, traj.M_d - traj.M, "C0", label="M_d - M (MPC)")
+    if classical is not None:
+        axes[0, 0].plot(classical.t, classical.M, "C3:", label="M_org (classical loop)")
+        axes[1, 0].plot(classical.t, classical.M_d - classical.M, "C3:", label="M_d - M_org")
+    axes[0, 0].set_ylabel("modulus [m/s^2]")
+    axes[1, 0].set_ylabel("error [m/s^2]")
+    axes[0, 1].plot(traj.t, traj.S[:, 3], label="S_x")
+    axes[1, 1].plot(traj.t, traj.S[:, 4], label="S_y")
+    axes[0, 1].set_ylabel("S_x [m/s^2]")
+    axes[1, 1].set_ylabel("S_y [m/s^2]")
+    axes[2, 0].plot(traj.t, traj.tau / lim.effort)
+    axes[2, 0].set_ylabel("force / max")
+    axes[2, 1].plot(traj.t, traj.power / lim.power)
+    axes[2, 1].set_ylabel("power / max")
+    for ax in axes.ravel():
+        ax.grid(alpha=0.3)
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(fontsize=8)
+    for ax in axes[2]:
+        _limit_lines(ax)
+        ax.set_xlabel("t [s]")
+    paths = [_save(fig, out / "online.png", f"{result.path.name} on-line, {result.model.config.name}")]
+    fig = _figure(figsize=(8, 4))
+    ax = fig.subplots()
+    ax.hist(result.loop.compute_times * 1e3, bins=50)
+    ax.axvline(result.deadline * 1e3, color="r", ls=":", label=f"deadline {result.deadline * 1e3:g} ms")
+    ax.set_xlabel("compute time per cycle [ms]")
+    ax.set_ylabel("cycles")
+    ax.legend()
+    paths.append(_save(fig, out / "compute_time.png"))
+    return paths
+
+
+def plot_bode(model, path: str | Path, w=None) -> Path:
+    """Bode diagrams of a :class:`desdemona.perception.VestibularModel`'s canal and otolith channels to
+    a PNG (like thesis figures 6.4, 6.6). w : frequencies [rad/s], default 1e-3 to 1e3."""
+    w = np.logspace(-3, 3, 600) if w is None else np.asarray(w)
+    fig = _figure(figsize=(11, 7))
+    axes = fig.subplots(2, 2, sharex=True)
+    for col, (title, channels) in enumerate((("semicircular canals (input: angular velocity)",
+                                              model.channels[:3]),
+                                             ("otoliths (input: specific force)", model.channels[3:]))):
+        for ch in channels:
+            h = ch.frequency_response(w)
+            axes[0, col].semilogx(w, 20 * np.log10(np.abs(h)), label=ch.name)
+            axes[1, col].semilogx(w, np.degrees(np.unwrap(np.angle(h))), label=ch.name)
+        axes[0, col].set_title(f"{model.name}: {title}")
+        axes[0, col].set_ylabel("magnitude [dB]")
+        axes[1, col].set_ylabel("phase [deg]")
+        axes[1, col].set_xlabel("frequency [rad/s]")
+        for ax in axes[:, col]:
+            ax.grid(True, which="both", alpha=0.3)
+        axes[0, col].legend(fontsize=8)
+    return _save(fig, Path(path), dpi=110)
