@@ -12,10 +12,11 @@ Definitions (S, S_d : (K, 6) on a time grid t : (K,) [s]; channels wx, wy, wz [r
 - RMS: ``sqrt(mean_k (S - S_d)^2)`` per channel (eq. 5.1 with Q = I, per channel).
 - Correlation: Pearson's r of S with S_d per channel; undefined (NaN, ``None`` in JSON) where either
   is constant, since r divides by both standard deviations.
-- Lag: the delay L [s] maximising the cross-correlation ``c(L) = sum_k (S[k] - mean S)(S_d[k - L/dt] -
-  mean S_d)`` within ``|L| <= window`` (default :data:`LAG_WINDOW`, 2 s, clipped to the path's
-  length), refined between samples by the parabola through the peak and its neighbours; positive when
-  S lags S_d. Undefined where the correlation is.
+- Lag: the delay L [s] maximising the cross-correlation of S with S_d, as Pearson's r of the
+  overlapping samples (S[k], S_d[k - L/dt]) at each whole-sample shift, within ``|L| <= window``
+  (default :data:`LAG_WINDOW`, 2 s, at most half the path's length), refined between samples by the
+  parabola through the peak and its neighbours; positive when S lags S_d. Undefined where the
+  correlation is.
 - Perceived error: the vestibular model (default the thesis', :func:`perception.thesis_model`) applied
   to S - S_d, which equals perceived S minus perceived S_d because the filters are linear and start in
   the steady state of their first input. Its RMS per channel, and the share of time [%] in which its
@@ -89,30 +90,54 @@ def step_of(t) -> float:
 
 
 def lag(t, S, S_d, window: float = LAG_WINDOW, refine: bool = True) -> np.ndarray:
-    """Delay [s] of each column of S (K, m) behind S_d (K, m) that maximises their cross-correlation.
+    """Delay [s] of each column of S (K, m) behind S_d (K, m) that maximises their correlation.
 
-    t : (K,) uniform grid [s]; window : largest |delay| searched [s]; refine : place the peak between
-    samples by a parabola through the peak and its two neighbours (a peak on the window's edge is
-    left as it is). Positive when S lags S_d (S[k] ~ S_d[k - L/dt]); NaN where the correlation is.
+    t : (K,) uniform grid [s]; window : largest |delay| searched [s], at most half the path's length.
+    At each whole-sample shift L the correlation is Pearson's r of the overlapping parts (S[k], S_d[k - L]),
+    so a pure delay gives r = 1 at its own shift, not biased towards 0 by the shrinking overlap;
+    refine : place the peak between samples by the parabola through it and its two neighbours (not on
+    the window's edge). Positive when S lags S_d (S[k] ~ S_d[k - L]); NaN where the correlation is.
     """
     dt = step_of(t)
     S, S_d = np.atleast_2d(np.asarray(S, float).T).T, np.atleast_2d(np.asarray(S_d, float).T).T
     K = len(S)
-    lags = scipy.signal.correlation_lags(K, K)
-    inside = np.abs(lags) <= min(K - 1, int(math.floor(window / dt + 1e-9)))
-    lags = lags[inside]
+    reach = min((K - 1) // 2, int(math.floor(window / dt + 1e-9)))
+    shifts = np.arange(-reach, reach + 1)
     defined = _varies(S) & _varies(S_d)
     out = np.full(S.shape[1], np.nan)
     for j in np.flatnonzero(defined):
-        c = scipy.signal.correlate(S[:, j] - S[:, j].mean(), S_d[:, j] - S_d[:, j].mean())[inside]
-        i = int(np.argmax(c))
-        shift = 0.0
-        if refine and 0 < i < len(c) - 1:
-            curvature = c[i - 1] - 2.0 * c[i] + c[i + 1]
+        r = _shifted_correlation(S[:, j], S_d[:, j], shifts)
+        i = int(np.argmax(r))
+        offset = 0.0
+        if refine and 0 < i < len(r) - 1 and np.all(np.isfinite(r[i - 1:i + 2])):
+            curvature = r[i - 1] - 2.0 * r[i] + r[i + 1]
             if curvature < 0.0:
-                shift = 0.5 * (c[i - 1] - c[i + 1]) / curvature
-        out[j] = (lags[i] + shift) * dt
+                offset = 0.5 * (r[i - 1] - r[i + 1]) / curvature
+        out[j] = (shifts[i] + offset) * dt
     return out
+
+
+def _shifted_correlation(x, y, shifts) -> np.ndarray:
+    """Pearson's r of (x[k], y[k - L]) over their overlap, for each shift L in ``shifts`` (consecutive
+    integers); -inf where a part is constant. Sums over overlaps from one FFT correlation and prefix sums."""
+    K = len(x)
+    x, y = x - x.mean(), y - y.mean()  # r does not change; the sums lose less to rounding
+    full = scipy.signal.correlate(x, y)  # full[K - 1 + L] = sum_k x[k] y[k - L]
+    sxy = full[K - 1 + shifts]
+    n = K - np.abs(shifts)
+    x0, y0 = np.maximum(shifts, 0), np.maximum(-shifts, 0)  # first index of each overlap
+
+    def moments(v, start):
+        c1, c2 = np.r_[0.0, np.cumsum(v)], np.r_[0.0, np.cumsum(v * v)]
+        s1 = c1[start + n] - c1[start]
+        return s1, c2[start + n] - c2[start] - s1 * s1 / n
+
+    sx, vx = moments(x, x0)
+    sy, vy = moments(y, y0)
+    floor = 1e-12 * K * max(np.mean(x * x), np.mean(y * y))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        r = (sxy - sx * sy / n) / np.sqrt(vx * vy)
+    return np.where((vx > floor) & (vy > floor), r, -np.inf)
 
 
 def perceived_difference(S, S_d, dt: float, vestibular: perception.VestibularModel | None = None) -> np.ndarray:
