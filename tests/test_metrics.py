@@ -154,3 +154,53 @@ def test_modulus_and_joint_rates_at_start():
     assert summary["channels"]["rms"] is None
     assert summary["joints"]["qd_start"]["track"] == qd[0, 1]
     assert "RMS(M - M_d)" in m.headline()
+
+
+@pytest.fixture(scope="module")
+def two_results(tmp_path_factory):
+    """Two small result folders on the same path: our optimiser at two control steps."""
+    from desdemona.cli import main
+
+    root = tmp_path_factory.mktemp("results")
+    folders = []
+    for h_u in ("0.1", "0.25"):
+        out = root / f"h{h_u}"
+        assert main(["optimize", "cosine", "--config", "yaw-track", "--base", "thesis-toy", "--h-u", h_u,
+                     "--starts", "1", "--out", str(out)]) == 0
+        folders.append(out)
+    return folders
+
+
+def test_compare_two_folders(two_results, tmp_path, capsys):
+    from desdemona import report
+    from desdemona.cli import main
+
+    capsys.readouterr()
+    out = tmp_path / "cmp"
+    assert main(["compare", *map(str, two_results), "--out", str(out)]) == 0
+    printed = capsys.readouterr().out
+    header = printed.splitlines()[0].split()
+    assert header == ["metric", "h0.1", "h0.25"]
+    assert "above_threshold_pct fy [%]" in printed and "sign_changes_per_s yaw [1/s]" in printed
+    for name in ("compare.csv", "compare_path.png", "compare_felt.png", "compare_qdd.png"):
+        assert (out / name).is_file()
+    rows = {line.split(",")[0]: line.split(",") for line in (out / "compare.csv").read_text().splitlines()}
+    assert rows["metric"] == ["metric", "unit", "h0.1", "h0.25"]
+    assert rows["configuration"][2:] == ["yaw-track", "yaw-track"]
+    # the table holds the metrics of each folder's own trajectory
+    traj, summary = report.load(two_results[1])
+    expected = metrics.of_trajectory(traj, summary["configuration"]["free_joints"])
+    assert float(rows["rms fy"][3]) == pytest.approx(expected.rms[4])
+    assert rows["correlation fz"][2:] == ["", ""]  # f_z_d = g: no correlation to speak of
+
+
+def test_compare_rejects_a_folder_that_is_not_a_result(two_results, tmp_path, capsys):
+    from desdemona.cli import main
+
+    (tmp_path / "summary.json").write_text("{}")
+    (tmp_path / "trajectory.csv").write_text("# units\n# t,x\n0,1\n")
+    for bad in (tmp_path, tmp_path / "missing"):
+        capsys.readouterr()
+        assert main(["compare", str(two_results[0]), str(bad)]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and str(bad) in err

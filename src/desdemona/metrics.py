@@ -247,13 +247,13 @@ class Metrics:
 
     def rows(self) -> list[tuple[str, str, float | None]]:
         """The metrics flattened for a table: (name, unit, value) per channel, joint and modulus."""
-        joint_units = _joint_units(self.joints)
+        per_joint = joint_units(self.joints)
         units = {"rms": CHANNEL_UNITS, "correlation": ("",) * 6, "lag_s": ("s",) * 6,
                  "perceived_rms": CHANNEL_UNITS, "above_threshold_pct": ("%",) * 6,
                  "peak_false_cue": CHANNEL_UNITS,
-                 "jerk_peak": [u + "/s^3" for u in joint_units], "jerk_rms": [u + "/s^3" for u in joint_units],
-                 "qdd_variation_per_s": [u + "/s^3" for u in joint_units],
-                 "sign_changes_per_s": ("1/s",) * len(self.joints), "qd_start": [u + "/s" for u in joint_units]}
+                 "jerk_peak": [u + "/s^3" for u in per_joint], "jerk_rms": [u + "/s^3" for u in per_joint],
+                 "qdd_variation_per_s": [u + "/s^3" for u in per_joint],
+                 "sign_changes_per_s": ("1/s",) * len(self.joints), "qd_start": [u + "/s" for u in per_joint]}
         rows = []
         for name in self.CHANNEL_FIELDS:
             values = getattr(self, name)
@@ -285,7 +285,7 @@ class Metrics:
             k = int(np.argmax(self.sign_changes_per_s))
             parts.append(f"max {self.sign_changes_per_s[k]:.3g} acceleration sign changes/s ({self.joints[k]})")
             k = int(np.argmax(np.abs(self.qd_start)))
-            unit = _joint_units(self.joints)[k]
+            unit = joint_units(self.joints)[k]
             parts.append(f"largest rate at start {abs(self.qd_start[k]):.3g} {unit}/s ({self.joints[k]})")
         return ", ".join(parts)
 
@@ -330,7 +330,7 @@ def _plain(value) -> float | None:
     return None if value is None or not math.isfinite(value) else float(value)
 
 
-def _joint_units(joints) -> list[str]:
+def joint_units(joints) -> list[str]:
     """'rad' or 'm' per joint name, from the machine's chain (eq. A.7): a joint's kind is its name's."""
     from desdemona.params import default_params
 
