@@ -74,28 +74,35 @@ def rows(entries) -> list[tuple[str, str, list]]:
     """
     table = [(name, "", [_info(e.summary, keys) for e in entries]) for name, keys in INFO_ROWS]
     per_entry = [{name: (unit, value) for name, unit, value in e.metrics.rows()} for e in entries]
-    order = list(dict.fromkeys(name for values in per_entry for name in values))
+    groups = (*metrics.Metrics.CHANNEL_FIELDS, *metrics.Metrics.JOINT_FIELDS, "modulus")
+    order = sorted(dict.fromkeys(name for values in per_entry for name in values),
+                   key=lambda name: groups.index(name.split()[0]))  # stable: joints in their order
     for name in order:
         unit = next(values[name][0] for values in per_entry if name in values)
         table.append((name, unit, [values[name][1] if name in values else None for values in per_entry]))
     return table
 
 
-def _cell(value) -> str:
+def _cell(value, width: int = 28) -> str:
+    """A table cell: 4 significant digits, "-" for None, a long text shortened (compare.csv has it whole)."""
     if value is None:
         return "-"
     if isinstance(value, str):
-        return value
+        return value if len(value) <= width else value[:width - 3] + "..."
     return f"{value:.4g}"
 
 
 def table(entries) -> str:
     """The metrics of all entries as a plain-text table: rows = metrics, columns = folders."""
-    lines = [[f"{name} [{unit}]" if unit else name] + [_cell(v) for v in values] for name, unit, values in rows(entries)]
+    lines = [[f"{name} [{unit}]" if unit else name] + [_cell(v) for v in values]
+             for name, unit, values in rows(entries)]
     header = ["metric"] + [e.label for e in entries]
     widths = [max(len(r[i]) for r in lines + [header]) for i in range(len(header))]
-    fmt = lambda r: "  ".join([r[0].ljust(widths[0])] + [c.rjust(w) for c, w in zip(r[1:], widths[1:])])  # noqa: E731
-    return "\n".join([fmt(header), "  ".join("-" * w for w in widths)] + [fmt(r) for r in lines])
+
+    def line(cells):
+        return "  ".join([cells[0].ljust(widths[0])] + [c.rjust(w) for c, w in zip(cells[1:], widths[1:])])
+
+    return "\n".join([line(header), "  ".join("-" * w for w in widths)] + [line(r) for r in lines])
 
 
 def write(entries, out_dir: str | Path) -> list[Path]:

@@ -101,7 +101,7 @@ def lag(t, S, S_d, window: float = LAG_WINDOW, refine: bool = True) -> np.ndarra
     dt = step_of(t)
     S, S_d = np.atleast_2d(np.asarray(S, float).T).T, np.atleast_2d(np.asarray(S_d, float).T).T
     K = len(S)
-    reach = min((K - 1) // 2, int(math.floor(window / dt + 1e-9)))
+    reach = min((K - 1) // 2, math.floor(window / dt + 1e-9))
     shifts = np.arange(-reach, reach + 1)
     defined = _varies(S) & _varies(S_d)
     out = np.full(S.shape[1], np.nan)
@@ -237,8 +237,8 @@ class Metrics:
 
     def to_dict(self) -> dict:
         """JSON-safe nested dict: floats or None (for NaN), channel and joint names as keys."""
-        channels = {name: None if getattr(self, name) is None else dict(zip(CHANNELS, map(_plain, getattr(self, name))))
-                    for name in self.CHANNEL_FIELDS}
+        channels = {name: None if getattr(self, name) is None
+                    else dict(zip(CHANNELS, map(_plain, getattr(self, name)))) for name in self.CHANNEL_FIELDS}
         joints = {name: dict(zip(self.joints, map(_plain, getattr(self, name)))) for name in self.JOINT_FIELDS}
         return {"vestibular_model": self.vestibular, "lag_window_s": self.lag_window_s,
                 "duration_s": self.duration_s, "channels": channels, "joints": joints,
@@ -309,7 +309,8 @@ def of_arrays(t, S, S_d, qdd, qd, joint_names, M=None, M_d=None,
                    "above_threshold_pct": time_above_threshold(felt), "peak_false_cue": peak_false_cue(S, S_d)}
     modulus = (None, None, None)
     if M is not None and M_d is not None:
-        modulus = (float(rms(np.asarray(M) - M_d)), float(correlation(M, M_d)[0]), float(lag(t, M, M_d, lag_window)[0]))
+        modulus = (float(rms(np.asarray(M) - M_d)), float(correlation(M, M_d)[0]),
+                   float(lag(t, M, M_d, lag_window)[0]))
     return Metrics(joints=tuple(joint_names), vestibular=vestibular.name, lag_window_s=float(lag_window),
                    duration_s=float(t[-1] - t[0]), **channel,
                    jerk_peak=np.abs(jerk(t, qdd)).max(axis=0, initial=0.0), jerk_rms=jerk_rms(t, qdd),
