@@ -133,10 +133,10 @@ def test_square_wave_acceleration_sign_changes_and_jerk():
     assert metrics.variation_per_second(t, qdd)[0] == pytest.approx(changes * 2 * amplitude / duration)
 
 
-def test_sign_changes_skip_the_deadband():
+def test_sign_changes_are_direct_reversals_outside_the_deadband():
     t = np.arange(8.0)
-    qdd = np.array([[1.0, 0.0, -1.0, 5e-7, -2.0, -1.0, 0.0, -1.0]]).T  # +, 0, -, (0), -, -, 0, -
-    assert metrics.sign_changes_per_second(t, qdd)[0] == pytest.approx(1 / 7.0)
+    qdd = np.array([[1.0, -1.0, 0.0, 1.0, 5e-7, -2.0, -1e-6, 3.0]]).T  # +, -, 0, +, (0), -, -, +: 2
+    assert metrics.sign_changes_per_second(t, qdd)[0] == pytest.approx(2 / 7.0)
 
 
 def test_modulus_and_joint_rates_at_start():
@@ -192,6 +192,8 @@ def test_compare_two_folders(two_results, tmp_path, capsys):
     expected = metrics.of_trajectory(traj, summary["configuration"]["free_joints"])
     assert float(rows["rms fy"][3]) == pytest.approx(expected.rms[4])
     assert rows["correlation fz"][2:] == ["", ""]  # f_z_d = g: no correlation to speak of
+    json.dumps(expected.to_dict(), allow_nan=False)  # ready for summary.json
+    assert "peak false rotation" in expected.headline()
 
 
 def test_compare_rejects_a_folder_that_is_not_a_result(two_results, tmp_path, capsys):

@@ -30,11 +30,11 @@ Definitions (S, S_d : (K, 6) on a time grid t : (K,) [s]; channels wx, wy, wz [r
   ``max |.|`` and its time-weighted RMS ``sqrt(sum (.)^2 dt / T)``. Both scale with 1 / (the result's
   grid step), so compare them between results on the same grid. The total variation of qdd per second
   ``sum |qdd[k+1] - qdd[k]| / T`` (the mean |jerk|, impulses included) does not depend on the grid.
-- Acceleration sign changes per second per joint: qdd with ``|qdd| <`` :data:`DEADBAND` counts as 0;
-  the zero samples are dropped and every change of sign between consecutive remaining samples counts
-  once, divided by the duration T = t[-1] - t[0]. ``shared/tools/felt_check.py`` counts only direct
-  flips between consecutive samples (+ then -), so it misses a reversal through the deadband
-  (+, 0, -); ours counts it and is otherwise the same.
+- Acceleration sign changes per second per joint, as ``shared/tools/felt_check.py`` counts them: qdd
+  with ``|qdd| <`` :data:`DEADBAND` counts as 0, and every pair of consecutive samples whose signs are
+  opposite (+ then -, or - then +) is one change; the count is divided by the duration T = t[-1] - t[0].
+  A reversal through a zero sample (+, 0, -) is therefore not counted, and a solver's noise of a few
+  1e-6 around zero is: both matter little beside the chatter this is meant to show.
 - Joint rates at t[0] (a session starts at rest: all zero).
 - Modulus ``M = |f|`` against ``M_d`` (the dfs configuration, eq. 7.1, 7.2): RMS, correlation, lag.
 """
@@ -189,17 +189,14 @@ def variation_per_second(t, qdd) -> np.ndarray:
 
 
 def sign_changes_per_second(t, qdd, deadband: float = DEADBAND) -> np.ndarray:
-    """Changes of sign of qdd (K, n) per second per joint (n,) [1/s].
+    """Direct reversals of qdd (K, n) between consecutive samples per second, per joint (n,) [1/s].
 
-    |qdd| < deadband counts as zero; zeros are skipped, so +, 0, - is one change and +, 0, + none.
+    |qdd| < deadband counts as zero and a step to or from zero is no reversal, so +, - counts once and
+    +, 0, - not at all: the formula of ``shared/tools/felt_check.py``, whose numbers these reproduce.
     """
     t, qdd = np.asarray(t, float), np.asarray(qdd, float)
     signs = np.sign(np.where(np.abs(qdd) < deadband, 0.0, qdd))
-    counts = []
-    for column in signs.T:
-        nonzero = column[column != 0.0]
-        counts.append(np.count_nonzero(nonzero[1:] != nonzero[:-1]))
-    return np.array(counts, dtype=float) / (t[-1] - t[0])
+    return np.count_nonzero(np.abs(np.diff(signs, axis=0)) == 2.0, axis=0) / (t[-1] - t[0])
 
 
 @dataclass(frozen=True, eq=False)
