@@ -48,6 +48,7 @@ import numpy as np
 import scipy.signal
 
 from desdemona import perception
+from desdemona.params import default_params
 from desdemona.profiles import PATH_COLUMNS
 
 #: Names of S's channels, as in a path CSV's header (and trajectory.csv). Not imported from report, which
@@ -334,7 +335,5 @@ def _plain(value) -> float | None:
 
 def joint_units(joints) -> list[str]:
     """'rad' or 'm' per joint name, from the machine's chain (eq. A.7): a joint's kind is its name's."""
-    from desdemona.params import default_params
-
     kinds = {j.name: j.kind for j in default_params().joints}
     return ["rad" if kinds[name] == "revolute" else "m" for name in joints]
