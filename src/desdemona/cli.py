@@ -125,6 +125,22 @@ def _parser() -> argparse.ArgumentParser:
                                       "and summary.json.")
     plot.add_argument("folder", metavar="DIR")
     plot.set_defaults(run=_run_plot)
+
+    cmp = sub.add_parser(
+        "compare", help="judge result folders side by side: one table of quality metrics, overlay figures",
+        description="Read result folders and print their quality metrics side by side (rows = metrics, "
+                    "columns = folders): RMS, correlation and lag of S against S_d per channel, the felt "
+                    "(perceived) error and its share of time above the perception thresholds, peak false "
+                    "cues, jerk and acceleration sign changes per joint, joint rates at the start. The "
+                    "metrics come from each folder's trajectory, so older folders compare too.")
+    cmp.add_argument("folders", nargs="+", metavar="DIR", help="result folders (of optimize, online or batch)")
+    cmp.add_argument("--out", metavar="DIR", default=None,
+                     help="also write compare.csv and overlay figures (path, felt error, joint accelerations) here")
+    cmp.add_argument("--perception", choices=tuple(perception_models.MODELS), default="thesis",
+                     help="vestibular model for the felt error (default: thesis)")
+    cmp.add_argument("--lag-window", type=float, default=2.0, metavar="SECONDS", dest="lag_window",
+                     help="largest delay searched for the lag (default: 2)")
+    cmp.set_defaults(run=_run_compare)
     return parser
 
 
@@ -277,6 +293,19 @@ def _run_plot(args) -> int:
     traj, summary = report.load(args.folder)
     for figure in figures.draw_result(traj, summary, args.folder):
         print(figure)
+    return 0
+
+
+def _run_compare(args) -> int:
+    from desdemona import compare
+
+    if not args.lag_window > 0:
+        raise UserError("--lag-window must be positive")
+    entries = compare.load_results(args.folders, perception_models.get_model(args.perception), args.lag_window)
+    print(compare.table(entries))
+    if args.out is not None:
+        for written in compare.write(entries, args.out):
+            print(written)
     return 0
 
 

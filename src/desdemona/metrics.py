@@ -1,0 +1,339 @@
+"""What the occupant feels and what the machine does: the quality metrics of a result (issue 16).
+
+Each metric is one pure NumPy function of sampled arrays; :func:`of_arrays` (or :func:`of_trajectory`
+for a :class:`~desdemona.simulate.Trajectory`) computes them all into one :class:`Metrics` value with
+``to_dict()`` for a ``summary.json`` and ``headline()`` for a printed line. They work from the
+trajectory alone, so they apply to off-line, on-line and batch results and to folders read back with
+:func:`desdemona.report.load`.
+
+Definitions (S, S_d : (K, 6) on a time grid t : (K,) [s]; channels wx, wy, wz [rad/s], fx, fy, fz
+[m/s^2]; a grid that is uniform but for a possibly shorter last step, as every result's is):
+
+- RMS: ``sqrt(mean_k (S - S_d)^2)`` per channel (eq. 5.1 with Q = I, per channel).
+- Correlation: Pearson's r of S with S_d per channel; undefined (NaN, ``None`` in JSON) where either
+  is constant, since r divides by both standard deviations.
+- Lag: the delay L [s] maximising the cross-correlation of S with S_d, as Pearson's r of the
+  overlapping samples (S[k], S_d[k - L/dt]) at each whole-sample shift, within ``|L| <= window``
+  (default :data:`LAG_WINDOW`, 2 s, at most half the path's length), refined between samples by the
+  parabola through the peak and its neighbours; positive when S lags S_d. Undefined where the
+  correlation is.
+- Perceived error: the vestibular model (default the thesis', :func:`perception.thesis_model`) applied
+  to S - S_d, which equals perceived S minus perceived S_d because the filters are linear and start in
+  the steady state of their first input. Its RMS per channel, and the share of time [%] in which its
+  magnitude is at or above the channel's perception threshold (:data:`perception.THRESHOLDS`, Reid &
+  Nahon 1985).
+- Peak false cue: per channel, ``max |S - S_d|`` over the samples where ``|S_d|`` is below the
+  channel's perception threshold (where no motion is wanted, the rider should feel none); undefined
+  where S_d is never that quiet (e.g. fz, which carries gravity).
+- Jerk per joint: the commanded acceleration qdd is piecewise constant, so its derivative is a train
+  of jumps. We take ``(qdd[k+1] - qdd[k]) / (t[k+1] - t[k])`` between consecutive samples: its peak
+  ``max |.|`` and its time-weighted RMS ``sqrt(sum (.)^2 dt / T)``. Both scale with 1 / (the result's
+  grid step), so compare them between results on the same grid. The total variation of qdd per second
+  ``sum |qdd[k+1] - qdd[k]| / T`` (the mean |jerk|, impulses included) does not depend on the grid.
+- Acceleration sign changes per second per joint, as ``shared/tools/felt_check.py`` counts them: qdd
+  with ``|qdd| <`` :data:`DEADBAND` counts as 0, and every pair of consecutive samples whose signs are
+  opposite (+ then -, or - then +) is one change; the count is divided by the duration T = t[-1] - t[0].
+  A reversal through a zero sample (+, 0, -) is therefore not counted, and a solver's noise of a few
+  1e-6 around zero is: both matter little beside the chatter this is meant to show.
+- Joint rates at t[0] (a session starts at rest: all zero).
+- Modulus ``M = |f|`` against ``M_d`` (the dfs configuration, eq. 7.1, 7.2): RMS, correlation, lag.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.signal
+
+from desdemona import perception
+from desdemona.params import default_params
+from desdemona.profiles import PATH_COLUMNS
+
+#: Names of S's channels, as in a path CSV's header (and trajectory.csv). Not imported from report, which
+#: sits above this module in the data flow and may import it.
+CHANNELS = PATH_COLUMNS[1:]
+
+#: Half-width of the lag search [s]: cueing delays beyond a few hundred ms are already gross.
+LAG_WINDOW = 2.0
+#: |qdd| below this [rad/s^2 | m/s^2] counts as zero for sign changes (as in felt_check.py).
+DEADBAND = 1e-6
+CHANNEL_UNITS = ("rad/s",) * 3 + ("m/s^2",) * 3
+
+
+def rms(x) -> np.ndarray:
+    """Root mean square over samples. x : (K, m) -> (m,), or (K,) -> scalar, in x's unit."""
+    x = np.asarray(x, dtype=float)
+    return np.sqrt(np.mean(x * x, axis=0))
+
+
+def _varies(x) -> np.ndarray:
+    """(m,) True where column of x (K, m) is not constant (to 1e-9 of its magnitude)."""
+    return np.ptp(x, axis=0) > 1e-9 * np.maximum(1.0, np.max(np.abs(x), axis=0))
+
+
+def correlation(S, S_d) -> np.ndarray:
+    """Pearson correlation per column of S (K, m) with S_d (K, m) -> (m,) in [-1, 1].
+
+    NaN where S or S_d is constant in that column (the coefficient would be 0/0).
+    """
+    S, S_d = np.atleast_2d(np.asarray(S, float).T).T, np.atleast_2d(np.asarray(S_d, float).T).T
+    defined = _varies(S) & _varies(S_d)
+    x, y = S - S.mean(axis=0), S_d - S_d.mean(axis=0)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        r = (x * y).sum(axis=0) / np.sqrt((x * x).sum(axis=0) * (y * y).sum(axis=0))
+    return np.where(defined, np.clip(r, -1.0, 1.0), np.nan)
+
+
+def step_of(t) -> float:
+    """The sample step [s] of a grid t (K,): its median step (a last step may be shorter)."""
+    t = np.asarray(t, float)
+    if t.ndim != 1 or len(t) < 2 or not np.all(np.diff(t) > 0):
+        raise ValueError("t must be a strictly increasing time grid of at least two samples")
+    return float(np.median(np.diff(t)))
+
+
+def lag(t, S, S_d, window: float = LAG_WINDOW, refine: bool = True) -> np.ndarray:
+    """Delay [s] of each column of S (K, m) behind S_d (K, m) that maximises their correlation.
+
+    t : (K,) uniform grid [s]; window : largest |delay| searched [s], at most half the path's length.
+    At each whole-sample shift L the correlation is Pearson's r of the overlapping parts (S[k], S_d[k - L]),
+    so a pure delay gives r = 1 at its own shift, not biased towards 0 by the shrinking overlap;
+    refine : place the peak between samples by the parabola through it and its two neighbours (not on
+    the window's edge). Positive when S lags S_d (S[k] ~ S_d[k - L]); NaN where the correlation is.
+    """
+    dt = step_of(t)
+    S, S_d = np.atleast_2d(np.asarray(S, float).T).T, np.atleast_2d(np.asarray(S_d, float).T).T
+    K = len(S)
+    reach = min((K - 1) // 2, math.floor(window / dt + 1e-9))
+    shifts = np.arange(-reach, reach + 1)
+    defined = _varies(S) & _varies(S_d)
+    out = np.full(S.shape[1], np.nan)
+    for j in np.flatnonzero(defined):
+        r = _shifted_correlation(S[:, j], S_d[:, j], shifts)
+        i = int(np.argmax(r))
+        offset = 0.0
+        if refine and 0 < i < len(r) - 1 and np.all(np.isfinite(r[i - 1:i + 2])):
+            curvature = r[i - 1] - 2.0 * r[i] + r[i + 1]
+            if curvature < 0.0:
+                offset = 0.5 * (r[i - 1] - r[i + 1]) / curvature
+        out[j] = (shifts[i] + offset) * dt
+    return out
+
+
+def _shifted_correlation(x, y, shifts) -> np.ndarray:
+    """Pearson's r of (x[k], y[k - L]) over their overlap, for each shift L in ``shifts`` (consecutive
+    integers); -inf where a part is constant. Sums over overlaps from one FFT correlation and prefix sums."""
+    K = len(x)
+    x, y = x - x.mean(), y - y.mean()  # r does not change; the sums lose less to rounding
+    full = scipy.signal.correlate(x, y)  # full[K - 1 + L] = sum_k x[k] y[k - L]
+    sxy = full[K - 1 + shifts]
+    n = K - np.abs(shifts)
+    x0, y0 = np.maximum(shifts, 0), np.maximum(-shifts, 0)  # first index of each overlap
+
+    def moments(v, start):
+        c1, c2 = np.r_[0.0, np.cumsum(v)], np.r_[0.0, np.cumsum(v * v)]
+        s1 = c1[start + n] - c1[start]
+        return s1, c2[start + n] - c2[start] - s1 * s1 / n
+
+    sx, vx = moments(x, x0)
+    sy, vy = moments(y, y0)
+    floor = 1e-12 * K * max(np.mean(x * x), np.mean(y * y))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        r = (sxy - sx * sy / n) / np.sqrt(vx * vy)
+    return np.where((vx > floor) & (vy > floor), r, -np.inf)
+
+
+def perceived_difference(S, S_d, dt: float, vestibular: perception.VestibularModel | None = None) -> np.ndarray:
+    """Perceived S minus perceived S_d (K, 6), in the units of S, through a vestibular model.
+
+    S, S_d : (K, 6); dt : sample step [s]; vestibular : default :func:`perception.thesis_model`.
+    Computed as the perception of S - S_d: the same by linearity (chapter 6's filters are linear and
+    :meth:`~perception.VestibularModel.perceive` starts them in the steady state of their first input).
+    """
+    vestibular = perception.thesis_model() if vestibular is None else vestibular
+    return vestibular.perceive(np.asarray(S, float) - np.asarray(S_d, float), dt)
+
+
+def time_above_threshold(difference, thresholds=perception.THRESHOLDS) -> np.ndarray:
+    """Share of samples [%] per channel in which |difference| (K, 6) is at or above its threshold (6,)."""
+    return 100.0 * (1.0 - np.mean(perception.below_threshold(difference, thresholds), axis=0))
+
+
+def peak_false_cue(S, S_d, thresholds=perception.THRESHOLDS) -> np.ndarray:
+    """Peak |S - S_d| (6,) per channel over the samples where |S_d| < threshold: motion felt where none is
+    wanted, in the units of S. NaN where S_d is never below the threshold in that channel."""
+    S, S_d = np.asarray(S, float), np.asarray(S_d, float)
+    quiet = perception.below_threshold(S_d, thresholds)
+    error = np.where(quiet, np.abs(S - S_d), -np.inf).max(axis=0)
+    return np.where(quiet.any(axis=0), error, np.nan)
+
+
+def jerk(t, qdd) -> np.ndarray:
+    """Jumps of the commanded accelerations over their time step: (K - 1, n) [rad/s^3 | m/s^3].
+
+    t : (K,) [s]; qdd : (K, n), piecewise constant, so this is zero inside an interval and
+    jump / step at its boundary: it scales with 1 / step (see the module's notes).
+    """
+    t = np.asarray(t, float)
+    return np.diff(np.asarray(qdd, float), axis=0) / np.diff(t)[:, None]
+
+
+def jerk_rms(t, qdd) -> np.ndarray:
+    """Time-weighted RMS of :func:`jerk` per joint (n,): sqrt(sum jerk^2 dt / T)."""
+    t = np.asarray(t, float)
+    return np.sqrt(np.sum(jerk(t, qdd) ** 2 * np.diff(t)[:, None], axis=0) / (t[-1] - t[0]))
+
+
+def variation_per_second(t, qdd) -> np.ndarray:
+    """Total variation of qdd per second per joint (n,): sum |qdd[k+1] - qdd[k]| / T, the mean |jerk|
+    with its impulses; independent of the grid [rad/s^3 | m/s^3]."""
+    t = np.asarray(t, float)
+    return np.abs(np.diff(np.asarray(qdd, float), axis=0)).sum(axis=0) / (t[-1] - t[0])
+
+
+def sign_changes_per_second(t, qdd, deadband: float = DEADBAND) -> np.ndarray:
+    """Direct reversals of qdd (K, n) between consecutive samples per second, per joint (n,) [1/s].
+
+    |qdd| < deadband counts as zero and a step to or from zero is no reversal, so +, - counts once and
+    +, 0, - not at all: the formula of ``shared/tools/felt_check.py``, whose numbers these reproduce.
+    """
+    t, qdd = np.asarray(t, float), np.asarray(qdd, float)
+    signs = np.sign(np.where(np.abs(qdd) < deadband, 0.0, qdd))
+    return np.count_nonzero(np.abs(np.diff(signs, axis=0)) == 2.0, axis=0) / (t[-1] - t[0])
+
+
+@dataclass(frozen=True, eq=False)
+class Metrics:
+    """The quality metrics of one trajectory against its desired path (see the module's definitions).
+
+    Per channel of S (6,), None where the result has no full desired path S_d: rms, correlation, lag_s,
+    perceived_rms, above_threshold_pct, peak_false_cue (units of S; NaN where undefined).
+    Per joint (n,) in the order of ``joints``: jerk_peak, jerk_rms, qdd_variation_per_s,
+    sign_changes_per_s, qd_start (joint rate at t[0]). Modulus M against M_d: modulus_rms [m/s^2],
+    modulus_correlation, modulus_lag_s.
+    """
+
+    joints: tuple[str, ...]
+    vestibular: str
+    lag_window_s: float
+    duration_s: float
+    rms: np.ndarray | None
+    correlation: np.ndarray | None
+    lag_s: np.ndarray | None
+    perceived_rms: np.ndarray | None
+    above_threshold_pct: np.ndarray | None
+    peak_false_cue: np.ndarray | None
+    jerk_peak: np.ndarray
+    jerk_rms: np.ndarray
+    qdd_variation_per_s: np.ndarray
+    sign_changes_per_s: np.ndarray
+    qd_start: np.ndarray
+    modulus_rms: float | None
+    modulus_correlation: float | None
+    modulus_lag_s: float | None
+
+    CHANNEL_FIELDS = ("rms", "correlation", "lag_s", "perceived_rms", "above_threshold_pct", "peak_false_cue")
+    JOINT_FIELDS = ("jerk_peak", "jerk_rms", "qdd_variation_per_s", "sign_changes_per_s", "qd_start")
+
+    def to_dict(self) -> dict:
+        """JSON-safe nested dict: floats or None (for NaN), channel and joint names as keys."""
+        channels = {name: None if getattr(self, name) is None
+                    else dict(zip(CHANNELS, map(_plain, getattr(self, name)))) for name in self.CHANNEL_FIELDS}
+        joints = {name: dict(zip(self.joints, map(_plain, getattr(self, name)))) for name in self.JOINT_FIELDS}
+        return {"vestibular_model": self.vestibular, "lag_window_s": self.lag_window_s,
+                "duration_s": self.duration_s, "channels": channels, "joints": joints,
+                "modulus": {"rms": _plain(self.modulus_rms), "correlation": _plain(self.modulus_correlation),
+                            "lag_s": _plain(self.modulus_lag_s)}}
+
+    def rows(self) -> list[tuple[str, str, float | None]]:
+        """The metrics flattened for a table: (name, unit, value) per channel, joint and modulus."""
+        per_joint = joint_units(self.joints)
+        units = {"rms": CHANNEL_UNITS, "correlation": ("",) * 6, "lag_s": ("s",) * 6,
+                 "perceived_rms": CHANNEL_UNITS, "above_threshold_pct": ("%",) * 6,
+                 "peak_false_cue": CHANNEL_UNITS,
+                 "jerk_peak": [u + "/s^3" for u in per_joint], "jerk_rms": [u + "/s^3" for u in per_joint],
+                 "qdd_variation_per_s": [u + "/s^3" for u in per_joint],
+                 "sign_changes_per_s": ("1/s",) * len(self.joints), "qd_start": [u + "/s" for u in per_joint]}
+        rows = []
+        for name in self.CHANNEL_FIELDS:
+            values = getattr(self, name)
+            for i, channel in enumerate(CHANNELS):
+                rows.append((f"{name} {channel}", units[name][i], None if values is None else _plain(values[i])))
+        for name in self.JOINT_FIELDS:
+            for k, joint in enumerate(self.joints):
+                rows.append((f"{name} {joint}", units[name][k], _plain(getattr(self, name)[k])))
+        rows += [("modulus rms", "m/s^2", _plain(self.modulus_rms)),
+                 ("modulus correlation", "", _plain(self.modulus_correlation)),
+                 ("modulus lag_s", "s", _plain(self.modulus_lag_s))]
+        return rows
+
+    def headline(self) -> str:
+        """One line of the figures a rider and an operator look at first."""
+        parts = []
+        if self.rms is not None:
+            i = int(np.argmax(self.rms))
+            parts.append(f"worst RMS {self.rms[i]:.3g} {CHANNEL_UNITS[i]} ({CHANNELS[i]})")
+            i = int(np.argmax(self.above_threshold_pct))
+            parts.append(f"felt above threshold {self.above_threshold_pct[i]:.0f}% of the time ({CHANNELS[i]})")
+            rotation = self.peak_false_cue[:3]
+            if np.isfinite(rotation).any():
+                i = int(np.nanargmax(rotation))
+                parts.append(f"peak false rotation {math.degrees(rotation[i]):.3g} deg/s ({CHANNELS[i]})")
+        elif self.modulus_rms is not None:
+            parts.append(f"RMS(M - M_d) {self.modulus_rms:.3g} m/s^2")
+        if len(self.joints):
+            k = int(np.argmax(self.sign_changes_per_s))
+            parts.append(f"max {self.sign_changes_per_s[k]:.3g} acceleration sign changes/s ({self.joints[k]})")
+            k = int(np.argmax(np.abs(self.qd_start)))
+            unit = joint_units(self.joints)[k]
+            parts.append(f"largest rate at start {abs(self.qd_start[k]):.3g} {unit}/s ({self.joints[k]})")
+        return ", ".join(parts)
+
+
+def of_arrays(t, S, S_d, qdd, qd, joint_names, M=None, M_d=None,
+              vestibular: perception.VestibularModel | None = None, lag_window: float = LAG_WINDOW) -> Metrics:
+    """All metrics of a sampled trajectory.
+
+    t : (K,) [s]; S : (K, 6); S_d : (K, 6) or None (a modulus-only path); qdd, qd : (K, n) of the joints
+    ``joint_names`` (n,); M, M_d : (K,) [m/s^2] or None; vestibular : default the thesis' model.
+    """
+    t = np.asarray(t, float)
+    dt = step_of(t)
+    vestibular = perception.thesis_model() if vestibular is None else vestibular
+    qdd, qd = np.asarray(qdd, float).reshape(len(t), -1), np.asarray(qd, float).reshape(len(t), -1)
+    channel = dict.fromkeys(Metrics.CHANNEL_FIELDS)
+    if S_d is not None:
+        felt = perceived_difference(S, S_d, dt, vestibular)
+        channel = {"rms": rms(np.asarray(S) - S_d), "correlation": correlation(S, S_d),
+                   "lag_s": lag(t, S, S_d, lag_window), "perceived_rms": rms(felt),
+                   "above_threshold_pct": time_above_threshold(felt), "peak_false_cue": peak_false_cue(S, S_d)}
+    modulus = (None, None, None)
+    if M is not None and M_d is not None:
+        modulus = (float(rms(np.asarray(M) - M_d)), float(correlation(M, M_d)[0]),
+                   float(lag(t, M, M_d, lag_window)[0]))
+    return Metrics(joints=tuple(joint_names), vestibular=vestibular.name, lag_window_s=float(lag_window),
+                   duration_s=float(t[-1] - t[0]), **channel,
+                   jerk_peak=np.abs(jerk(t, qdd)).max(axis=0, initial=0.0), jerk_rms=jerk_rms(t, qdd),
+                   qdd_variation_per_s=variation_per_second(t, qdd),
+                   sign_changes_per_s=sign_changes_per_second(t, qdd), qd_start=qd[0].copy(),
+                   modulus_rms=modulus[0], modulus_correlation=modulus[1], modulus_lag_s=modulus[2])
+
+
+def of_trajectory(traj, joint_names, vestibular: perception.VestibularModel | None = None,
+                  lag_window: float = LAG_WINDOW) -> Metrics:
+    """All metrics of a :class:`~desdemona.simulate.Trajectory` (free joints named ``joint_names``)."""
+    return of_arrays(traj.t, traj.S, traj.S_d, traj.qdd, traj.qd, joint_names, traj.M, traj.M_d,
+                     vestibular, lag_window)
+
+
+def _plain(value) -> float | None:
+    """A JSON-safe float, or None for NaN and None."""
+    return None if value is None or not math.isfinite(value) else float(value)
+
+
+def joint_units(joints) -> list[str]:
+    """'rad' or 'm' per joint name, from the machine's chain (eq. A.7): a joint's kind is its name's."""
+    kinds = {j.name: j.kind for j in default_params().joints}
+    return ["rad" if kinds[name] == "revolute" else "m" for name in joints]
