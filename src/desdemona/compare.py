@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona import metrics, perception, report
+from desdemona import figures, metrics, perception, report
 from desdemona.simulate import Trajectory
 
 INFO_ROWS = (("path", ("path", "name")), ("configuration", ("configuration", "name")), ("method", ("method",)))
@@ -117,73 +117,4 @@ def write(entries, out_dir: str | Path) -> list[Path]:
                 writer.writerow([name, unit] + ["" if v is None else v for v in values])
     except OSError as exc:
         raise report.ReportError(f"{out}: cannot write the comparison: {exc.strerror or exc}") from None
-    return [out / "compare.csv"] + draw_figures(entries, out)
-
-
-def draw_figures(entries, out_dir: str | Path) -> list[Path]:
-    """Overlay figures of all entries in ``out_dir``; returns their paths."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    out, paths = Path(out_dir), []
-
-    def save(fig, name, title):
-        fig.suptitle(title)
-        fig.tight_layout()
-        fig.savefig(out / name, dpi=100)
-        plt.close(fig)
-        paths.append(out / name)
-
-    def six_channels():
-        fig, axes = plt.subplots(3, 2, figsize=(12, 8), sharex=True)
-        for ax in axes[-1]:
-            ax.set_xlabel("t [s]")
-        return fig, axes.T.ravel()
-
-    full = [e for e in entries if e.trajectory.S_d is not None]
-    if full:
-        fig, axes = six_channels()
-        for i, ax in enumerate(axes):
-            ax.plot(full[0].trajectory.t, full[0].trajectory.S_d[:, i], "k-", lw=1.8, label=f"S_d ({full[0].label})")
-            for k, e in enumerate(full):
-                ax.plot(e.trajectory.t, e.trajectory.S[:, i], f"C{k}--", lw=1.1, label=e.label)
-            ax.set_ylabel(report.CHANNEL_LABELS[i])
-            ax.grid(alpha=0.3)
-        axes[0].legend(fontsize=8)
-        save(fig, "compare_path.png", "path S over the desired S_d")
-        fig, axes = six_channels()
-        for i, ax in enumerate(axes):
-            ax.axhspan(-perception.THRESHOLDS[i], perception.THRESHOLDS[i], color="0.8", label="below threshold")
-            for k, e in enumerate(full):
-                ax.plot(e.trajectory.t, e.felt[:, i], f"C{k}", lw=1.1, label=e.label)
-            ax.set_ylabel(f"felt error {report.CHANNEL_LABELS[i]}")
-            ax.grid(alpha=0.3)
-        axes[0].legend(fontsize=8)
-        save(fig, "compare_felt.png", f"perceived S - S_d ({entries[0].metrics.vestibular} model)")
-    if len(full) < len(entries):
-        fig, ax = plt.subplots(figsize=(10, 4))
-        ax.plot(entries[0].trajectory.t, entries[0].trajectory.M_d, "k-", lw=1.8, label=f"M_d ({entries[0].label})")
-        for k, e in enumerate(entries):
-            ax.plot(e.trajectory.t, e.trajectory.M, f"C{k}--", lw=1.1, label=e.label)
-        ax.set_ylabel("modulus [m/s^2]")
-        ax.set_xlabel("t [s]")
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
-        save(fig, "compare_modulus.png", "modulus M over the desired M_d")
-    joints = list(dict.fromkeys(j for e in entries for j in e.joints))
-    units = metrics.joint_units(joints)
-    fig, axes = plt.subplots(len(joints), 1, figsize=(10, 1.9 * len(joints) + 1), sharex=True, squeeze=False)
-    for ax, joint, unit in zip(axes[:, 0], joints, units):
-        for k, e in enumerate(entries):
-            if joint in e.joints:
-                column = e.joints.index(joint)
-                ax.plot(e.trajectory.t, e.trajectory.qdd[:, column], f"C{k}", lw=1.0, drawstyle="steps-post",
-                        label=e.label)
-        ax.set_ylabel(f"qdd {joint} [{unit}/s^2]")
-        ax.grid(alpha=0.3)
-    axes[0, 0].legend(fontsize=8)
-    axes[-1, 0].set_xlabel("t [s]")
-    save(fig, "compare_qdd.png", "commanded joint accelerations")
-    return paths
+    return [out / "compare.csv"] + figures.draw_comparison(entries, out)

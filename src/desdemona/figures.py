@@ -7,6 +7,7 @@
   ``perceived.png``.
 - :func:`draw_online`: ``online.png`` (like thesis figures 7.5/7.6, with the classical loop) and
   ``compute_time.png`` (compute time per cycle against the deadline).
+- :func:`draw_comparison`: overlays of several result folders (``desdemona compare``).
 - :func:`plot_bode`: Bode diagrams of a vestibular model (thesis figures 6.4, 6.6).
 
 Figures are drawn with matplotlib's object interface (:class:`matplotlib.figure.Figure`), which needs
@@ -19,6 +20,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+
+from desdemona.perception import THRESHOLDS
 
 CHANNEL_LABELS = ("omega_x [rad/s]", "omega_y [rad/s]", "omega_z [rad/s]",
                   "f_x [m/s^2]", "f_y [m/s^2]", "f_z [m/s^2]")
@@ -182,3 +185,70 @@ def plot_bode(model, path: str | Path, w=None) -> Path:
             ax.grid(True, which="both", alpha=0.3)
         axes[0, col].legend(fontsize=8)
     return _save(fig, Path(path), dpi=110)
+
+
+def draw_comparison(entries, out_dir: str | Path) -> list[Path]:
+    """Overlay figures of result folders read back (:class:`desdemona.compare.Entry`) in ``out_dir``:
+    ``compare_path.png``, ``compare_felt.png``, ``compare_modulus.png`` (modulus-only paths) and
+    ``compare_qdd.png``; returns their paths."""
+    from desdemona.metrics import joint_units
+
+    out, paths = Path(out_dir), []
+
+    def save(fig, name, title):
+        paths.append(_save(fig, out / name, title))
+
+    def six_channels():
+        fig = _figure(figsize=(12, 8))
+        axes = fig.subplots(3, 2, sharex=True)
+        for ax in axes[-1]:
+            ax.set_xlabel("t [s]")
+        return fig, axes.T.ravel()
+
+    full = [e for e in entries if e.trajectory.S_d is not None]
+    if full:
+        fig, axes = six_channels()
+        for i, ax in enumerate(axes):
+            ax.plot(full[0].trajectory.t, full[0].trajectory.S_d[:, i], "k-", lw=1.8, label=f"S_d ({full[0].label})")
+            for k, e in enumerate(full):
+                ax.plot(e.trajectory.t, e.trajectory.S[:, i], f"C{k}--", lw=1.1, label=e.label)
+            ax.set_ylabel(CHANNEL_LABELS[i])
+            ax.grid(alpha=0.3)
+        axes[0].legend(fontsize=8)
+        save(fig, "compare_path.png", "path S over the desired S_d")
+        fig, axes = six_channels()
+        for i, ax in enumerate(axes):
+            ax.axhspan(-THRESHOLDS[i], THRESHOLDS[i], color="0.8", label="below threshold")
+            for k, e in enumerate(full):
+                ax.plot(e.trajectory.t, e.felt[:, i], f"C{k}", lw=1.1, label=e.label)
+            ax.set_ylabel(f"felt error {CHANNEL_LABELS[i]}")
+            ax.grid(alpha=0.3)
+        axes[0].legend(fontsize=8)
+        save(fig, "compare_felt.png", f"perceived S - S_d ({entries[0].metrics.vestibular} model)")
+    if len(full) < len(entries):
+        fig = _figure(figsize=(10, 4))
+        ax = fig.subplots()
+        ax.plot(entries[0].trajectory.t, entries[0].trajectory.M_d, "k-", lw=1.8, label=f"M_d ({entries[0].label})")
+        for k, e in enumerate(entries):
+            ax.plot(e.trajectory.t, e.trajectory.M, f"C{k}--", lw=1.1, label=e.label)
+        ax.set_ylabel("modulus [m/s^2]")
+        ax.set_xlabel("t [s]")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+        save(fig, "compare_modulus.png", "modulus M over the desired M_d")
+    joints = list(dict.fromkeys(j for e in entries for j in e.joints))
+    units = joint_units(joints)
+    fig = _figure(figsize=(10, 1.9 * len(joints) + 1))
+    axes = fig.subplots(len(joints), 1, sharex=True, squeeze=False)
+    for ax, joint, unit in zip(axes[:, 0], joints, units):
+        for k, e in enumerate(entries):
+            if joint in e.joints:
+                column = e.joints.index(joint)
+                ax.plot(e.trajectory.t, e.trajectory.qdd[:, column], f"C{k}", lw=1.0, drawstyle="steps-post",
+                        label=e.label)
+        ax.set_ylabel(f"qdd {joint} [{unit}/s^2]")
+        ax.grid(alpha=0.3)
+    axes[0, 0].legend(fontsize=8)
+    axes[-1, 0].set_xlabel("t [s]")
+    save(fig, "compare_qdd.png", "commanded joint accelerations")
+    return paths

@@ -308,7 +308,8 @@ def of_arrays(t, S, S_d, qdd, qd, joint_names, M=None, M_d=None,
         felt = perceived_difference(S, S_d, dt, vestibular)
         channel = {"rms": rms(np.asarray(S) - S_d), "correlation": correlation(S, S_d),
                    "lag_s": lag(t, S, S_d, lag_window), "perceived_rms": rms(felt),
-                   "above_threshold_pct": time_above_threshold(felt), "peak_false_cue": peak_false_cue(S, S_d)}
+                   "above_threshold_pct": time_above_threshold(felt, vestibular.thresholds),
+                   "peak_false_cue": peak_false_cue(S, S_d, vestibular.thresholds)}
     modulus = (None, None, None)
     if M is not None and M_d is not None:
         modulus = (float(rms(np.asarray(M) - M_d)), float(correlation(M, M_d)[0]),
