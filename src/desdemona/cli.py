@@ -175,20 +175,10 @@ def _run_model(args) -> int:
     return 0
 
 
-def _load_profile(name: str) -> profiles.DesiredPath:
-    if name in profiles.PROFILES:
-        return profiles.get_profile(name)
-    if name.lower().endswith(".csv") or os.path.exists(name):
-        if not os.path.exists(name):
-            raise UserError(f"{name}: file not found")
-        return profiles.read_csv(name)
-    return profiles.get_profile(name)  # raises, listing the built-in profiles
-
-
 def _run_inputs(args):
     """The machine, the desired path and the output folder of a run, each checked before any work."""
     model = _machine(args)
-    path = _load_profile(args.profile)
+    path = profiles.load(args.profile)
     out = Path(args.out)
     if out.exists() and not args.overwrite:
         raise UserError(f"{out}: already exists; choose another folder or add --overwrite")
@@ -249,7 +239,7 @@ def _run_batch(args) -> int:
             raise UserError(str(exc)) from None
     for name in args.profiles:
         if name not in profiles.PROFILES and not os.path.isfile(name):
-            _load_profile(name)  # raises with the list of built-in profiles, or file not found
+            profiles.load(name)  # raises with the list of built-in profiles, or file not found
     if args.starts < 1 or args.processes < 1 or not args.h_u > 0:
         raise UserError("--starts and --processes must be at least 1 and --h-u positive")
     params = load_params(args.params, base=args.base)

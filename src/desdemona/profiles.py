@@ -282,6 +282,21 @@ def get_profile(name: str) -> DesiredPath:
     return PROFILES[name]()
 
 
+def load(name_or_file: str | Path) -> DesiredPath:
+    """A built-in profile by name, or a desired path read from a CSV file (:func:`read_csv`).
+
+    Raises :class:`ProfileError` naming the built-in profiles when ``name_or_file`` is neither.
+    """
+    name = str(name_or_file)
+    if name in PROFILES:
+        return get_profile(name)
+    if name.lower().endswith(".csv") or Path(name).exists():
+        if not Path(name).exists():
+            raise ProfileError(f"{name}: file not found")
+        return read_csv(name)
+    return get_profile(name)  # raises, listing the built-in profiles
+
+
 def read_csv(path: str | Path) -> DesiredPath:
     """Read a desired path from CSV: header ``t,wx,wy,wz,fx,fy,fz`` (SI) or ``t,M``; ``#`` comments.
 

@@ -18,7 +18,8 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona import __version__, figures
+from desdemona import figures
+from desdemona._version import __version__
 from desdemona.simulate import Trajectory
 
 CHANNELS = ("wx", "wy", "wz", "fx", "fy", "fz")
