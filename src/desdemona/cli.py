@@ -216,6 +216,7 @@ def _run_optimize(args) -> int:
     perceived = f" (perceived {c.rms_perceived:.4g})" if c.rms_perceived is not None else ""
     print(f"{path.name} on {model.config.name}: RMS = {c.rms:.4g}{perceived}, worst limit use "
           f"{c.worst_use:.4f}, solver {result.solution.status}, {result.timings['wall']:.2f} s; written to {out}")
+    print(f"  felt: {result.quality.headline()}")
     return 0
 
 
@@ -266,6 +267,9 @@ def _run_online(args) -> int:
           f"{c.worst_use:.4f}, compute per cycle median {1e3 * np.median(times):.2f} ms, "
           f"p99 {1e3 * np.percentile(times, 99):.2f} ms, fallbacks {len(sources) - sources.count('mpc')}; "
           f"written to {out}")
+    print(f"  felt: {result.quality.headline()}")
+    if result.baseline_quality is not None:
+        print(f"  felt with the classical loop: {result.baseline_quality.headline()}")
     return 0
 
 

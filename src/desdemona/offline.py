@@ -11,13 +11,14 @@ smart guesses of table 5.2 do, and seeded random starts widen the search.
 from __future__ import annotations
 
 import concurrent.futures
+import functools
 import multiprocessing
 import time
 from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from desdemona import baselines
+from desdemona import baselines, metrics
 from desdemona.model import Model
 from desdemona.plan import Plan
 from desdemona.problem import CueingProblem, ProblemOptions, Solution
@@ -88,6 +89,13 @@ class Result:
     def plan(self) -> Plan:
         """The chosen joint plan (grid, initial state, accelerations)."""
         return self.solution.plan
+
+    @functools.cached_property
+    def quality(self) -> metrics.Metrics:
+        """What the occupant feels and the machine does (:mod:`desdemona.metrics`), through the
+        problem's perception model or, without one, the thesis' model."""
+        perception = self.options.problem.perception if isinstance(self.options, OptimizeOptions) else None
+        return metrics.of_trajectory(self.trajectory, self.model.config.joint_names, perception)
 
     def to_dataframe(self):
         """The trajectory as a pandas DataFrame indexed by time (needs pandas: ``pip install

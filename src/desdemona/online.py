@@ -24,6 +24,7 @@ last two samples).
 
 from __future__ import annotations
 
+import functools
 import time
 from dataclasses import dataclass
 from typing import Literal
@@ -31,6 +32,7 @@ from typing import Literal
 import casadi as ca
 import numpy as np
 
+from desdemona import metrics
 from desdemona.baselines import classical_dfs
 from desdemona.model import Model
 from desdemona.perception import VestibularModel
@@ -389,6 +391,18 @@ class OnlineResult:
     @property
     def plan(self) -> Plan:
         return self.loop.plan
+
+    @functools.cached_property
+    def quality(self) -> metrics.Metrics:
+        """What the occupant feels and the machine does (:mod:`desdemona.metrics`)."""
+        return metrics.of_trajectory(self.trajectory, self.model.config.joint_names, self.options.mpc.perception)
+
+    @functools.cached_property
+    def baseline_quality(self) -> metrics.Metrics | None:
+        """The same metrics for the classical loop, where there is one."""
+        if self.baseline is None:
+            return None
+        return metrics.of_trajectory(self.baseline, self.model.config.joint_names, self.options.mpc.perception)
 
     def to_dataframe(self):
         """The trajectory as a pandas DataFrame indexed by time (needs pandas)."""

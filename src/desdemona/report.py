@@ -83,6 +83,7 @@ def write(result, out_dir: str | Path, command: str | None = None, overwrite: bo
             "worst_use_per_joint": {k: dict(zip(result.model.config.joint_names, map(float, v)))
                                     for k, v in result.check.use.items()},
         },
+        "quality": result.quality.to_dict(),
         "solver": {"status": result.solution.status, "success": result.solution.success,
                    "iterations": result.solution.iterations, "cost": result.solution.cost,
                    "starts": [vars(s) for s in result.starts], "timings_s": result.timings},
@@ -209,6 +210,8 @@ def online_summary(result, command: str | None = None) -> dict:
         "metrics": {"rms_weighted": c.rms, "rms_modulus": c.rms_modulus,
                     "rms_modulus_classical_loop": None if baseline is None else baseline.rms_modulus,
                     "limits_kept": c.passed, "worst_use": c.worst, "check_grid_step_s": c.step},
+        "quality": result.quality.to_dict(),
+        "quality_classical_loop": None if result.baseline_quality is None else result.baseline_quality.to_dict(),
         "cycles": {"count": len(times), "deadline_s": result.deadline,
                    "compute_time_s": {"median": float(np.median(times)), "p99": float(np.percentile(times, 99)),
                                       "max": float(times.max())},
