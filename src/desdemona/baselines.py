@@ -30,13 +30,14 @@ from desdemona.profiles import DesiredPath
 DFS_RADIUS = 4.0  # |q2| of the dfs configuration [m]
 
 
-def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.0) -> Plan:
+def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.0, state=None) -> Plan:
     """The classical yaw loop of figure 7.4 on the dfs configuration.
 
     path : desired modulus M_d (from its S_d or given); model : a dfs Model (its limits are respected:
     yaw rate, acceleration, torque and power); times : grid to run the loop on (default the path's);
-    gain : bandwidth of the rate loop [1/s].
-    Returns the yaw's plan on ``times``: it starts at the reference rate of the first sample.
+    gain : bandwidth of the rate loop [1/s]; state : the yaw's (q0, qd0) at the start, by default
+    turning at the reference rate of the first sample (as an off-line guess).
+    Returns the yaw's plan on ``times``.
     """
     t = path.t if times is None else np.asarray(times, dtype=float)
     M_d = path.sample_modulus(t)
@@ -47,7 +48,8 @@ def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.
     reference = np.minimum(reference, lim.velocity[0])
     inertia = float(model.mass_matrix(np.zeros(1))[0, 0])  # yaw inertia: constant in dfs
     u = np.zeros(len(t) - 1)
-    rate = reference[0]
+    q0, rate0 = (np.zeros(1), reference[0]) if state is None else (np.reshape(state[0], 1), float(state[1][0]))
+    rate = rate0
     for k in range(len(t) - 1):
         h = t[k + 1] - t[k]
         # the most acceleration that torque and power allow at this rate (tau = I qdd for dfs)
@@ -58,7 +60,7 @@ def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.
         a = np.clip(a, (-lim.velocity[0] - rate) / h, (lim.velocity[0] - rate) / h)
         u[k] = a
         rate = rate + a * h
-    return Plan(t, [0.0], [reference[0]], u[:, None])
+    return Plan(t, q0, [rate0], u[:, None])
 
 
 @dataclass(frozen=True)
