@@ -170,3 +170,33 @@ def test_from_rest_the_mpc_leaves_the_stationary_point(params, config, bound):
     assert result.check.rms <= bound * offline.check.rms
     if config == "dfs":  # the thesis' claim (7.6): anticipation beats the classical loop
         assert result.check.rms <= 0.8 * result.baseline_check.rms
+
+
+def test_thesis_timing_replans_every_T_c_and_applies_each_plan_one_period_later(params):
+    """Thesis 7.5: T_h = 1 s, T_c = 0.4 s, h = 0.1 s; a plan computed from the state at t is applied
+    from t + T_c (7.1, figure 7.2), so the first period holds the machine still."""
+    path = profiles.catapult()
+    model = Model(params, "dfs")
+    timing = MPCOptions(horizon=1.0, step=0.1, replan=0.4, deadline=float("inf"))
+    now = run(path, model, OnlineOptions(timing))
+    late = run(path, model, OnlineOptions(dataclasses.replace(timing, delay=True)))
+    for result in (now, late):
+        assert result.check.passed and set(result.loop.sources) == {"mpc"}
+        np.testing.assert_allclose(result.loop.cycle_times, np.arange(0.0, 8.0, 0.4), atol=1e-12)
+        assert len(result.plan.u) == 80
+        assert result.check.rms < result.baseline_check.rms  # both beat the classical loop
+    np.testing.assert_array_equal(late.plan.u[:4], 0.0)  # nothing to apply before the first plan is done
+    assert np.any(now.plan.u[:4] != 0.0)
+    assert late.check.rms > now.check.rms  # the delay costs something
+
+
+def test_online_command_thesis_timing(tmp_path, capsys):
+    from desdemona.cli import main
+
+    out = tmp_path / "thesis"
+    assert main(["online", "catapult", "--config", "dfs", "--horizon", "1", "--step", "0.1", "--replan", "0.4",
+                 "--delay", "--out", str(out)]) == 0
+    assert (out / "cycles.csv").read_text().count("\n") == 21  # 20 cycles of 0.4 s
+    assert main(["online", "catapult", "--config", "dfs", "--step", "0.1", "--replan", "0.25",
+                 "--out", str(tmp_path / "x")]) == 2
+    assert "whole number of steps" in capsys.readouterr().err

@@ -108,7 +108,15 @@ def _parser() -> argparse.ArgumentParser:
     online.add_argument("--out", required=True, metavar="DIR")
     online.add_argument("--horizon", type=float, default=2.0, metavar="SECONDS", help="T_h (default: 2)")
     online.add_argument("--step", type=float, default=0.02, metavar="SECONDS",
-                        help="control period T_c, also the deadline of each cycle (default: 0.02)")
+                        help="h: the plan's grid, each acceleration is held this long (default: 0.02)")
+    online.add_argument("--replan", type=float, default=None, metavar="SECONDS",
+                        help="T_c: a new plan every T_c, a whole number of steps (default: every step)")
+    online.add_argument("--delay", action="store_true",
+                        help="simulate the computation time as the thesis does: a plan computed from the "
+                             "state at t is applied from t + T_c (the thesis' setting: --horizon 1 --step 0.1 "
+                             "--replan 0.4 --delay)")
+    online.add_argument("--deadline", type=float, default=None, metavar="SECONDS",
+                        help="compute budget per plan; a later plan is not used (default: T_c)")
     online.add_argument("--predictor", choices=("perfect", "hold", "linear"), default="perfect",
                         help="how the future path is guessed from what is known now (default: perfect)")
     online.add_argument("--method", choices=("rti", "nlp"), default="rti",
@@ -257,8 +265,14 @@ def _run_online(args) -> int:
     model, path, out = _run_inputs(args)
     if not (0 < args.step and 2 * args.step <= args.horizon <= path.duration):
         raise UserError(f"need 0 < --step, 2 steps <= --horizon <= the path's {path.duration:g} s")
-    options = online.OnlineOptions(online.MPCOptions(horizon=args.horizon, step=args.step, method=args.method),
-                                   predictor=args.predictor)
+    if args.deadline is not None and not args.deadline > 0:
+        raise UserError(f"--deadline {args.deadline:g}: must be a positive number of seconds")
+    try:
+        mpc = online.MPCOptions(horizon=args.horizon, step=args.step, replan=args.replan, delay=args.delay,
+                                deadline=args.deadline, method=args.method)
+    except ValueError as exc:
+        raise UserError(f"--replan: {exc}") from None
+    options = online.OnlineOptions(mpc, predictor=args.predictor)
     result = online.run(path, model, options)
     report.write_online(result, out, report.command_line(), args.overwrite)
     c, times, sources = result.check, result.loop.compute_times, result.loop.sources

@@ -48,8 +48,11 @@ REST_RATE = 0.05  # rad/s: below this over a whole seed the yaw counts as still 
 
 @dataclass(frozen=True)
 class MPCOptions:
-    """horizon : T_h [s]; step : h = T_c [s], the control period and the grid of the plan; deadline :
-    compute budget per step [s] (default: the step); substeps, regularisation, margin, weights : as in
+    """horizon : T_h [s]; step : h [s], the grid of the plan (its accelerations are held this long);
+    replan : T_c [s], the period at which a new plan is computed, a whole number of steps (default:
+    every step); delay : simulate the computation time as the thesis does (7.1, figure 7.2): the plan
+    computed during [t, t + T_c] from the state at t is applied from t + T_c, so it starts from the state
+    predicted there; deadline : compute budget per plan [s] (default: T_c); substeps, regularisation, margin, weights : as in
     :class:`desdemona.problem.ProblemOptions`; braking : fraction of the acceleration limit assumed
     for stopping; method : "rti" (real-time iteration: one Gauss-Newton QP per step, linearised at the
     shifted previous plan, solved by CasADi's ``qp_solver`` plugin) or "nlp" (IPOPT to convergence,
@@ -61,6 +64,8 @@ class MPCOptions:
 
     horizon: float = 2.0
     step: float = 0.02
+    replan: float | None = None
+    delay: bool = False
     deadline: float | None = None
     substeps: int = 1
     regularisation: float = 1e-4
@@ -76,20 +81,40 @@ class MPCOptions:
     def __post_init__(self):
         if not (self.step > 0 and self.horizon >= 2 * self.step):
             raise ValueError(f"need step > 0 and horizon >= 2 steps, got step {self.step}, horizon {self.horizon}")
+        r = self.period / self.step
+        if not (abs(r - round(r)) < 1e-9 and 1 <= round(r) and self.period <= self.horizon - self.step):
+            raise ValueError(f"replan = {self.replan}: the re-plan period must be a whole number of steps "
+                             f"({self.step:g} s) and shorter than the horizon ({self.horizon:g} s)")
+
+    @property
+    def period(self) -> float:
+        """T_c [s]: the time between two plans."""
+        return self.step if self.replan is None else self.replan
+
+    @property
+    def replan_steps(self) -> int:
+        """Steps of a plan applied before the next plan takes over."""
+        return int(round(self.period / self.step))
 
 
 @dataclass(frozen=True)
 class Command:
-    """What one step returns: the joint accelerations to hold for the next step, and why.
+    """What one cycle returns: the joint accelerations to hold for its steps, and why.
 
-    source : "mpc" (this step's plan), "shifted" (the previous plan), "brake" (no plan left);
-    compute_time [s] of the step; reason : why a fallback was used ("" for "mpc").
+    sequence : (r, n) accelerations, each held for one step, r = ``options.replan_steps``;
+    source : "mpc" (this cycle's plan), "shifted" (the previous plan), "brake" (no plan left);
+    compute_time [s] of the cycle; reason : why a fallback was used ("" for "mpc").
     """
 
-    qdd: np.ndarray
+    sequence: np.ndarray
     source: Literal["mpc", "shifted", "brake"]
     compute_time: float
     reason: str = ""
+
+    @property
+    def qdd(self) -> np.ndarray:
+        """(n,) the first step's accelerations."""
+        return self.sequence[0]
 
 
 def predict_perfect(path: DesiredPath, now: float, horizon: float) -> DesiredPath:
@@ -134,7 +159,7 @@ class MPC:
 
     def __init__(self, model: Model, options: MPCOptions = MPCOptions(), weights=None):
         self.model, self.options = model, options
-        self.deadline = options.deadline if options.deadline is not None else options.step
+        self.deadline = options.deadline if options.deadline is not None else options.period
         n_steps = int(round(options.horizon / options.step))
         t = np.linspace(0.0, n_steps * options.step, n_steps + 1)
         # A placeholder path fixes the problem's shape; the preview arrives as its parameter each step.
@@ -159,11 +184,12 @@ class MPC:
     # ------------------------------------------------------------------------------------------
 
     def step(self, state, preview) -> Command:
-        """The command for the next step from the measured state (q, qd) and the preview of S_d.
+        """The commands of the coming cycle from the state (q, qd) and the preview of S_d.
 
-        preview : a :class:`DesiredPath` starting now, or raw arrays ``(t, values)`` with t (K,) [s]
-            from now and values (K, 6) of S_d or (K,) of M_d for ``dfs`` (as a predictor may deliver
-            them, NaN included: such a preview is not used).
+        state : where the plan starts: the measured state, or with ``delay`` the state predicted for
+            when the plan takes over; preview : a :class:`DesiredPath` starting there, or raw arrays
+            ``(t, values)`` with t (K,) [s] from there and values (K, 6) of S_d or (K,) of M_d for
+            ``dfs`` (as a predictor may deliver them, NaN included: such a preview is not used).
         """
         start = time.perf_counter()
         q, qd = (np.asarray(v, dtype=float).reshape(self.model.n) for v in state)
@@ -179,22 +205,25 @@ class MPC:
                 reason, plan = "solver failed", None
             elif elapsed > self.deadline:
                 reason, plan = f"deadline missed ({elapsed * 1e3:.1f} ms > {self.deadline * 1e3:.1f} ms)", None
-        if plan is not None and self._safe(q, qd, plan[1][0]):
+        r = self.options.replan_steps
+        if plan is not None and self._safe_sequence(q, qd, plan[1][:r]):
             self.plan, self.plan_age = plan, 0
-            command = Command(plan[1][0].copy(), "mpc", time.perf_counter() - start)
+            command = Command(plan[1][:r].copy(), "mpc", time.perf_counter() - start)
         else:
             reason = reason or "plan fails the limit check"
             command = self._fallback(q, qd, reason, start)
         if self.problem.nz:
-            self._advance_filters(q, qd, command.qdd)
+            self._advance_filters(q, qd, command.sequence)
         return command
 
-    def _advance_filters(self, q, qd, qdd) -> None:
-        """Carry the felt filter state over the step just commanded, and the desired one with it."""
+    def _advance_filters(self, q, qd, sequence) -> None:
+        """Carry the felt filter state over the cycle just commanded, and the desired one with it."""
         prob = self.problem
-        S = self.model.S(*advance(q, qd, qdd, prob.tau_sub[:-1, None]), np.tile(qdd, (prob.m, 1)))
-        for row in S:
-            self.z = prob.filter.Ad @ self.z + prob.filter.Bd @ row
+        for qdd in sequence:
+            S = self.model.S(*advance(q, qd, qdd, prob.tau_sub[:-1, None]), np.tile(qdd, (prob.m, 1)))
+            for row in S:
+                self.z = prob.filter.Ad @ self.z + prob.filter.Bd @ row
+            q, qd = advance(q, qd, qdd, self.options.step)
         # without a usable preview the desired state is unknown: restart from the next preview's steady state
         self.z_d = self._z_d_next
 
@@ -230,7 +259,7 @@ class MPC:
         if self.z_d is None:
             self.z_d = prob.filter.steady_state(held[0])
         y_d, states = prob.filter.simulate(held, self.z_d)
-        self._z_d_next = states[prob.m]  # after this step's sub-steps
+        self._z_d_next = states[prob.m * self.options.replan_steps]  # after this cycle's sub-steps
         return y_d.reshape(prob.N, -1).T
 
     def _real_time_iteration(self, qp_solver: str):
@@ -282,7 +311,7 @@ class MPC:
         n = self.model.n
         if self.plan is not None:
             _, u_prev = self.plan
-            shift = min(self.plan_age + 1, len(u_prev) - 1)
+            shift = min(self.plan_age + self.options.replan_steps, len(u_prev) - 1)
             u = np.vstack([u_prev[shift:], np.repeat(u_prev[-1:], shift, axis=0)])
         else:
             u = np.zeros((prob.N, n))
@@ -358,14 +387,27 @@ class MPC:
                 uses.append(1.0 + outside)
         return ca.Function("limit_use", [q, qd, qdd], [ca.vertcat(*uses)])
 
+    def _safe_sequence(self, q, qd, sequence) -> bool:
+        """:meth:`_safe` for every step of a sequence of accelerations, from (q, qd) on."""
+        for qdd in sequence:
+            if not self._safe(q, qd, qdd):
+                return False
+            q, qd = advance(q, qd, qdd, self.options.step)
+        return True
+
     def _fallback(self, q, qd, reason: str, start: float) -> Command:
-        if self.plan is not None and self.plan_age + 1 < len(self.plan[1]):
-            self.plan_age += 1
-            qdd = self.plan[1][self.plan_age]
-            if self._safe(q, qd, qdd):
-                return Command(qdd.copy(), "shifted", time.perf_counter() - start, reason)
+        r = self.options.replan_steps
+        if self.plan is not None and self.plan_age + 2 * r <= len(self.plan[1]):
+            self.plan_age += r
+            sequence = self.plan[1][self.plan_age:self.plan_age + r]
+            if self._safe_sequence(q, qd, sequence):
+                return Command(sequence.copy(), "shifted", time.perf_counter() - start, reason)
         self.plan = None
-        return Command(self.brake(q, qd), "brake", time.perf_counter() - start, reason)
+        sequence = []
+        for _ in range(r):
+            sequence.append(self.brake(q, qd))
+            q, qd = advance(q, qd, sequence[-1], self.options.step)
+        return Command(np.array(sequence), "brake", time.perf_counter() - start, reason)
 
     def brake(self, q, qd) -> np.ndarray:
         """The strongest deceleration towards rest (at most ``braking`` x the acceleration limit, not

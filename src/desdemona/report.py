@@ -233,7 +233,7 @@ def write_online(result, out_dir: str | Path, command: str | None = None, overwr
     def extra(folder: Path) -> None:
         with open(folder / "cycles.csv", "w") as fh:
             fh.write("t,compute_time_s,source,reason\n")
-            for t, c, s, r in zip(loop.plan.t_nodes, loop.compute_times, loop.sources, loop.reasons):
+            for t, c, s, r in zip(loop.cycle_times, loop.compute_times, loop.sources, loop.reasons):
                 fh.write(f"{t:.6g},{c:.6g},{s},\"{r}\"\n")
         figures.draw_online(result, folder)
 

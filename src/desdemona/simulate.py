@@ -170,10 +170,11 @@ def check(model: Model, path: DesiredPath, plan: Plan, step: float, fine: int = 
 
 @dataclass(frozen=True, eq=False)
 class ClosedLoop:
-    """A closed-loop run: the plan the plant executed, and per control cycle the source of the command,
-    the compute time [s] and the reason for any fallback."""
+    """A closed-loop run: the plan the plant executed, and per control cycle its start time [s], the
+    source of its commands, the compute time [s] and the reason for any fallback."""
 
     plan: Plan
+    cycle_times: np.ndarray
     sources: tuple[str, ...]
     compute_times: np.ndarray
     reasons: tuple[str, ...] = field(default=())
@@ -181,26 +182,57 @@ class ClosedLoop:
 
 def closed_loop(controller, path: DesiredPath, predictor, q0=None, qd0=None,
                 duration: float | None = None) -> ClosedLoop:
-    """Run a controller against the plant: each step's commanded accelerations are held for one
-    control period T_c and integrated exactly (the same model, as the machine's servos follow it).
+    """Run a controller against the plant: each cycle's commanded accelerations are held one step
+    each and integrated exactly (the same model, as the machine's servos follow it).
 
-    controller : has ``step((q, qd), preview) -> command`` with ``command.qdd``, ``.source``,
-        ``.compute_time``, ``.reason``, and ``options.step`` / ``options.horizon`` (e.g.
-        :class:`desdemona.online.MPC`); predictor : ``predictor(path, now, horizon) -> preview``,
-        e.g. from :data:`desdemona.online.PREDICTORS`. Every step's compute time is recorded.
+    controller : has ``step((q, qd), preview) -> command`` with ``command.sequence`` (r, n),
+        ``.source``, ``.compute_time``, ``.reason``, and ``options`` with ``step``, ``horizon``,
+        ``period`` (T_c = r steps) and ``delay`` (e.g. :class:`desdemona.online.MPC`);
+        predictor : ``predictor(path, now, horizon) -> preview``, e.g. from
+        :data:`desdemona.online.PREDICTORS`. Every cycle's compute time is recorded.
+
+    With ``delay`` (thesis 7.1, figure 7.2) the plan computed in the cycle that starts at t is applied
+    from t + T_c: the controller is given the state predicted for then (the commands of the running
+    cycle applied to the state at t) and the preview from t + T_c as predicted at t; the first cycle
+    holds the machine still (zero accelerations: the session starts at rest).
     """
-    h, n = controller.options.step, controller.model.n
+    o = controller.options
+    h, n, r = o.step, controller.model.n, o.replan_steps
     steps = int(math.floor((duration or path.duration) / h + 1e-9))
     q = np.zeros(n) if q0 is None else np.asarray(q0, float).copy()
     qd = np.zeros(n) if qd0 is None else np.asarray(qd0, float).copy()
     start_q, start_qd = q.copy(), qd.copy()
-    u, sources, times, reasons = [], [], [], []
-    for k in range(steps):
-        command = controller.step((q, qd), predictor(path, k * h, controller.options.horizon))
-        u.append(command.qdd)
+    u, starts, sources, times, reasons = [], [], [], [], []
+    pending = np.zeros((r, n))  # with delay: the commands of the running cycle
+    for k in range(0, steps, r):
+        now = k * h
+        if o.delay:
+            q_next, qd_next = q, qd
+            for qdd in pending:
+                q_next, qd_next = advance(q_next, qd_next, qdd, h)
+            command = controller.step((q_next, qd_next), _later(predictor(path, now, o.horizon + o.period), o.period))
+            sequence, pending = pending, command.sequence
+        else:
+            command = controller.step((q, qd), predictor(path, now, o.horizon))
+            sequence = command.sequence
+        starts.append(now)
         sources.append(command.source)
         times.append(command.compute_time)
         reasons.append(command.reason)
-        q, qd = advance(q, qd, command.qdd, h)
-    return ClosedLoop(Plan(np.arange(steps + 1) * h, start_q, start_qd, np.array(u)), tuple(sources),
-                      np.array(times), tuple(reasons))
+        for qdd in sequence[:steps - k]:
+            u.append(qdd)
+            q, qd = advance(q, qd, qdd, h)
+    return ClosedLoop(Plan(np.arange(len(u) + 1) * h, start_q, start_qd, np.array(u)), np.array(starts),
+                      tuple(sources), np.array(times), tuple(reasons))
+
+
+def _later(preview, offset: float):
+    """The part of a preview from ``offset`` [s] on, with its time counted from there."""
+    if isinstance(preview, DesiredPath):
+        keep = preview.t >= offset - 1e-12
+        return DesiredPath(preview.name, preview.t[keep] - offset,
+                           None if preview.S_d is None else preview.S_d[keep], preview.weights,
+                           preview.description, None if preview.modulus is None else preview.modulus[keep])
+    t, values = (np.asarray(v, dtype=float) for v in preview)
+    keep = t >= offset - 1e-12
+    return t[keep] - offset, values[keep]
