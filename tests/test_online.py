@@ -7,10 +7,11 @@ import pytest
 
 from desdemona import Model, profiles
 from desdemona.offline import OptimizeOptions, optimize
-from desdemona.online import (MPC, PREDICTORS, MPCOptions, OnlineOptions, predict_hold, predict_linear,
-                              predict_perfect, run)
+from desdemona.online import MPC, MPCOptions, OnlineOptions, run
+from desdemona.predictors import PREDICTORS, predict_hold, predict_linear, predict_perfect
 from desdemona.perception import thesis_model
 from desdemona.problem import ProblemOptions
+from desdemona.profiles import DesiredPath
 from desdemona.simulate import check, closed_loop
 
 # No deadline in tests: timings are measured in the benchmark, never asserted here.
@@ -200,3 +201,21 @@ def test_online_command_thesis_timing(tmp_path, capsys):
     assert main(["online", "catapult", "--config", "dfs", "--step", "0.1", "--replan", "0.25",
                  "--out", str(tmp_path / "x")]) == 2
     assert "whole number of steps" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("speed", [1.1, 0.9])
+def test_route_predictor_previews_a_faster_or_slower_noisy_replay(params, speed):
+    """A ride on a known coaster, replayed 10 % faster or slower with sensor noise: previewed from the
+    reference recording, the MPC comes within 30 % of perfect preview and well below holding the
+    present value."""
+    reference = profiles.roller_coaster(duration=20.0)
+    rng = np.random.default_rng(7)
+    t = np.arange(0.0, reference.duration / speed, 0.01)
+    noisy = reference.sample_modulus(speed * t) + rng.normal(0.0, 0.3, len(t))
+    live = DesiredPath("live", t, None, modulus=np.maximum(noisy, 0.0))
+    model = Model(params, "dfs")
+    options = dataclasses.replace(OPTIONS, horizon=2.0, step=0.05)
+    rms = {name: run(live, model, OnlineOptions(options, predictor=name, reference=reference)).check.rms
+           for name in ("perfect", "hold", "route")}
+    assert rms["route"] <= 1.3 * rms["perfect"]
+    assert rms["route"] <= 0.8 * rms["hold"]

@@ -117,8 +117,13 @@ def _parser() -> argparse.ArgumentParser:
                              "--replan 0.4 --delay)")
     online.add_argument("--deadline", type=float, default=None, metavar="SECONDS",
                         help="compute budget per plan; a later plan is not used (default: T_c)")
-    online.add_argument("--predictor", choices=("perfect", "hold", "linear"), default="perfect",
-                        help="how the future path is guessed from what is known now (default: perfect)")
+    online.add_argument("--predictor", choices=("perfect", "hold", "linear", "route"), default="perfect",
+                        help="how the future path is guessed from what is known now: the true future "
+                             "(perfect), the present held (hold), extrapolated (linear), or from a "
+                             "recording of the same course aligned to the live signal (route, needs "
+                             "--reference) (default: perfect)")
+    online.add_argument("--reference", metavar="PROFILE_OR_CSV", default=None,
+                        help="with --predictor route: a recording of the course (same channels as the path)")
     online.add_argument("--method", choices=("rti", "nlp"), default="rti",
                         help="rti: one QP per cycle (fast); nlp: IPOPT to convergence (default: rti)")
     online.add_argument("--overwrite", action="store_true", help="replace DIR if it exists")
@@ -272,7 +277,17 @@ def _run_online(args) -> int:
                                 deadline=args.deadline, method=args.method)
     except ValueError as exc:
         raise UserError(f"--replan: {exc}") from None
-    options = online.OnlineOptions(mpc, predictor=args.predictor)
+    reference = None
+    if args.predictor == "route":
+        if args.reference is None:
+            raise UserError("--predictor route needs --reference, a recording of the same course")
+        reference = profiles.load(args.reference)
+        if (reference.S_d is None) != (path.S_d is None):
+            raise UserError(f"--reference {args.reference}: its channels ({'t,M' if reference.S_d is None else 'S'}) "
+                            f"differ from the path's")
+    elif args.reference is not None:
+        raise UserError("--reference is used only with --predictor route")
+    options = online.OnlineOptions(mpc, predictor=args.predictor, reference=reference)
     result = online.run(path, model, options)
     report.write_online(result, out, report.command_line(), args.overwrite)
     c, times, sources = result.check, result.loop.compute_times, result.loop.sources

@@ -13,9 +13,7 @@ the next step of the previous plan; when no plan is left, a braking command. Eve
 its source, is checked against every limit over the coming step before it is returned; a braking
 command is scaled down until it passes. The controller never returns a command that violates a limit.
 
-Predictors (:data:`PREDICTORS`) turn what is known now into the preview: ``perfect`` (the thesis'
-assumption: the true future), ``hold`` (the present value held) and ``linear`` (extrapolated from the
-last two samples).
+The predictors that turn what is known now into the preview live in :mod:`desdemona.predictors`.
 
 :func:`run` is a whole closed-loop session as a value: the MPC against the plant
 (:func:`desdemona.simulate.closed_loop`), the independent check, and the classical loop beside it
@@ -37,6 +35,7 @@ from desdemona.baselines import classical_dfs
 from desdemona.model import Model
 from desdemona.perception import VestibularModel
 from desdemona.plan import Plan, advance
+from desdemona.predictors import PREDICTORS, predictor
 from desdemona.problem import CueingProblem, ProblemOptions
 from desdemona.profiles import DesiredPath
 from desdemona.simulate import (TOLERANCE, ClosedLoop, LimitCheck, LimitViolation, Trajectory, check, closed_loop,
@@ -115,43 +114,6 @@ class Command:
     def qdd(self) -> np.ndarray:
         """(n,) the first step's accelerations."""
         return self.sequence[0]
-
-
-def predict_perfect(path: DesiredPath, now: float, horizon: float) -> DesiredPath:
-    """The true future of the path over [now, now + horizon] (the thesis' assumption in 7.3)."""
-    return _window(path, now, horizon, lambda t: t)
-
-
-def predict_hold(path: DesiredPath, now: float, horizon: float) -> DesiredPath:
-    """The value at ``now`` held over the horizon."""
-    return _window(path, now, horizon, lambda t: np.full_like(t, now))
-
-
-def predict_linear(path: DesiredPath, now: float, horizon: float) -> DesiredPath:
-    """Linear extrapolation from the last two samples at or before ``now``."""
-    k = max(1, int(np.searchsorted(path.t, now, side="right")) - 1)
-    t0, t1 = path.t[k - 1], path.t[k]
-
-    def values(column):
-        slope = (column[k] - column[k - 1]) / (t1 - t0)
-        return lambda t: column[k] + slope * (t - t1)
-
-    t = now + np.linspace(0.0, horizon, max(2, int(round(horizon / np.min(np.diff(path.t)))) + 1))
-    S = None if path.S_d is None else np.column_stack([values(path.S_d[:, i])(t) for i in range(6)])
-    M = None if path.S_d is not None else np.maximum(values(path.M_d)(t), 0.0)
-    return DesiredPath(path.name, t - now, S, path.weights, path.description, M)
-
-
-PREDICTORS = {"perfect": predict_perfect, "hold": predict_hold, "linear": predict_linear}
-
-
-def _window(path: DesiredPath, now: float, horizon: float, source_times) -> DesiredPath:
-    dt = float(np.min(np.diff(path.t)))
-    t = now + np.linspace(0.0, horizon, max(2, int(round(horizon / dt)) + 1))
-    times = np.clip(source_times(t), path.t[0], path.t[-1])
-    S = None if path.S_d is None else path.sample(times)
-    M = None if path.S_d is not None else path.sample_modulus(times)
-    return DesiredPath(path.name, t - now, S, path.weights, path.description, M)
 
 
 class MPC:
@@ -428,16 +390,20 @@ class MPC:
 @dataclass(frozen=True)
 class OnlineOptions:
     """Options of :func:`run`: the controller's (:class:`MPCOptions`), the predictor's name
-    (:data:`PREDICTORS`) and the machine's state when the session starts, ``initial_state`` = (q0, qd0)
-    of the free joints; None for rest at the centre (every joint at 0, as a real session starts)."""
+    (:data:`desdemona.predictors.PREDICTORS`) and, for ``route``, its ``reference`` recording, and the
+    machine's state when the session starts, ``initial_state`` = (q0, qd0) of the free joints; None for
+    rest at the centre (every joint at 0, as a real session starts)."""
 
     mpc: MPCOptions = MPCOptions()
-    predictor: Literal["perfect", "hold", "linear"] = "perfect"
+    predictor: Literal["perfect", "hold", "linear", "route"] = "perfect"
     initial_state: tuple | None = None
+    reference: DesiredPath | None = None
 
     def __post_init__(self):
         if self.predictor not in PREDICTORS:
             raise ValueError(f"predictor = {self.predictor!r}: must be one of {', '.join(PREDICTORS)}")
+        if self.predictor == "route" and self.reference is None:
+            raise ValueError("predictor 'route' needs a reference recording of the course")
 
     def start(self, n: int) -> tuple[np.ndarray, np.ndarray]:
         """(q0, qd0) of ``n`` free joints: the given state, or rest at the centre."""
@@ -505,7 +471,7 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
     step = options.mpc.step
     q0, qd0 = options.start(model.n)
     controller = MPC(model, options.mpc, weights=path.weights)
-    loop = closed_loop(controller, path, PREDICTORS[options.predictor], q0=q0, qd0=qd0)
+    loop = closed_loop(controller, path, predictor(options.predictor, options.reference), q0=q0, qd0=qd0)
     result, _ = check(model, path, loop.plan, step=step)
     if not result.passed:
         raise LimitViolation(result, "the closed-loop trajectory")

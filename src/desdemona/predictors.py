@@ -1,0 +1,137 @@
+"""Predictors: what the on-line controller is told of the future (thesis 7.3).
+
+The thesis assumes "that the path can be fully estimated" and notes that how to estimate it "depends
+on the vehicle to be simulated and the mission of the pilot". A predictor is a callable
+``predictor(path, now, horizon) -> preview``: it may read the live path only up to ``now`` (except
+``perfect``), and returns the expected S_d (or M_d) over [now, now + horizon] as a
+:class:`~desdemona.profiles.DesiredPath` whose time starts at 0.
+
+- ``perfect``: the true future (the thesis' assumption; the bound for any other predictor);
+- ``hold``: the present value held;
+- ``linear``: extrapolated from the last two samples;
+- ``route``: a known course (:class:`RoutePredictor`): the future taken from a reference recording of
+  the same route (a car on a known track, a ride on a coaster, a rehearsed manoeuvre), aligned to the
+  live signal by its recent past, so that a run that is faster, slower or noisier than the reference
+  is still previewed in step with it.
+
+:func:`predictor` makes a fresh one by name (route predictors carry state from call to call).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from desdemona.profiles import DesiredPath
+
+
+def predict_perfect(path: DesiredPath, now: float, horizon: float) -> DesiredPath:
+    """The true future of the path over [now, now + horizon] (the thesis' assumption in 7.3)."""
+    return _window(path, now, horizon, lambda t: t)
+
+
+def predict_hold(path: DesiredPath, now: float, horizon: float) -> DesiredPath:
+    """The value at ``now`` held over the horizon."""
+    return _window(path, now, horizon, lambda t: np.full_like(t, now))
+
+
+def predict_linear(path: DesiredPath, now: float, horizon: float) -> DesiredPath:
+    """Linear extrapolation from the last two samples at or before ``now``."""
+    k = max(1, int(np.searchsorted(path.t, now, side="right")) - 1)
+    t0, t1 = path.t[k - 1], path.t[k]
+
+    def values(column):
+        slope = (column[k] - column[k - 1]) / (t1 - t0)
+        return lambda t: column[k] + slope * (t - t1)
+
+    t = now + _grid(path, horizon)
+    S = None if path.S_d is None else np.column_stack([values(path.S_d[:, i])(t) for i in range(6)])
+    M = None if path.S_d is not None else np.maximum(values(path.M_d)(t), 0.0)
+    return DesiredPath(path.name, t - now, S, path.weights, path.description, M)
+
+
+class RoutePredictor:
+    """The future from a reference recording of the same course, aligned to the live signal.
+
+    The live run is taken to follow the reference at a position s(t) along the reference's time,
+    advancing at a rate near 1 (a lap driven a little faster or slower). At each call the position and
+    rate are those that best match the last ``window`` seconds of the live signal to the reference
+    (least squares over a grid of rates in ``rates`` and positions within ``search`` seconds of where
+    the last estimate predicts, with a small pull towards that prediction where the signal is too flat
+    to tell); the preview is the reference from s onwards at that rate.
+
+    reference : a recording of the course, with the same channels as the live path (S_d or M_d);
+    window, search [s]; rates : (slowest, fastest) rate of the live run against the reference.
+    """
+
+    def __init__(self, reference: DesiredPath, window: float = 2.0, search: float = 1.0,
+                 rates: tuple[float, float] = (0.8, 1.25)):
+        if not (window > 0 and search > 0 and 0 < rates[0] <= 1.0 <= rates[1]):
+            raise ValueError("the route predictor needs window > 0, search > 0 and rates around 1")
+        self.reference, self.window, self.search = reference, window, search
+        self.rates = np.linspace(rates[0], rates[1], 19)
+        values = self._values(reference, reference.t)
+        self._scale = 1.0 / (np.std(values, axis=0) + 1e-6)  # every channel counts alike
+        self.position, self.rate, self.time = float(reference.t[0]), 1.0, None
+
+    @staticmethod
+    def _values(path: DesiredPath, times) -> np.ndarray:
+        return path.sample(times) if path.S_d is not None else path.sample_modulus(times)[:, None]
+
+    def _align(self, path: DesiredPath, now: float) -> None:
+        expected = self.position if self.time is None else self.position + self.rate * (now - self.time)
+        dt = float(np.min(np.diff(path.t)))
+        ago = np.arange(0.0, min(self.window, now - path.t[0]) + 1e-9, dt)
+        if len(ago) < 5:  # too little seen yet: keep to the expected place
+            self.position, self.time = expected, now
+            return
+        live = self._values(path, now - ago) * self._scale
+        positions = expected + np.linspace(-self.search, self.search, 41)
+        rates = self.rates
+        for _ in range(2):  # a grid, then a finer one around its best point
+            times = positions[None, :, None] - rates[:, None, None] * ago[None, None, :]
+            reference = self._values(self.reference, times.ravel()).reshape(*times.shape, -1) * self._scale
+            error = np.mean((reference - live[None, None]) ** 2, axis=(2, 3))
+            error += 1e-3 * ((positions[None, :] - expected) / self.search) ** 2
+            i, j = np.unravel_index(np.argmin(error), error.shape)
+            best_rate, best_position = rates[i], positions[j]
+            positions = best_position + np.linspace(-1, 1, 21) * (positions[1] - positions[0])
+            rates = best_rate + np.linspace(-1, 1, 11) * (self.rates[1] - self.rates[0])
+        self.position, self.rate, self.time = float(best_position), float(best_rate), now
+
+    def __call__(self, path: DesiredPath, now: float, horizon: float) -> DesiredPath:
+        self._align(path, now)
+        t = _grid(path, horizon)
+        times = np.clip(self.position + self.rate * t, self.reference.t[0], self.reference.t[-1])
+        ref = self.reference
+        S = None if ref.S_d is None else ref.sample(times)
+        M = None if ref.S_d is not None else ref.sample_modulus(times)
+        return DesiredPath(path.name, t, S, path.weights, f"route preview from {ref.name}", M)
+
+
+PREDICTORS = {"perfect": predict_perfect, "hold": predict_hold, "linear": predict_linear,
+              "route": RoutePredictor}
+
+
+def predictor(name: str, reference: DesiredPath | None = None):
+    """A fresh predictor called ``name`` (:data:`PREDICTORS`); ``route`` needs its reference recording."""
+    if name not in PREDICTORS:
+        raise ValueError(f"unknown predictor {name!r}; valid: {', '.join(PREDICTORS)}")
+    if name == "route":
+        if reference is None:
+            raise ValueError("the route predictor needs a reference recording of the course")
+        return RoutePredictor(reference)
+    return PREDICTORS[name]
+
+
+def _grid(path: DesiredPath, horizon: float) -> np.ndarray:
+    """Times [0, horizon] at the path's finest sample step."""
+    dt = float(np.min(np.diff(path.t)))
+    return np.linspace(0.0, horizon, max(2, int(round(horizon / dt)) + 1))
+
+
+def _window(path: DesiredPath, now: float, horizon: float, source_times) -> DesiredPath:
+    t = now + _grid(path, horizon)
+    times = np.clip(source_times(t), path.t[0], path.t[-1])
+    S = None if path.S_d is None else path.sample(times)
+    M = None if path.S_d is not None else path.sample_modulus(times)
+    return DesiredPath(path.name, t - now, S, path.weights, path.description, M)
