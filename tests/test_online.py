@@ -219,3 +219,27 @@ def test_route_predictor_previews_a_faster_or_slower_noisy_replay(params, speed)
            for name in ("perfect", "hold", "route")}
     assert rms["route"] <= 1.3 * rms["perfect"]
     assert rms["route"] <= 0.8 * rms["hold"]
+
+
+SHORT_PATHS = {
+    "cosine": lambda: profiles.cosine(duration=3.0),
+    "catapult": lambda: profiles.catapult(level=15.0, push=1.0, quiet=0.5, duration=4.0),
+    "double-pulse": lambda: profiles.pulses(count=2, width=0.5, gap=0.5, quiet=0.5, tail=1.0),
+    "triple-pulse": lambda: profiles.pulses(count=3, width=0.5, gap=0.5, quiet=0.5, tail=1.0),
+    "car-lap": lambda: profiles.car_lap(duration_target=8.0),
+    "roller-coaster": lambda: profiles.roller_coaster(duration=8.0),
+    "dfs-catapult": lambda: profiles.dfs_catapult(),
+}
+SUITED = [(name, config) for name in SHORT_PATHS for config in ("dfs", "yaw-track", "yaw-track-cabin", "full")
+          if config == "dfs" or name not in ("roller-coaster", "dfs-catapult")]
+
+
+@pytest.mark.parametrize("name, config", SUITED, ids=[f"{n}-{c}" for n, c in SUITED])
+def test_every_profile_from_rest_beats_its_classical_baseline(params, name, config):
+    """Short versions of every built-in profile on every configuration it suits: from rest, within
+    every limit, and better than what a simulator runs today (classical loop or washout)."""
+    path = SHORT_PATHS[name]()
+    result = run(path, Model(params, config), OnlineOptions(dataclasses.replace(OPTIONS, horizon=2.0, step=0.1)))
+    assert result.check.passed and result.baseline_check.passed
+    assert np.all(result.plan.qd0 == 0.0)
+    assert result.check.rms < result.baseline_check.rms

@@ -22,6 +22,7 @@ from typing import Literal
 
 import numpy as np
 import scipy.optimize
+import scipy.signal
 
 from desdemona.model import Model
 from desdemona.plan import Plan, advance
@@ -61,6 +62,112 @@ def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.
         u[k] = a
         rate = rate + a * h
     return Plan(t, q0, [rate0], u[:, None])
+
+
+@dataclass(frozen=True)
+class Washout:
+    """Settings of the classical washout (:func:`classical_washout`), after Reid & Nahon's classical
+    algorithm; assumptions chosen for Desdemona's 8 m track and 2 m heave, not the thesis'.
+
+    omega_hp, zeta_hp : second-order high-pass of the specific force sent to the track and heave
+    [rad/s, -]; omega_centre, zeta_centre : the spring that washes them back to the centre;
+    omega_lp, zeta_lp : second-order low-pass of f_x, f_y for tilt coordination; tilt_rate : the
+    largest tilt rate [rad/s], at the perception threshold so that the tilt is not felt as rotation;
+    omega_rot : first-order high-pass of the angular velocity [rad/s]; gain : scale of S_d - rest.
+    The defaults had the lowest mean RMS of a small grid (omega_hp 0.5-1.5, omega_centre 0.2-0.5, gain
+    0.5-1) over the catapult, car lap, cosine and double pulse on yaw-track and full.
+    """
+
+    omega_hp: float = 0.5
+    zeta_hp: float = 0.7
+    omega_centre: float = 0.5
+    zeta_centre: float = 1.0
+    omega_lp: float = 2.0
+    zeta_lp: float = 0.7
+    tilt_rate: float = math.radians(3.0)
+    omega_rot: float = 0.5
+    gain: float = 0.5
+
+
+def _filtered(numerator, denominator, u, dt) -> np.ndarray:
+    """The response of a continuous SISO filter to ``u`` (K,) sampled at ``dt``, inputs held (ZOH),
+    from a zero state."""
+    b, a, _ = scipy.signal.cont2discrete((numerator, denominator), dt, method="zoh")
+    return scipy.signal.lfilter(np.ravel(b), a, u)
+
+
+def classical_washout(path: DesiredPath, model: Model, times=None, settings: Washout = Washout(),
+                      state=None) -> Plan:
+    """The classical washout a motion simulator runs today, on the yaw-track, yaw-track-cabin and
+    full configurations (Reid & Nahon's classical algorithm, with tilt coordination where the cabin
+    can tilt).
+
+    - Translational: f_y (track) and f_z - g (heave) through a second-order high-pass, plus a spring
+      that washes the joint back to its centre.
+    - Tilt coordination (full): the low-passed f_x and f_y held by tilting the cabin (q6 pitch: f_x
+      = -g sin q6; q4 roll: f_y = g sin q4), at most ``tilt_rate``, below the rotation threshold.
+    - Rotational: omega_z through a first-order high-pass as the yaw's rate (omega_x, omega_y the same
+      on the gimbals where they are free).
+
+    Every command then passes the limits: acceleration, a braking distance to the position limits,
+    and torque, power and rate over the step (:meth:`Model.step_limit_use`), scaled down until it does.
+    Returns the free joints' plan on ``times`` (default: the path's grid), from ``state`` (rest).
+    """
+    o = settings
+    t = path.t if times is None else np.asarray(times, dtype=float)
+    dt = float(np.min(np.diff(t)))
+    S_d = path.sample(t)
+    g = model.params.gravity
+    rest = np.array([0.0, 0.0, 0.0, 0.0, 0.0, g])
+    S_d = rest + o.gain * (S_d - rest)
+    free, lim = model.config.free, model.limits
+    hp2 = ([1.0, 0.0, 0.0], [1.0, 2 * o.zeta_hp * o.omega_hp, o.omega_hp**2])
+    lp2 = ([o.omega_lp**2], [1.0, 2 * o.zeta_lp * o.omega_lp, o.omega_lp**2])
+    hp1 = ([1.0, 0.0], [1.0, o.omega_rot])
+    # per free joint: what it follows
+    target_acc = np.zeros((len(t), model.n))  # translational: high-passed specific force
+    target_rate = np.zeros((len(t), model.n))  # rotational: high-passed angular velocity
+    target_angle = np.full((len(t), model.n), np.nan)  # tilt coordination
+    for k, joint in enumerate(free):
+        if joint == 1:
+            target_acc[:, k] = _filtered(*hp2, S_d[:, 4], dt)
+        elif joint == 2:
+            target_acc[:, k] = _filtered(*hp2, S_d[:, 5] - g, dt)
+        elif joint in (0, 4) and (joint == 0 or 0 not in free):
+            target_rate[:, k] = _filtered(*hp1, S_d[:, 2], dt)
+        elif joint == 3:
+            target_rate[:, k] = _filtered(*hp1, S_d[:, 0], dt)
+            target_angle[:, k] = np.arcsin(np.clip(_filtered(*lp2, S_d[:, 4], dt) / g, -0.5, 0.5))
+        elif joint == 5:
+            target_rate[:, k] = _filtered(*hp1, S_d[:, 1], dt)
+            target_angle[:, k] = -np.arcsin(np.clip(_filtered(*lp2, S_d[:, 3], dt) / g, -0.5, 0.5))
+    prismatic = np.array([model.params.joints[j].kind == "prismatic" for j in free])
+    tilt = ~np.isnan(target_angle[0])
+    use = model.step_limit_use(dt)
+    q, qd = (np.zeros(model.n), np.zeros(model.n)) if state is None else (np.array(state[0], float),
+                                                                          np.array(state[1], float))
+    q0, qd0 = q.copy(), qd.copy()
+    u = np.zeros((len(t) - 1, model.n))
+    wc, zc = o.omega_centre, o.zeta_centre
+    for k in range(len(t) - 1):
+        a = np.where(prismatic, target_acc[k] - wc**2 * q - 2 * zc * wc * qd, (target_rate[k] - qd) / 0.1)
+        if tilt.any():  # follow the tilt angle with the rate below the threshold
+            rate = np.clip((np.nan_to_num(target_angle[k]) - q) * 2.0, -o.tilt_rate, o.tilt_rate) + target_rate[k]
+            a = np.where(tilt, (rate - qd) / 0.1, a)
+        a = np.clip(a, -lim.acceleration, lim.acceleration)
+        # room to brake before a position limit at half the acceleration limit
+        for i in lim.bounded:
+            brake = 0.5 * lim.acceleration[i]
+            room_hi = np.sqrt(2 * brake * max(lim.position_max[i] - q[i], 0.0))
+            room_lo = -np.sqrt(2 * brake * max(q[i] - lim.position_min[i], 0.0))
+            a[i] = np.clip(a[i], (room_lo - qd[i]) / dt, (room_hi - qd[i]) / dt)
+        a = np.clip(a, -lim.acceleration, lim.acceleration)
+        for scale in (1.0, 0.75, 0.5, 0.25, 0.0):
+            if float(np.max(np.asarray(use(q, qd, scale * a)))) <= 1.0:
+                break
+        u[k] = scale * a
+        q, qd = advance(q, qd, u[k], dt)
+    return Plan(t, q0, qd0, u)
 
 
 @dataclass(frozen=True)

@@ -31,7 +31,7 @@ import casadi as ca
 import numpy as np
 
 from desdemona import metrics
-from desdemona.baselines import classical_dfs
+from desdemona.baselines import classical_dfs, classical_washout
 from desdemona.model import Model
 from desdemona.perception import VestibularModel
 from desdemona.plan import Plan, advance
@@ -135,7 +135,7 @@ class MPC:
             stoppable=True, braking=options.braking, perception=options.perception, initial_filter="given")
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         self.limits = model.limits
-        self._limit_use = self._limit_use_function()
+        self._limit_use = model.step_limit_use(options.step)
         self.z = self.z_d = None  # filter states of the felt and the desired path (with perception)
         self._z_d_next = None  # the desired filter state one step on, from this step's preview
         if options.method == "rti":
@@ -327,28 +327,6 @@ class MPC:
         """Every limit over the coming step with this command, to the independent check's tolerance."""
         return float(np.max(np.asarray(self._limit_use(q, qd, qdd)))) <= 1.0 + TOLERANCE
 
-    def _limit_use_function(self) -> ca.Function:
-        """The use of every limit (1 = at the limit) at the ends and the middle of the coming step.
-
-        Positions are parabolas and rates lines in time, torque and power smooth: the independent
-        check then verifies the whole run on its 10x finer grid. One CasADi call per command.
-        """
-        lim, n, h = self.limits, self.model.n, self.options.step
-        q, qd, qdd = (ca.SX.sym(k, n) for k in ("q", "qd", "qdd"))
-        uses = [ca.fabs(qdd) / ca.DM(lim.acceleration)]
-        bounded = lim.bounded
-        lo, hi = lim.position_min[bounded], lim.position_max[bounded]
-        for s in (0.0, 0.5 * h, h):
-            qs, qds = advance(q, qd, qdd, s)
-            tau = self.model.functions["tau"](qs, qds, qdd)
-            uses += [ca.fabs(qds) / ca.DM(lim.velocity), ca.fabs(tau) / ca.DM(lim.effort),
-                     ca.fabs(tau * qds) / ca.DM(lim.power)]
-            if bounded:
-                # 1 + how far outside [lo, hi] as a share of the range: <= 1 + tol inside
-                outside = ca.fmax(ca.DM(lo) - qs[bounded], qs[bounded] - ca.DM(hi)) / ca.DM(hi - lo)
-                uses.append(1.0 + outside)
-        return ca.Function("limit_use", [q, qd, qdd], [ca.vertcat(*uses)])
-
     def _safe_sequence(self, q, qd, sequence) -> bool:
         """:meth:`_safe` for every step of a sequence of accelerations, from (q, qd) on."""
         for qdd in sequence:
@@ -422,8 +400,9 @@ class OnlineResult:
     loop : the plan the plant executed and the per-cycle records (source, compute time, reason);
     deadline : the compute budget per cycle [s]; trajectory : the motion on the control grid;
     check : the independent fine-grid check of the run (it passed: a run that does not is an error);
-    baseline, baseline_check : the classical loop (7.4.2) on the same grid and its check, where the
-    configuration has one (``dfs``), else None.
+    baseline, baseline_check : what a simulator runs today, on the same grid from the same state, and
+    its check: the classical loop of 7.4.2 on ``dfs``, the classical washout
+    (:func:`desdemona.baselines.classical_washout`) on the other configurations.
     """
 
     path: DesiredPath
@@ -464,7 +443,7 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
 
     The controller sees the path only through the predictor; each command is held for one step and
     integrated exactly. The machine starts at ``options.initial_state`` (by default at rest), and the
-    classical loop, where the configuration has one, runs beside it from the same state as the
+    classical loop (``dfs``) or washout (the others) runs beside it from the same state as the
     baseline. Raises :class:`LimitViolation` if the run breaks a limit on the independent check's fine
     grid.
     """
@@ -476,11 +455,12 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
     if not result.passed:
         raise LimitViolation(result, "the closed-loop trajectory")
     nodes = loop.plan.t_nodes
-    baseline = baseline_check = None
     if model.config.modulus_cost:
         classical = classical_dfs(path, model, times=nodes, state=(q0, qd0))
-        baseline_check, _ = check(model, path, classical, step=step)
-        baseline = evaluate_plan(model, path, classical, nodes)
+    else:
+        classical = classical_washout(path, model, times=nodes, state=(q0, qd0))
+    baseline_check, _ = check(model, path, classical, step=step)
+    baseline = evaluate_plan(model, path, classical, nodes)
     return OnlineResult(path=path, model=model, options=options, loop=loop, deadline=controller.deadline,
                         trajectory=evaluate_plan(model, path, loop.plan, nodes), check=result,
                         baseline=baseline, baseline_check=baseline_check)

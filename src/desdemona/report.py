@@ -208,6 +208,7 @@ def online_summary(result, command: str | None = None) -> dict:
         "method": f"mpc ({mpc.method}), predictor {result.options.predictor}, horizon {mpc.horizon:g} s, "
                   f"step {mpc.step:g} s",
         "metrics": {"rms_weighted": c.rms, "rms_modulus": c.rms_modulus,
+                    "rms_weighted_classical": None if baseline is None else baseline.rms,
                     "rms_modulus_classical_loop": None if baseline is None else baseline.rms_modulus,
                     "limits_kept": c.passed, "worst_use": c.worst, "check_grid_step_s": c.step},
         "quality": result.quality.to_dict(),
