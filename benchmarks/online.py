@@ -1,16 +1,24 @@
-"""On-line controller benchmark: compute time per cycle and tracking, in one run.
+"""On-line controller benchmark: compute time per cycle, tracking and prediction, in one run.
 
-    python benchmarks/online.py
+    python benchmarks/online.py            # every table
+    python benchmarks/online.py --quick    # the first table only
 
-Per configuration, horizon and step: median, p99 and max compute time of a controller step (the
-preview handed to it, the command checked against every limit), the fine-grid RMS error of the MPC,
-of the classical dynamic-flight-simulator loop (7.4.2; dfs only) and of the off-line optimum (the
-best any on-line controller can do), and how often a fallback was used. Perfect preview, no deadline
-(every step's own solution is used, so the timings show what each step costs).
+Every run starts from rest, as a real session does. Tables (markdown, on stdout):
+
+1. Per path, configuration, horizon, grid and method: median, p99 and max compute time of a cycle (the
+   preview handed to it, the command checked against every limit), the fine-grid RMS of the MPC, of
+   the classical baseline (the dfs loop of 7.4.2 or the classical washout) and of the off-line optimum
+   from rest (the bound no on-line controller can beat), and how often a fallback was used. Perfect
+   preview, no deadline (every cycle's own plan is used, so the timings show what each cycle costs).
+2. Per configuration and predictor: RMS, correlation and lag between desired and felt (the modulus on
+   dfs, f_y elsewhere), p99 compute.
+3. The route predictor on a ride replayed 10 % faster or slower with sensor noise, against perfect
+   preview and holding the present value.
 """
 
 from __future__ import annotations
 
+import argparse
 import sys
 from collections import Counter
 
@@ -20,33 +28,86 @@ from desdemona import Model, default_params, profiles
 from desdemona.offline import OptimizeOptions, optimize
 from desdemona.online import MPCOptions, OnlineOptions, run
 from desdemona.problem import ProblemOptions
+from desdemona.profiles import DesiredPath
 
 
-def row(path, config, horizon, step, method, params):
+def timings(result) -> np.ndarray:
+    return np.percentile(result.loop.compute_times, [50, 99, 100]) * 1e3
+
+
+def felt(result) -> tuple[float, float]:
+    """Correlation and lag [s] of what is felt against what is desired: the modulus on dfs, f_y else."""
+    q = result.quality
+    if result.model.config.modulus_cost:
+        return q.modulus_correlation, q.modulus_lag_s
+    return q.correlation[4], q.lag_s[4]
+
+
+def tracking_row(path, config, horizon, step, method, params, replan=None, delay=False) -> str:
     model = Model(params, config)
-    mpc = MPCOptions(horizon=horizon, step=step, deadline=float("inf"), method=method)
+    mpc = MPCOptions(horizon=horizon, step=step, replan=replan, delay=delay, deadline=float("inf"), method=method)
     result = run(path, model, OnlineOptions(mpc))
-    classical = "" if result.baseline_check is None else f"{result.baseline_check.rms:.4f}"
-    offline = optimize(path, model, OptimizeOptions(ProblemOptions(h_u=step), starts=2)).check
-    times = np.percentile(result.loop.compute_times, [50, 99, 100]) * 1e3
+    offline = optimize(path, model, OptimizeOptions(ProblemOptions(h_u=step, initial="rest"), starts=3)).check
+    t = timings(result)
     fallbacks = sum(v for k, v in Counter(result.loop.sources).items() if k != "mpc")
-    return (f"| {path.name} | {config} | {horizon:g} | {step:g} | {method} | {times[0]:.2f} | {times[1]:.2f} "
-            f"| {times[2]:.2f} | {result.check.rms:.4f} | {classical} | {offline.rms:.4f} "
-            f"| {result.check.rms / offline.rms:.3f} | {fallbacks} | {'yes' if result.check.passed else 'NO'} |")
+    timing = f"{horizon:g} | {step:g} | {mpc.period:g}{' delayed' if delay else ''}"
+    return (f"| {path.name} | {config} | {timing} | {method} | {t[0]:.2f} | {t[1]:.2f} | {t[2]:.2f} "
+            f"| {result.check.rms:.4f} | {result.baseline_check.rms:.4f} | {offline.rms:.4f} "
+            f"| {result.check.rms / offline.rms:.3f} | {result.check.rms / result.baseline_check.rms:.3f} "
+            f"| {fallbacks} | {'yes' if result.check.passed else 'NO'} |")
 
 
-def main() -> int:
+def predictor_row(path, config, predictor, step, params) -> str:
+    result = run(path, Model(params, config), OnlineOptions(MPCOptions(horizon=2.0, step=step), predictor=predictor))
+    correlation, lag = felt(result)
+    return (f"| {path.name} | {config} | {predictor} | {result.check.rms:.4f} | {correlation:.3f} | {lag:.3f} "
+            f"| {timings(result)[1]:.2f} |")
+
+
+def replay(reference: DesiredPath, speed: float, seed: int = 7) -> DesiredPath:
+    """The reference ridden ``speed`` times as fast, with 0.3 m/s^2 of white sensor noise at 100 Hz."""
+    rng = np.random.default_rng(seed)
+    t = np.arange(0.0, reference.duration / speed, 0.01)
+    modulus = np.maximum(reference.sample_modulus(speed * t) + rng.normal(0.0, 0.3, len(t)), 0.0)
+    return DesiredPath(f"{reference.name} x{speed:g}", t, None, modulus=modulus)
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="the first table only")
+    args = parser.parse_args(argv)
     params = default_params()
-    print("| path | configuration | T_h [s] | h [s] | method | median [ms] | p99 [ms] | max [ms] | RMS MPC "
-          "| RMS classical | RMS off-line | MPC / off-line | fallbacks | limits kept |")
-    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
-    for path in (profiles.dfs_catapult(), profiles.roller_coaster()):
+    print("| path | configuration | T_h [s] | h [s] | T_c [s] | method | median [ms] | p99 [ms] | max [ms] "
+          "| RMS MPC | RMS classical | RMS off-line from rest | MPC / off-line | MPC / classical | fallbacks "
+          "| limits kept |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    for path in (profiles.catapult(), profiles.dfs_catapult(), profiles.roller_coaster()):
         for method in ("rti", "nlp"):
-            print(row(path, "dfs", 2.0, 0.02, method, params), flush=True)
-        print(row(path, "dfs", 1.0, 0.1, "rti", params), flush=True)  # the thesis' 10 Hz, 1 s horizon
-    catapult = profiles.catapult()
-    for method in ("rti", "nlp"):
-        print(row(catapult, "yaw-track-cabin", 2.0, 0.05, method, params), flush=True)
+            print(tracking_row(path, "dfs", 2.0, 0.02, method, params), flush=True)
+        print(tracking_row(path, "dfs", 1.0, 0.1, "rti", params, replan=0.4, delay=True), flush=True)  # thesis 7.5
+    for name in ("catapult", "double-pulse", "car-lap"):
+        for config in ("yaw-track", "yaw-track-cabin", "full"):
+            print(tracking_row(profiles.get_profile(name), config, 2.0, 0.05, "rti", params), flush=True)
+    if args.quick:
+        return 0
+    print("\n| path | configuration | predictor | RMS | correlation | lag [s] | p99 [ms] |")
+    print("| --- | --- | --- | --- | --- | --- | --- |")
+    for path, config, step in ((profiles.dfs_catapult(), "dfs", 0.02), (profiles.roller_coaster(), "dfs", 0.02),
+                               (profiles.catapult(), "yaw-track-cabin", 0.05), (profiles.car_lap(), "full", 0.05)):
+        for predictor in ("perfect", "hold", "linear"):
+            print(predictor_row(path, config, predictor, step, params), flush=True)
+    print("\n| reference | live run | perfect | hold | route | route / perfect | route / hold |")
+    print("| --- | --- | --- | --- | --- | --- | --- |")
+    model = Model(params, "dfs")
+    for reference in (profiles.roller_coaster(), profiles.dfs_catapult()):
+        for speed in (1.1, 0.9):
+            live = replay(reference, speed)
+            rms = {p: run(live, model, OnlineOptions(MPCOptions(horizon=2.0, step=0.02), predictor=p,
+                                                     reference=reference)).check.rms
+                   for p in ("perfect", "hold", "route")}
+            print(f"| {reference.name} | {speed:g}x speed, noise 0.3 m/s^2 | {rms['perfect']:.4f} | {rms['hold']:.4f} "
+                  f"| {rms['route']:.4f} | {rms['route'] / rms['perfect']:.3f} | {rms['route'] / rms['hold']:.3f} |",
+                  flush=True)
     return 0
 
 

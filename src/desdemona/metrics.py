@@ -275,6 +275,8 @@ class Metrics:
         if self.rms is not None:
             i = int(np.argmax(self.rms))
             parts.append(f"worst RMS {self.rms[i]:.3g} {CHANNEL_UNITS[i]} ({CHANNELS[i]})")
+            if np.isfinite(self.correlation[i]):
+                parts.append(f"correlation {self.correlation[i]:.2f}, lag {self.lag_s[i]:.2f} s ({CHANNELS[i]})")
             i = int(np.argmax(self.above_threshold_pct))
             parts.append(f"felt above threshold {self.above_threshold_pct[i]:.0f}% of the time ({CHANNELS[i]})")
             rotation = self.peak_false_cue[:3]
@@ -283,6 +285,8 @@ class Metrics:
                 parts.append(f"peak false rotation {math.degrees(rotation[i]):.3g} deg/s ({CHANNELS[i]})")
         elif self.modulus_rms is not None:
             parts.append(f"RMS(M - M_d) {self.modulus_rms:.3g} m/s^2")
+            if self.modulus_correlation is not None and np.isfinite(self.modulus_correlation):
+                parts.append(f"correlation {self.modulus_correlation:.2f}, lag {self.modulus_lag_s:.2f} s")
         if len(self.joints):
             k = int(np.argmax(self.sign_changes_per_s))
             parts.append(f"max {self.sign_changes_per_s[k]:.3g} acceleration sign changes/s ({self.joints[k]})")
