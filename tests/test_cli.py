@@ -1,6 +1,11 @@
-"""The command line: exit codes, messages and the model summary."""
+"""The command line: exit codes, messages and the model summary; how a run starts and ends."""
 
+import numpy as np
+import pytest
+
+from desdemona import profiles
 from desdemona.cli import main
+from desdemona.report import load
 
 
 def test_model_summary(capsys):
@@ -29,3 +34,61 @@ def test_bad_parameter_file(tmp_path, capsys):
     path.write_text("[joints.track]\nvelocity = 3\n")
     assert main(["model", "--params", str(path)]) == 2
     assert "joints.track.velocity" in capsys.readouterr().err
+
+
+# ---- how a run starts and ends, its weights and gain (issue 16) -----------------------------------
+
+QUICK = ["--config", "yaw-track", "--starts", "1", "--h-u", "0.1"]
+
+
+@pytest.fixture(scope="module")
+def session_folder(tmp_path_factory):
+    """The cosine from rest (the default) to rest, with numeric weights and a gain."""
+    out = tmp_path_factory.mktemp("session") / "cosine"
+    assert main(["optimize", "cosine", *QUICK, "--final", "rest", "--weights", "0,0,1,0,1,0", "--gain", "0.5",
+                 "--out", str(out)]) == 0
+    return out
+
+
+def test_rest_starts_and_ends_with_every_joint_still(session_folder):
+    traj, summary = load(session_folder)
+    np.testing.assert_allclose(traj.qd[0], 0.0, atol=1e-9)
+    np.testing.assert_allclose(traj.qd[-1], 0.0, atol=1e-6)
+    assert summary["options"]["problem"]["initial"] == "rest"
+    assert summary["options"]["problem"]["final"] == "rest"
+
+
+def test_weights_and_gain_reach_the_problem(session_folder):
+    traj, summary = load(session_folder)
+    assert summary["options"]["problem"]["weights"] == [0, 0, 1, 0, 1, 0]
+    cosine = profiles.get_profile("cosine")
+    np.testing.assert_allclose(traj.S_d[:, 4], 0.5 * cosine.sample(traj.t)[:, 4], atol=1e-9)
+    np.testing.assert_allclose(traj.S_d[:, 5], profiles.G)  # 1 g kept
+
+
+def test_given_start_is_kept(tmp_path):
+    out = tmp_path / "given"
+    assert main(["optimize", "cosine", *QUICK, "--initial", "given", "--initial-state", "0.2,-1.5;1.0,0.3",
+                 "--final", "none", "--out", str(out)]) == 0
+    traj, _ = load(out)
+    np.testing.assert_allclose(traj.q[0], [0.2, -1.5], atol=1e-9)
+    np.testing.assert_allclose(traj.qd[0], [1.0, 0.3], atol=1e-9)
+
+
+@pytest.mark.parametrize("args, fragment", [
+    (["--initial", "given"], "--initial given and --initial-state go together"),
+    (["--initial-state", "0,0;0,0"], "go together"),
+    (["--initial", "given", "--initial-state", "0,0,0;0,0,0"], "give 2 positions, ';', 2 rates"),
+    (["--initial", "given", "--initial-state", "0,9;0,0"], "track position 9 is outside"),
+    (["--initial", "given", "--initial-state", "0,0;9,0"], "yaw rate 9 is above its limit"),
+    (["--initial", "given", "--initial-state", "a,0;0,0"], "not a number"),
+    (["--weights", "1,2,3"], "six finite numbers"),
+    (["--weights", "heavy"], "give one of felt, path, thresholds"),
+    (["--gain", "-1"], "gain -1"),
+    (["--method", "thesis", "--weights", "path"], "--method thesis reproduces the thesis"),
+])
+def test_bad_session_options_exit_2(tmp_path, capsys, args, fragment):
+    out = tmp_path / "r"
+    assert main(["optimize", "cosine", *QUICK, *args, "--out", str(out)]) == 2
+    assert fragment in capsys.readouterr().err
+    assert not out.exists()

@@ -7,8 +7,8 @@ import pytest
 
 from desdemona import Model, profiles, thesis_toy_params
 from desdemona.baselines import ThesisOptions, classical_dfs, optimize_thesis
-from desdemona.offline import OptimizeOptions, optimize
-from desdemona.problem import ProblemOptions
+from desdemona.offline import OptimizeOptions, initial_guesses, optimize
+from desdemona.problem import CueingProblem, ProblemOptions
 from desdemona.perception import thesis_model
 from desdemona.profiles import DesiredPath
 from desdemona.plan import Plan
@@ -137,3 +137,19 @@ def test_classical_dfs_loop_reaches_the_steady_rate_within_limits(params):
     np.testing.assert_allclose(plan.nodes()[1][-1], np.sqrt(np.sqrt(M**2 - params.gravity**2) / 4.0), rtol=1e-6)
     result, _ = check(model, path, plan, step=0.01)
     assert result.passed
+
+
+def test_from_rest_the_guesses_spin_the_yaw_up_and_leave_the_stationary_point(params):
+    """Zero motion is a stationary point (NOTES.md): from rest, a guess that stays still ends where it
+    began, while the spun-up guesses, at rest at t = 0 like the problem, find a far better optimum."""
+    path = profiles.catapult(duration=5.0)
+    problem = CueingProblem(Model(params, "yaw-track"), path, ProblemOptions(h_u=0.1, initial="rest", final="centre"))
+    zero = np.zeros((problem.N, 2))
+    still = problem.solve(problem.states_from(np.zeros(2), np.zeros(2), zero), zero)
+    for name, x, u in initial_guesses(problem, 3, seed=0):
+        np.testing.assert_array_equal(x[0, 2:], 0.0)  # feasible at t = 0
+        assert np.abs(u[:, 0]).max() > 0.0, name
+    best = min((problem.solve(x, u) for _, x, u in initial_guesses(problem, 2, seed=0)), key=lambda s: s.cost)
+    assert best.success and best.cost < 0.75 * still.cost
+    np.testing.assert_allclose(best.x[0, 2:], 0.0, atol=1e-12)
+    np.testing.assert_allclose(best.x[-1, 1:], 0.0, atol=1e-9)  # at rest, track centred at the end

@@ -65,6 +65,7 @@ def test_csv_round_trip(tmp_path):
         np.testing.assert_allclose(q.M_d, p.M_d, rtol=0, atol=1e-12)
         if p.S_d is not None:
             np.testing.assert_allclose(q.S_d, p.S_d, rtol=0, atol=1e-12)
+            assert q.weights == p.weights  # carried by the '# weights:' line
 
 
 GOOD = "t,wx,wy,wz,fx,fy,fz\n0,0,0,0,0,0,9.81\n0.1,0,0,0,0,1,9.81\n0.2,0,0,0,0,2,9.81\n"
@@ -119,3 +120,56 @@ def test_cosine_sweep_and_modulus_versions():
     m = profiles.modulus_version(catapult)
     assert m.S_d is None
     np.testing.assert_allclose(m.M_d, np.hypot(catapult.S_d[:, 4], 9.81))
+
+
+def test_csv_weights_line(tmp_path):
+    path = tmp_path / "w.csv"
+    path.write_text("# a ride\n#  Weights: 1, 1, 1, 3, 1, 0.5\n" + GOOD)
+    assert read_csv(path).weights == (1, 1, 1, 3, 1, 0.5)
+    path.write_text(GOOD)
+    assert read_csv(path).weights == (1,) * 6  # none given: Q = I
+
+
+@pytest.mark.parametrize("line, fragment", [
+    ("# weights: 1,1,1,3,1", "six finite numbers"),
+    ("# weights: 1,1,1,x,1,1", "not a number"),
+    ("# weights: 1,1,1,-3,1,1", ">= 0"),
+    ("# weights: 0,0,0,0,0,0", "not all zero"),
+    ("# weights 1,1,1,1,1,1", "'# weights: wx,wy,wz,fx,fy,fz'"),
+    ("# weights: 1,1,1,1,1,1\n# weights: 1,1,1,1,1,1", "line 2: a second weights line"),
+])
+def test_bad_csv_weights_name_the_line(tmp_path, line, fragment):
+    path = tmp_path / "w.csv"
+    path.write_text(line + "\n" + GOOD)
+    with pytest.raises(ProfileError, match="w.csv: line [12]") as info:
+        read_csv(path)
+    assert fragment in str(info.value)
+
+
+def test_weights_specs():
+    path = profiles.get_profile("catapult")  # the thesis' weights (0, 0, 0, 3, 1, 1)
+    thresholds = profiles.THRESHOLDS
+    np.testing.assert_array_equal(profiles.weights_for("path", path), path.weights)
+    w = profiles.weights_for("thresholds", path)
+    np.testing.assert_allclose(w * thresholds**2, w[4] * thresholds[4] ** 2)  # one threshold costs the same
+    assert w[4] == 1.0
+    felt = profiles.weights_for("felt", path)
+    np.testing.assert_array_equal(felt[3:], path.weights[3:])
+    np.testing.assert_allclose(felt[:3] * thresholds[:3] ** 2, 3.0 * thresholds[4] ** 2)
+    np.testing.assert_array_equal(profiles.weights_for("1,2,3,4,5,6", path), [1, 2, 3, 4, 5, 6])
+    np.testing.assert_array_equal(profiles.weights_for((0, 0, 1, 0, 0, 0), path), [0, 0, 1, 0, 0, 0])
+    for bad in ("heavy", "1,2", "1,1,1,1,1,nan"):
+        with pytest.raises(ProfileError, match="weights"):
+            profiles.weights_for(bad, path)
+
+
+def test_gain_scales_the_motion_around_one_g():
+    path = profiles.get_profile("car-lap")
+    half = path.with_gain(0.5)
+    rest = np.array([0, 0, 0, 0, 0, profiles.G])
+    np.testing.assert_allclose(half.S_d - rest, 0.5 * (path.S_d - rest), atol=1e-12)
+    assert half.weights == path.weights and path.with_gain(1.0) is path
+    coaster = profiles.get_profile("roller-coaster")
+    np.testing.assert_allclose(coaster.with_gain(0.5).M_d, profiles.G + 0.5 * (coaster.M_d - profiles.G))
+    with pytest.raises(ProfileError, match="gain"):
+        path.with_gain(0.0)

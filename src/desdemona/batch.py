@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import concurrent.futures
 import csv
+import dataclasses
 import multiprocessing
 import time
 from dataclasses import dataclass
@@ -53,12 +54,21 @@ def load_path(profile: str) -> profiles.DesiredPath:
     return profiles.get_profile(profile) if profile in profiles.PROFILES else profiles.read_csv(profile)
 
 
-def run_job(job: Job, params: MachineParams, options: OptimizeOptions, out_dir: str) -> JobResult:
-    """Optimise one job and write its folder; failures become a table line, not an exception."""
+def run_job(job: Job, params: MachineParams, options: OptimizeOptions, out_dir: str, weights=None,
+            gain: float = 1.0) -> JobResult:
+    """Optimise one job and write its folder; failures become a table line, not an exception.
+
+    weights : a spec of :func:`profiles.weights_for`, resolved for the job's path (after its ``gain``),
+    or None for ``options.problem.weights``.
+    """
     start = time.perf_counter()
     folder = Path(out_dir) / job.folder_name
     try:
-        result = optimize(load_path(job.profile), Model(params, job.config), options)
+        path = load_path(job.profile).with_gain(gain)
+        if weights is not None:
+            problem = dataclasses.replace(options.problem, weights=tuple(profiles.weights_for(weights, path)))
+            options = dataclasses.replace(options, problem=problem)
+        result = optimize(path, Model(params, job.config), options)
         report.write(result, folder, command=f"desdemona batch ({job.profile} on {job.config})", overwrite=True)
         return JobResult(job.profile, job.config, "ok", result.check.rms, result.check.worst_use,
                          time.perf_counter() - start, str(folder))
@@ -70,8 +80,10 @@ def run_job(job: Job, params: MachineParams, options: OptimizeOptions, out_dir: 
 
 
 def run_batch(jobs: list[Job], params: MachineParams, options: OptimizeOptions, out_dir: str | Path,
-              processes: int = 2, dask_address: str | None = None) -> list[JobResult]:
-    """Run every job, on ``processes`` local processes or on the Dask scheduler at ``dask_address``.
+              processes: int = 2, dask_address: str | None = None, weights=None,
+              gain: float = 1.0) -> list[JobResult]:
+    """Run every job, on ``processes`` local processes or on the Dask scheduler at ``dask_address``;
+    ``weights`` and ``gain`` as in :func:`run_job`.
 
     Profiles and configurations are validated before anything runs. Returns the jobs' lines in the
     order given and writes them to ``OUT/batch.csv``.
@@ -82,7 +94,7 @@ def run_batch(jobs: list[Job], params: MachineParams, options: OptimizeOptions, 
             profiles.get_profile(job.profile)  # raises, naming the built-in profiles
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    args = [(job, params, options, str(out)) for job in jobs]
+    args = [(job, params, options, str(out), weights, gain) for job in jobs]
     if dask_address is not None:
         from distributed import Client
 

@@ -73,6 +73,7 @@ def _parser() -> argparse.ArgumentParser:
     opt.add_argument("--perception", choices=tuple(perception_models.MODELS), default=None,
                      help="minimise the perceived difference through this vestibular model")
     _add_start_options(opt, starts=4)
+    _add_session_options(opt)
     opt.add_argument("--workers", type=int, default=1, metavar="N",
                      help="parallel processes for the starts (default: 1)")
     opt.add_argument("--overwrite", action="store_true", help="replace DIR if it exists")
@@ -90,6 +91,7 @@ def _parser() -> argparse.ArgumentParser:
     batch.add_argument("--params", metavar="FILE", help="TOML file overriding machine parameters")
     batch.add_argument("--base", choices=BUILTIN_SETS, default=None, help="built-in parameter set")
     _add_start_options(batch, starts=2)
+    _add_session_options(batch, given=False)
     batch.add_argument("--processes", type=int, default=2, metavar="N",
                        help="local processes when no --dask is given (default: 2)")
     batch.add_argument("--dask", metavar="ADDRESS", default=None,
@@ -174,6 +176,66 @@ def _add_start_options(parser: argparse.ArgumentParser, starts: int) -> None:
                         help="control step: joint accelerations are held this long (default: 0.05)")
 
 
+def _add_session_options(parser: argparse.ArgumentParser, given: bool = True) -> None:
+    """How a run starts and ends, what its cost counts, and the motion gain (issue 16). The defaults
+    are a real session's; ``--weights path --initial free --final none`` is the thesis' setting."""
+    starts = ("rest", "free", "given") if given else ("rest", "free")
+    parser.add_argument("--initial", choices=starts, default=None,
+                        help="rest: every joint still at t = 0, positions free (default); free: the "
+                             "optimiser chooses positions and rates (thesis 5.2)"
+                        + ("; given: the state of --initial-state" if given else ""))
+    if given:
+        parser.add_argument("--initial-state", metavar="Q;QD", dest="initial_state", default=None,
+                            help="with --initial given: positions and rates of the free joints in their "
+                                 "order (see 'desdemona model'), SI units (rad, m; rad/s, m/s), "
+                                 "e.g. '0,-1.5,0;0,0,0' on yaw-track-cabin")
+    parser.add_argument("--final", choices=("centre", "rest", "none"), default="centre",
+                        help="centre: at rest with the track and heave centred at the end (default); "
+                             "rest: every joint still; none: free (thesis)")
+    parser.add_argument("--weights", default=profiles.WEIGHT_CHOICES[0], metavar="SPEC",
+                        help="the cost's weight per channel of S (diagonal of Q): felt (default): the path's "
+                             "force weights, and rotation weighted by the perception thresholds so that one "
+                             "threshold of false rotation costs as much as one of force error; path: the "
+                             "path's own (the thesis'; a CSV's '# weights:' line or 1 each); thresholds: "
+                             "every channel by 1/threshold^2; or six numbers wx,wy,wz,fx,fy,fz")
+    parser.add_argument("--gain", type=float, default=1.0, metavar="G",
+                        help="motion gain around 1 g: f_d -> (0,0,g) + G (f_d - (0,0,g)), omega_d -> G "
+                             "omega_d (default: 1)")
+
+
+def _session(args, model: Model, path: profiles.DesiredPath) -> tuple[profiles.DesiredPath, dict]:
+    """The path with its gain, and the ProblemOptions fields of the session options, checked."""
+    path = path.with_gain(args.gain)
+    fields = {"initial": args.initial or "rest", "final": args.final,
+              "weights": tuple(profiles.weights_for(args.weights, path))}
+    state = getattr(args, "initial_state", None)
+    if (state is not None) != (fields["initial"] == "given"):
+        raise UserError("--initial given and --initial-state go together")
+    if state is not None:
+        fields["initial_state"] = parse_state(state, model)
+    return path, fields
+
+
+def parse_state(text: str, model: Model) -> tuple[np.ndarray, np.ndarray]:
+    """Positions and rates 'q1,q2,...;qd1,qd2,...' of the free joints (SI), within their limits."""
+    names, lim = model.config.joint_names, model.limits
+    parts = text.split(";")
+    try:
+        q, qd = (np.array([float(c) for c in part.split(",")]) for part in parts) if len(parts) == 2 else (None, None)
+    except ValueError:
+        raise UserError(f"--initial-state {text!r}: not a number") from None
+    if q is None or len(q) != model.n or len(qd) != model.n:
+        raise UserError(f"--initial-state {text!r}: give {model.n} positions, ';', {model.n} rates "
+                        f"(joints {', '.join(names)}; SI units)")
+    for k, name in enumerate(names):
+        if not (np.isfinite(q[k]) and lim.position_min[k] <= q[k] <= lim.position_max[k]):
+            raise UserError(f"--initial-state: {name} position {q[k]:g} is outside "
+                            f"[{lim.position_min[k]:g}, {lim.position_max[k]:g}]")
+        if not (np.isfinite(qd[k]) and abs(qd[k]) <= lim.velocity[k]):
+            raise UserError(f"--initial-state: {name} rate {qd[k]:g} is above its limit {lim.velocity[k]:g}")
+    return q, qd
+
+
 def _machine(args) -> Model:
     try:
         config = get_configuration(args.config)
@@ -218,10 +280,15 @@ def _run_optimize(args) -> int:
         raise UserError("--perception applies to the full path S, not to the dfs modulus")
     progress = _progress_bar() if sys.stderr.isatty() else None
     if args.method == "thesis":
+        if (args.initial, args.initial_state, args.final, args.weights) != (None, None, "centre", profiles.WEIGHT_CHOICES[0]):
+            raise UserError("--method thesis reproduces the thesis: its weights are the path's and its start "
+                            "free; drop --initial, --initial-state, --final and --weights")
+        path = path.with_gain(args.gain)
         result = thesis_result(path, model, ThesisOptions(h_u=max(args.h_u, 0.1), starts=args.starts, seed=args.seed))
     else:
+        path, session = _session(args, model, path)
         perception = perception_models.get_model(args.perception) if args.perception else None
-        problem = ProblemOptions(h_u=args.h_u, solver=args.method, perception=perception)
+        problem = ProblemOptions(h_u=args.h_u, solver=args.method, perception=perception, **session)
         options = OptimizeOptions(problem, starts=args.starts, seed=args.seed, workers=args.workers)
         result = optimize(path, model, options, progress=progress)
     report.write(result, out, command=report.command_line(), overwrite=args.overwrite)
@@ -257,9 +324,13 @@ def _run_batch(args) -> int:
     if args.starts < 1 or args.processes < 1 or not args.h_u > 0:
         raise UserError("--starts and --processes must be at least 1 and --h-u positive")
     params = load_params(args.params, base=args.base)
-    options = OptimizeOptions(ProblemOptions(h_u=args.h_u), starts=args.starts, seed=args.seed)
+    for name in args.profiles:  # the weights and gain, checked on every path before any job runs
+        _session(args, None, profiles.load(name))
+    options = OptimizeOptions(ProblemOptions(h_u=args.h_u, initial=args.initial or "rest", final=args.final),
+                              starts=args.starts, seed=args.seed)
     jobs = [batch.Job(p, c) for p in args.profiles for c in args.configs]
-    results = batch.run_batch(jobs, params, options, args.out, args.processes, args.dask)
+    results = batch.run_batch(jobs, params, options, args.out, args.processes, args.dask,
+                              weights=args.weights, gain=args.gain)
     print(batch.table(results))
     return 0 if all(r.status == "ok" for r in results) else EXIT_UNSAFE
 

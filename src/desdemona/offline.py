@@ -118,7 +118,9 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
         guesses.append((name, problem.states_from(np.asarray(q0, float), np.asarray(qd0, float), u), u))
 
     free = model.config.free
-    if model.config.modulus_cost:
+    if problem.options.initial != "free":
+        guesses += _guesses_from_start(problem)
+    elif model.config.modulus_cost:
         classical = baselines.classical_dfs(problem.path, model, times=problem.t_nodes)
         add("classical-loop", classical.q0, classical.qd0, classical.u)
         add("spinning", [0.0], [0.5 * lim.velocity[0]])
@@ -146,8 +148,58 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
     hi = np.where(np.isfinite(lim.position_max), 0.5 * lim.position_max, np.pi)
     while len(guesses) < count:
         u = rng.uniform(-0.2, 0.2, size=(N, n)) * lim.acceleration
-        add(f"random {len(guesses)}", rng.uniform(lo, hi), rng.uniform(-0.5, 0.5, size=n) * lim.velocity, u)
+        q0, qd0 = rng.uniform(lo, hi), rng.uniform(-0.5, 0.5, size=n) * lim.velocity
+        if problem.options.initial != "free":  # the start is fixed: only the accelerations are random
+            q0, qd0, u = *_start(problem), _spin_up(problem, 1.0) + u
+        add(f"random {len(guesses)}", q0, qd0, u)
     return guesses[:count]
+
+
+def _start(problem: CueingProblem) -> tuple[np.ndarray, np.ndarray]:
+    """The fixed initial state of a problem that starts at rest (position 0) or at a given state."""
+    n = problem.model.n
+    if problem.options.initial == "given":
+        return tuple(np.asarray(v, dtype=float).reshape(n) for v in problem.options.initial_state)
+    return np.zeros(n), np.zeros(n)
+
+
+def _spin_up(problem: CueingProblem, direction: float, rate: float = 0.5, accel: float = 0.8) -> np.ndarray:
+    """(N, n) accelerations that turn the yaw up from the start to ``rate`` times its rate limit at
+    ``accel`` times its acceleration limit, in ``direction`` (+1 or -1), hold it, and brake it again
+    over the last intervals when the problem ends at rest.
+
+    Zero motion is a stationary point (no gradient of the centripetal terms at zero yaw rate), so a
+    guess that starts at rest must leave it by itself: this is the thesis' "yaw turning" guess of
+    table 5.2 for a session that starts, and ends, still.
+    """
+    lim, N, h = problem.model.limits, problem.N, problem.options.h_u
+    u = np.zeros((N, problem.model.n))
+    a = accel * lim.acceleration[0]
+    k = min(N // 2, max(1, round(rate * lim.velocity[0] / (a * h))))
+    u[:k, 0] = direction * a
+    if problem.options.final != "none":
+        u[N - k:, 0] = -direction * a
+    return u
+
+
+def _guesses_from_start(problem: CueingProblem) -> list[tuple[str, np.ndarray, np.ndarray]]:
+    """Guesses for a fixed start (at rest, or given): the yaw spun up either way, and, where there is a
+    track and the start's position is free, with the track out on the side where the centripetal
+    specific force points along the mean demanded f_y."""
+    model, guesses = problem.model, []
+    q0, qd0 = _start(problem)
+    track = model.config.free.index(1) if 1 in model.config.free else None
+    rows = [("from rest: yaw spun up", 0.0, 1.0), ("from rest: yaw spun up the other way", 0.0, -1.0)]
+    if track is not None and problem.options.initial == "rest" and problem.path.S_d is not None:
+        side = -1.0 if float(np.mean(problem.path.S_d[:, 4])) >= 0 else 1.0
+        rows.insert(1, ("from rest: yaw spun up, track out", side * 0.5 * model.limits.position_max[track], 1.0))
+    for name, track_position, direction in rows:
+        start = q0.copy()
+        if track is not None and track_position:
+            start[track] = track_position
+        u = _spin_up(problem, direction)
+        guesses.append((name, problem.states_from(start, qd0, u), u))
+    return guesses
 
 
 # ----------------------------------------------------------------------------------------------

@@ -16,6 +16,8 @@ from pathlib import Path
 
 import numpy as np
 
+from desdemona.perception import THRESHOLDS
+
 G = 9.81
 MAX_SPECIFIC_FORCE = 100.0 * G  # beyond this a file is in the wrong units, not a vehicle's motion
 MAX_ANGULAR_VELOCITY = 50.0  # rad/s, about 8 turns per second
@@ -77,6 +79,26 @@ class DesiredPath:
         """(N,) desired modulus of the specific force (eq. 7.1)."""
         return self.modulus if self.modulus is not None else np.linalg.norm(self.S_d[:, 3:], axis=1)
 
+    def with_gain(self, gain: float) -> DesiredPath:
+        """The path scaled by a motion gain around 1 g: what the occupant feels at rest is kept, the
+        motion on top of it is scaled (on Desdemona subjects preferred lateral gains below 1).
+
+        f_d' = g_cabin + gain (f_d - g_cabin) with g_cabin = (0, 0, G), the specific force of a level
+        cabin at rest; omega_d' = gain omega_d; a modulus-only path M_d' = G + gain (M_d - G).
+        gain : > 0 (1 returns the path itself). Weights are kept.
+        """
+        if not (math.isfinite(gain) and gain > 0):
+            raise ProfileError(f"gain {gain!r}: must be a positive number (1 = the path as it is)")
+        if gain == 1.0:
+            return self
+        S_d = modulus = None
+        if self.S_d is not None:
+            rest = np.array([0.0, 0.0, 0.0, 0.0, 0.0, G])
+            S_d = rest + gain * (self.S_d - rest)
+        if self.modulus is not None:
+            modulus = np.maximum(G + gain * (self.modulus - G), 0.0)
+        return DesiredPath(self.name, self.t, S_d, self.weights, f"{self.description}, gain {gain:g}", modulus)
+
     def sample(self, times) -> np.ndarray:
         """S_d linearly interpolated at ``times`` (held constant outside the grid), shape (len, 6)."""
         times = np.asarray(times, dtype=float)
@@ -84,6 +106,52 @@ class DesiredPath:
 
     def sample_modulus(self, times) -> np.ndarray:
         return np.interp(np.asarray(times, dtype=float), self.t, self.M_d)
+
+
+#: Named weights of the cost (:func:`weights_for`); the first is the command line's default.
+WEIGHT_CHOICES = ("felt", "path", "thresholds")
+
+
+def weights_for(spec, path: DesiredPath, thresholds=THRESHOLDS) -> np.ndarray:
+    """The diagonal of Q (6,) (eq. 3.6) that a weights spec names, for ``path``.
+
+    spec : "path": the path's own (the thesis' for the built-in paths; a CSV file's ``# weights:``
+        line, else Q = I);
+        "thresholds": each channel by 1 / threshold^2 (``thresholds`` (6,) [rad/s, m/s^2], Reid & Nahon),
+        scaled so that f_y's weight is 1: one threshold of error costs the same in every channel;
+        "felt": the path's force weights kept, each rotation channel weighted like "thresholds" times
+        the path's largest force weight, so that one threshold of false rotation costs as much as one
+        threshold of error in the path's most weighted force channel;
+        six numbers >= 0, as a sequence or a string "1,1,1,3,1,1".
+    Raises :class:`ProfileError` naming the spec when it is none of these.
+    """
+    thresholds = np.asarray(thresholds, float)
+    by_threshold = (thresholds[4] / thresholds) ** 2
+    if isinstance(spec, str) and spec.strip() in WEIGHT_CHOICES:
+        name = spec.strip()
+        own = np.asarray(path.weights, float)
+        if name == "path":
+            return own
+        if name == "thresholds":
+            return by_threshold
+        return np.r_[by_threshold[:3] * max(own[3:].max(), 0.0), own[3:]]
+    if isinstance(spec, str):
+        cells = spec.split(",")
+        try:
+            spec = [float(c) for c in cells]
+        except ValueError:
+            raise ProfileError(f"weights {spec!r}: give one of {', '.join(WEIGHT_CHOICES)} or six numbers "
+                               f"'wx,wy,wz,fx,fy,fz' (e.g. 1,1,1,3,1,1)") from None
+    return _weight_numbers(spec)
+
+
+def _weight_numbers(values) -> np.ndarray:
+    """Six finite weights >= 0, not all zero, as a (6,) array; else :class:`ProfileError`."""
+    w = np.asarray(values, dtype=float).ravel()
+    if len(w) != 6 or not np.all(np.isfinite(w)) or np.any(w < 0) or not np.any(w > 0):
+        raise ProfileError(f"weights {[float(x) for x in w]}: need six finite numbers >= 0 "
+                           f"(wx,wy,wz,fx,fy,fz), not all zero")
+    return w
 
 
 def _grid(duration: float, dt: float) -> np.ndarray:
@@ -309,6 +377,7 @@ def read_csv(path: str | Path) -> DesiredPath:
         text = path.read_text()
     except OSError as exc:
         raise ProfileError(f"{path}: cannot read: {exc.strerror or exc}") from None
+    weights = _header_weights(path, text)
     lines = [(i + 1, line) for i, line in enumerate(text.splitlines())
              if line.strip() and not line.lstrip().startswith("#")]
     if not lines:
@@ -352,8 +421,27 @@ def read_csv(path: str | Path) -> DesiredPath:
                      MAX_SPECIFIC_FORCE, "m/s^2")
     _check_magnitude(path, lines, np.linalg.norm(data[:, 1:4], axis=1, keepdims=True), "|omega|",
                      MAX_ANGULAR_VELOCITY, "rad/s")
-    return DesiredPath(name, t - t[0], data[:, 1:], weights=(1, 1, 1, 1, 1, 1),
-                       description=f"read from {path.name}")
+    return DesiredPath(name, t - t[0], data[:, 1:], weights=weights, description=f"read from {path.name}")
+
+
+def _header_weights(path, text: str) -> tuple[float, ...]:
+    """The weights a CSV file carries in a comment line ``# weights: wx,wy,wz,fx,fy,fz`` (at most one;
+    strict, see :func:`weights_for`), else Q = I."""
+    found = [(i + 1, line.lstrip()[1:].strip()) for i, line in enumerate(text.splitlines())
+             if line.lstrip().startswith("#") and line.lstrip()[1:].strip().lower().startswith("weights")]
+    if not found:
+        return (1.0,) * 6
+    if len(found) > 1:
+        raise ProfileError(f"{path}: line {found[1][0]}: a second weights line (the first is line {found[0][0]})")
+    number, comment = found[0]
+    key, colon, value = comment.partition(":")
+    if not colon or key.strip().lower() != "weights":
+        raise ProfileError(f"{path}: line {number}: write the weights as '# weights: wx,wy,wz,fx,fy,fz'")
+    try:
+        return tuple(_weight_numbers([float(c) for c in value.split(",")]))
+    except (ValueError, ProfileError) as exc:
+        detail = str(exc) if isinstance(exc, ProfileError) else f"not a number in {value.strip()!r}"
+        raise ProfileError(f"{path}: line {number}: {detail}") from None
 
 
 def _check_magnitude(path, lines, values, label, limit, unit):
@@ -373,6 +461,7 @@ def write_csv(path_or_file, path: DesiredPath) -> None:
         for t, m in zip(path.t, path.modulus):
             buffer.write(f"{float(t)!r},{float(m)!r}\n")
     else:
+        buffer.write("# weights: " + ",".join(repr(float(w)) for w in path.weights) + "\n")
         buffer.write(",".join(PATH_COLUMNS) + "\n")
         for t, row in zip(path.t, path.S_d):
             buffer.write(",".join(repr(float(x)) for x in (t, *row)) + "\n")
