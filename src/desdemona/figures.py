@@ -57,13 +57,19 @@ def draw_result(traj, summary: dict, out_dir: str | Path) -> list[Path]:
     title = f"{summary['path']['name']} on {summary['configuration']['name']}"
     paths = []
 
-    def channels(desired, actual, labels, style):
+    weights = _weights(summary)
+
+    def channels(desired, actual, labels, style, bands=None):
         fig = _figure(figsize=(11, 8))
         axes = fig.subplots(3, 2, sharex=True)
         for i, ax in enumerate(axes.T.ravel()):
+            if bands is not None:  # where the felt difference is below the perception threshold
+                ax.fill_between(traj.t, desired[:, i] - bands[i], desired[:, i] + bands[i], color="0.85",
+                                lw=0, label="below threshold")
             ax.plot(traj.t, desired[:, i], "k-", lw=1.5, label=labels[0])
             ax.plot(traj.t, actual[:, i], style, lw=1.2, label=labels[1])
-            ax.set_ylabel(CHANNEL_LABELS[i])
+            weightless = weights is not None and weights[i] == 0.0
+            ax.set_ylabel(CHANNEL_LABELS[i] + ("\n(weight 0: not in the cost)" if weightless else ""))
             ax.grid(alpha=0.3)
         axes[0, 0].legend(fontsize=8)
         for ax in axes[-1]:
@@ -118,9 +124,16 @@ def draw_result(traj, summary: dict, out_dir: str | Path) -> list[Path]:
         axes[0].legend(fontsize=8)
         paths.append(_save(fig, out / "modulus.png", title))
     if traj.S_perc is not None:
-        paths.append(_save(channels(traj.S_d_perc, traj.S_perc, ("perceived S_d", "perceived S"), "C1--"),
-                           out / "perceived.png", title))
+        paths.append(_save(channels(traj.S_d_perc, traj.S_perc, ("perceived S_d", "perceived S"), "C1--",
+                                    bands=THRESHOLDS), out / "perceived.png", title))
     return paths
+
+
+def _weights(summary: dict):
+    """The cost's weights of S as the run used them (its options), else the path's; None if unknown."""
+    problem = (summary.get("options") or {}).get("problem") or {}
+    weights = problem.get("weights") or summary.get("path", {}).get("weights")
+    return None if weights is None else [float(w) for w in weights]
 
 
 def draw_online(result, out_dir: str | Path) -> list[Path]:
