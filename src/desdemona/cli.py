@@ -73,6 +73,9 @@ def _parser() -> argparse.ArgumentParser:
     opt.add_argument("--perception", choices=tuple(perception_models.MODELS), default=None,
                      help="minimise the perceived difference through this vestibular model")
     _add_start_options(opt, starts=4)
+    opt.add_argument("--refine", action="store_true",
+                     help="solve with the simplified dynamics (centres of mass at the frame origins) first, "
+                          "then refine with the full dynamics (thesis 5.7)")
     opt.add_argument("--workers", type=int, default=1, metavar="N",
                      help="parallel processes for the starts (default: 1)")
     opt.add_argument("--overwrite", action="store_true", help="replace DIR if it exists")
@@ -203,7 +206,8 @@ def _run_optimize(args) -> int:
                                ThesisOptions(h_u=max(args.h_u, 0.1), starts=args.starts, seed=args.seed))
     else:
         problem = ProblemOptions(h_u=args.h_u, solver=args.method, perception=args.perception)
-        options = OptimizeOptions(problem, starts=args.starts, seed=args.seed, workers=args.workers)
+        options = OptimizeOptions(problem, starts=args.starts, seed=args.seed, workers=args.workers,
+                                  refine=args.refine)
         result = optimize(path, model.config, model.params, options, progress=progress)
     report.write(result, out, command=report.command_line(), overwrite=args.overwrite)
     c = result.check
