@@ -1,7 +1,7 @@
 """Off-line solver benchmark: ours against the thesis' method, side by side, in one run.
 
     python benchmarks/offline.py            # prints one markdown table
-    python benchmarks/offline.py --quick    # skips the 35 s full-configuration row and the scaling rows
+    python benchmarks/offline.py --quick    # skips the 35 s full-configuration rows and the scaling rows
 
 Every row is measured in this run, on this machine. Wall times are those of one start including the
 problem's construction (of the whole multi-start in rows with several starts), "build" the construction
@@ -43,13 +43,18 @@ class Row:
     starts: int = 1
 
 
-def ours(path, config, params, solver, h_u, weights=None, starts=1) -> Row:
-    options = OptimizeOptions(ProblemOptions(h_u=h_u, solver=solver, weights=weights), starts=starts)
+# Today's method before issue 17, for the side-by-side rows: the torque and power limits' curvature in
+# the Hessian and no weight on the channels Q leaves at zero (the default on three joints or fewer).
+TODAY = {"limit_curvature": True, "unweighted": 0.0}
+
+
+def ours(path, config, params, solver, h_u, weights=None, starts=1, label="", **problem) -> Row:
+    options = OptimizeOptions(ProblemOptions(h_u=h_u, solver=solver, weights=weights, **problem), starts=starts)
     start = time.perf_counter()
     result = optimize(path, Model(params, config), options)
     seconds = time.perf_counter() - start
     s = min(result.starts, key=lambda r: r.rms)
-    method = f"ours ({solver})" if starts == 1 else f"ours ({solver}, {starts} starts)"
+    method = f"ours ({solver}{label})" if starts == 1 else f"ours ({solver}{label}, {starts} starts)"
     return Row(path.name, config, method, result.check.rms, result.check.worst_use, s.iterations,
                seconds, s.status, f"N = {len(result.solution.u)}", result.timings["build"],
                result.timings["solve"] / len(result.starts), starts)
@@ -122,12 +127,15 @@ def main(argv=None) -> int:
             row = ours(path, "yaw-track-cabin", params, "ipopt", 0.05)
             row.note += f", {1e3 * row.seconds / max(row.iterations, 1):.1f} ms/iteration"
             rows.append(row)
-        # The whole machine on a 35 s car lap, h_u = 0.05 s, every channel weighted.
-        lap = profiles.car_lap()
-        row = ours(lap, "full", params, "ipopt", 0.05)
-        peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
-        row.note += f", peak memory of the process {peak:.0f} MB"
-        rows.append(row)
+    # The whole machine (issue 17): today's method and the default side by side, in this run.
+    paths = [catapult] if args.quick else [catapult, profiles.car_lap()]
+    for path in paths:
+        for label, problem in ((", before issue 17", TODAY), ("", {})):
+            row = ours(path, "full", params, "ipopt", 0.05, label=label, **problem)
+            peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+            row.note += (f", {1e3 * row.seconds / max(row.iterations, 1):.0f} ms/iteration, "
+                         f"peak memory of the process so far {peak:.0f} MB")
+            rows.append(row)
     print(table(rows))
     return 0
 

@@ -8,8 +8,8 @@ import pytest
 from desdemona import Model, profiles, thesis_toy_params
 from desdemona.baselines import ThesisOptions, classical_dfs, optimize_thesis
 from desdemona.offline import OptimizeOptions, initial_guesses, optimize
-from desdemona.problem import CueingProblem, ProblemOptions
 from desdemona.perception import thesis_model
+from desdemona.problem import CueingProblem, ProblemOptions
 from desdemona.profiles import DesiredPath
 from desdemona.plan import Plan
 from desdemona.simulate import check
@@ -76,6 +76,34 @@ def test_every_configuration_solves_and_passes_the_check(params, config, kind):
     assert np.isfinite(result.check.rms)
     # the returned trajectory is the one checked: same controls, same start
     assert result.trajectory.q.shape[1] == Model(params, config).n
+
+
+def test_full_converges_with_the_paths_own_weights_and_no_worse_than_before(params):
+    """Issue 17: on six joints the unweighted channels get a small weight in the cost only and the
+    limits' curvature leaves the Hessian; the solve converges where rotations are free, and the RMS
+    with the path's own Q is no worse than with the formulation before."""
+    path = profiles.catapult(level=15.0, push=1.0, quiet=0.5, duration=2.5)
+    new = optimize(path, Model(params, "full"), OptimizeOptions(ProblemOptions(h_u=0.1), starts=1))
+    before = optimize(path, Model(params, "full"), OptimizeOptions(
+        ProblemOptions(h_u=0.1, limit_curvature=True, unweighted=0.0), starts=1))
+    for result in (new, before):
+        assert result.solution.success, result.solution.status
+        assert result.check.passed, result.check.describe_violations()
+    assert new.check.rms <= before.check.rms * 1.01 + 1e-3
+    assert new.solution.iterations < before.solution.iterations
+
+
+def test_unweighted_channels_weigh_in_the_cost_only(params):
+    path = profiles.catapult(duration=1.0)
+    problem = CueingProblem(Model(params, "full"), path, ProblemOptions(h_u=0.1))
+    np.testing.assert_array_equal(problem.weights, path.weights)
+    np.testing.assert_array_equal(problem.cost_weights, [0.01, 0.01, 0.01, 3, 1, 1])
+    assert not problem.limit_curvature
+    small = CueingProblem(Model(params, "yaw-track-cabin"), path, ProblemOptions(h_u=0.1))
+    np.testing.assert_array_equal(small.cost_weights, path.weights)
+    assert small.limit_curvature
+    with pytest.raises(ValueError, match="unweighted"):
+        ProblemOptions(unweighted=-1.0)
 
 
 def test_perception_lowers_the_perceived_error(params):

@@ -74,6 +74,9 @@ def _parser() -> argparse.ArgumentParser:
                      help="minimise the perceived difference through this vestibular model")
     _add_start_options(opt, starts=4)
     _add_session_options(opt)
+    opt.add_argument("--refine", action="store_true",
+                     help="solve with the simplified dynamics (centres of mass at the frame origins) first, "
+                          "then refine with the full dynamics (thesis 5.7)")
     opt.add_argument("--workers", type=int, default=1, metavar="N",
                      help="parallel processes for the starts (default: 1)")
     opt.add_argument("--overwrite", action="store_true", help="replace DIR if it exists")
@@ -289,7 +292,8 @@ def _run_optimize(args) -> int:
         path, session = _session(args, model, path)
         perception = perception_models.get_model(args.perception) if args.perception else None
         problem = ProblemOptions(h_u=args.h_u, solver=args.method, perception=perception, **session)
-        options = OptimizeOptions(problem, starts=args.starts, seed=args.seed, workers=args.workers)
+        options = OptimizeOptions(problem, starts=args.starts, seed=args.seed, workers=args.workers,
+                                  refine=args.refine)
         result = optimize(path, model, options, progress=progress)
     report.write(result, out, command=report.command_line(), overwrite=args.overwrite)
     c = result.check
