@@ -10,14 +10,13 @@ smart guesses of table 5.2 do, and seeded random starts widen the search.
 
 from __future__ import annotations
 
-import concurrent.futures
 import multiprocessing
 import time
 from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from desdemona import baselines
+from desdemona import baselines, guard
 from desdemona.configs import Configuration, get_configuration
 from desdemona.model import Model
 from desdemona.params import MachineParams, default_params
@@ -83,6 +82,11 @@ class Result:
     check: LimitCheck
     starts: tuple[StartReport, ...]
     timings: dict
+
+    @property
+    def converged(self) -> bool:
+        """The chosen start's solver reported success (not stopped at its iteration cap or otherwise)."""
+        return bool(self.solution.success)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -164,7 +168,7 @@ def optimize(path: DesiredPath, config: str | Configuration = "yaw-track-cabin",
              progress=None) -> Result:
     """The best checked joint trajectory for a desired path (thesis chapters 3-7, off-line).
 
-    progress : optional callable ``progress(done, total)`` told after each start.
+    progress : optional callable ``progress(done, total, best_cost)`` told after each start.
     Raises :class:`LimitViolation` when no start yields a trajectory within every limit.
     """
     wall = time.perf_counter()
@@ -174,23 +178,28 @@ def optimize(path: DesiredPath, config: str | Configuration = "yaw-track-cabin",
     full, rough = _problems(params, config, path, options)
     build = time.perf_counter() - build
     guesses = initial_guesses(full, options.starts, options.seed)
+    solved = []
+
+    def done(item):
+        solved.append(item)
+        if progress is not None:
+            progress(len(solved), len(guesses), min(sol.cost for _, sol in solved))
+
     if options.workers > 1 and len(guesses) > 1:
-        chunks = [c for c in (guesses[i::options.workers] for i in range(options.workers)) if c]
         _WORKER["problems"] = (full, rough)
         context = multiprocessing.get_context("fork")
+        # leaving the block terminates the workers, also when the parent is interrupted
         try:
-            with concurrent.futures.ProcessPoolExecutor(len(chunks), mp_context=context) as pool:
-                solved = [item for part in pool.map(_worker_solve, chunks) for item in part]
+            with context.Pool(min(options.workers, len(guesses)), initializer=guard.worker_signals) as pool:
+                for part in pool.imap_unordered(_worker_solve, [[g] for g in guesses]):
+                    done(part[0])
         finally:
             _WORKER.clear()
         order = {name: i for i, (name, _, _) in enumerate(guesses)}
         solved.sort(key=lambda item: order[item[0]])
     else:
-        solved = []
         for name, x, u in guesses:
-            solved.append((name, _solve_one(full, rough, x, u)))
-            if progress is not None:
-                progress(len(solved), len(guesses))
+            done((name, _solve_one(full, rough, x, u)))
     candidates, reports = [], []
     for name, sol in solved:
         result_check, _ = _check(full, sol)

@@ -1,8 +1,14 @@
 """Result folders: trajectory.csv, summary.json, trajectory.mat and figures like the thesis'.
 
 A folder is written to a temporary sibling and renamed into place only when complete, so a failed or
-interrupted run never leaves a half-written result. :func:`load` reads a folder back and
-:func:`draw_figures` re-draws its figures (``desdemona plot DIR``).
+interrupted run never leaves a half-written result. Its ``summary.json`` carries ``"format":
+"desdemona result"``: only a folder with that mark and nothing but result files in it is ever replaced
+(:func:`check_replaceable`), never a file, the working folder, a folder holding the run's input, or a
+folder of the user's. :func:`load` reads a folder back and :func:`draw_figures` re-draws its figures
+(``desdemona plot DIR``).
+
+``trajectory.csv``: a ``#`` line with the units, then the column names as the first non-comment line
+(so pandas, ``csv.DictReader`` and MATLAB's ``readtable`` name the columns), then the rows.
 
 Figures (PNG): ``path.png`` S against S_d per channel (thesis figures 5.7-5.16 (a)); ``joints.png``
 joint positions and rates ((b), (c)); ``limits.png`` normalised force/torque and power with the +-1
@@ -22,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona import __version__
+from desdemona import __version__, guard
 from desdemona.simulate import Trajectory
 
 CHANNELS = ("wx", "wy", "wz", "fx", "fy", "fz")
@@ -30,8 +36,43 @@ CHANNEL_LABELS = ("omega_x [rad/s]", "omega_y [rad/s]", "omega_z [rad/s]",
                   "f_x [m/s^2]", "f_y [m/s^2]", "f_z [m/s^2]")
 
 
+RESULT_FORMAT = "desdemona result"  # the mark in summary.json that makes a folder ours to replace
+# Everything a result folder of ours may hold: replacing one never deletes anything else.
+RESULT_FILES = {"trajectory.csv", "summary.json", "trajectory.mat", "cycles.csv"}
+UNITS = "units: SI (s, rad, m, rad/s, m/s, rad/s^2, m/s^2, N*m, N, W)"
+
+
 class ReportError(RuntimeError):
     """The result folder cannot be written or read; the message says where and why."""
+
+
+def check_replaceable(out_dir: str | Path, protect=()) -> None:
+    """Raise :class:`ReportError` unless ``out_dir`` may be replaced by a new result: it is a result
+    folder of ours (``summary.json`` with the :data:`RESULT_FORMAT` mark, only result files inside),
+    not the working folder or one of its parents, and holds none of the paths in ``protect`` (the
+    run's own inputs)."""
+    out = Path(out_dir)
+    refuse = f"{out}: --overwrite replaces only a desdemona result folder, and this is "
+    if not out.exists():
+        return
+    if out.is_symlink() or not out.is_dir():
+        raise ReportError(refuse + "not a folder")
+    real = out.resolve()
+    cwd = Path.cwd().resolve()
+    if real == cwd or real in cwd.parents:
+        raise ReportError(refuse + "the current folder or one of its parents")
+    for path in protect:
+        if path is not None and real in Path(path).resolve().parents:
+            raise ReportError(refuse + f"the folder of the input {path}")
+    try:
+        mark = json.loads((out / "summary.json").read_text()).get("format")
+    except (OSError, ValueError, AttributeError):
+        mark = None
+    if mark != RESULT_FORMAT:
+        raise ReportError(refuse + "not one (no summary.json written by desdemona)")
+    others = sorted(p.name for p in out.iterdir() if p.name not in RESULT_FILES and p.suffix != ".png")
+    if others:
+        raise ReportError(refuse + f"holds other files too ({', '.join(others[:3])}); move them first")
 
 
 def versions() -> dict[str, str]:
@@ -70,8 +111,18 @@ def run_description(path, config) -> dict:
                               "held_positions": list(config.fixed)}}
 
 
-def write(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False) -> Path:
-    """Write the result folder of an off-line :class:`~desdemona.offline.Result` atomically."""
+def write(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False,
+          unreachable: dict | None = None, protect=()) -> Path:
+    """Write the result folder of an off-line :class:`~desdemona.offline.Result` atomically.
+
+    unreachable : :func:`desdemona.sizing.unreachable` of the result's path (computed when not given).
+    protect : see :func:`write_folder`.
+    """
+    if unreachable is None:
+        from desdemona import sizing
+        from desdemona.model import Model
+
+        unreachable = sizing.unreachable(result.path, Model(result.params, result.config))
     summary = {
         "command": command,
         **run_description(result.path, result.config),
@@ -88,27 +139,34 @@ def write(result, out_dir: str | Path, command: str | None = None, overwrite: bo
             "worst_use_per_joint": {k: dict(zip(result.config.joint_names, map(float, v)))
                                     for k, v in result.check.use.items()},
         },
-        "solver": {"status": result.solution.status, "success": result.solution.success,
+        "unreachable": unreachable,
+        "solver": {"converged": result.converged, "status": result.solution.status,
+                   "success": result.solution.success,
                    "iterations": result.solution.iterations, "cost": result.solution.cost,
                    "starts": [vars(s) for s in result.starts], "timings_s": result.timings},
         "options": _plain(result.options),
         "parameters": result.params.to_dict(),
         "versions": versions(),
     }
-    return write_folder(result.trajectory, summary, result.config.joint_names, out_dir, overwrite)
+    return write_folder(result.trajectory, summary, result.config.joint_names, out_dir, overwrite,
+                        protect=protect)
 
 
 def write_folder(traj: Trajectory, summary: dict, joint_names, out_dir: str | Path, overwrite: bool = False,
-                 extra=None) -> Path:
+                 extra=None, protect=()) -> Path:
     """Write trajectory.csv, summary.json, trajectory.mat and the figures into ``out_dir`` atomically.
 
+    overwrite : replace ``out_dir`` if it is a result folder of ours (:func:`check_replaceable`).
     extra : optional ``extra(folder)`` that writes more files into the folder before it is moved in.
+    protect : paths (the run's inputs) that the replaced folder must not hold.
     """
     import scipy.io
 
     out = Path(out_dir)
     if out.exists() and not overwrite:
         raise ReportError(f"{out}: already exists; choose another folder or allow overwriting")
+    check_replaceable(out, protect)
+    summary = {"format": RESULT_FORMAT, **summary}
     parent = out.resolve().parent
     if not parent.is_dir():
         raise ReportError(f"{out}: the parent folder {parent} does not exist")
@@ -117,22 +175,27 @@ def write_folder(traj: Trajectory, summary: dict, joint_names, out_dir: str | Pa
     except OSError as exc:
         raise ReportError(f"{out}: cannot write in {parent}: {exc.strerror or exc}") from None
     try:
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o777 & ~umask)  # mkdtemp makes it private (0700); a result is an ordinary folder
         names, table = trajectory_table(traj, joint_names)
-        header = "units: SI (s, rad, m, rad/s, m/s, rad/s^2, m/s^2, N*m, N, W)\n" + ",".join(names)
-        np.savetxt(tmp / "trajectory.csv", table, delimiter=",", header=header, comments="# ", fmt="%.10g")
+        with open(tmp / "trajectory.csv", "w") as fh:
+            fh.write(f"# {UNITS}\n{','.join(names)}\n")
+            np.savetxt(fh, table, delimiter=",", fmt="%.10g")
         (tmp / "summary.json").write_text(json.dumps(summary, indent=2, default=_json_default))
         scipy.io.savemat(tmp / "trajectory.mat", {n.replace("-", "_"): table[:, i] for i, n in enumerate(names)},
                          oned_as="column")
         draw_figures(traj, summary, tmp)
         if extra is not None:
             extra(tmp)
-        if out.exists():
-            old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old.", dir=parent))
-            os.replace(out, old / out.name)
-            os.replace(tmp, out)
-            shutil.rmtree(old)
-        else:
-            os.replace(tmp, out)
+        with guard.deferred():  # an interrupt between the two renames would lose both folders
+            if out.exists():
+                old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old.", dir=parent))
+                os.replace(out, old / out.name)
+                os.replace(tmp, out)
+                shutil.rmtree(old)
+            else:
+                os.replace(tmp, out)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
@@ -145,10 +208,14 @@ def load(out_dir: str | Path) -> tuple[Trajectory, dict]:
     try:
         summary = json.loads((out / "summary.json").read_text())
         with open(out / "trajectory.csv") as fh:
-            fh.readline()
-            names = fh.readline().lstrip("# ").strip().split(",")
-        table = np.loadtxt(out / "trajectory.csv", delimiter=",", comments="#", ndmin=2)
-    except (OSError, ValueError) as exc:
+            lines = fh.read().splitlines()
+        rows = [line for line in lines if not line.startswith("#")]
+        if rows and rows[0].startswith("t,"):
+            names, rows = rows[0].split(","), rows[1:]
+        else:  # written by earlier versions: the column names in a comment
+            names = next(line.lstrip("# ") for line in lines if line.lstrip("# ").startswith("t,")).split(",")
+        table = np.loadtxt(rows, delimiter=",", ndmin=2)
+    except (OSError, ValueError, StopIteration) as exc:
         raise ReportError(f"{out}: not a readable result folder: {exc}") from None
     col = {n: table[:, i] for i, n in enumerate(names)}
     joints = summary["configuration"]["free_joints"]
