@@ -5,11 +5,12 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+import time
 from pathlib import Path
 
 import numpy as np
 
-from desdemona import __version__, profiles
+from desdemona import __version__, guard, profiles, sizing
 from desdemona import perception as perception_models
 from desdemona.configs import CONFIGURATIONS, get_configuration
 from desdemona.model import Model
@@ -17,6 +18,17 @@ from desdemona.params import BUILTIN_SETS, ParameterError, load_params
 
 EXIT_USAGE = 2
 EXIT_UNSAFE = 3  # no trajectory within every limit was found: nothing is written
+EXIT_NOT_CONVERGED = 4  # a result within every limit is written, but the solver did not converge
+EXIT_CODES = """exit codes:
+  0    done: the result is written
+  1    an unexpected error (a bug: please report it with the command)
+  2    bad input (profile, CSV, parameters, options, --out) or a problem too large for this machine's
+       memory; nothing is run and nothing is written
+  3    no trajectory within every limit was found; nothing is written
+  4    a result within every limit is written, but the solver stopped before converging (for example
+       at its iteration cap): its status is in the printed line and summary.json ("converged": false)
+  130  interrupted by Ctrl-C (SIGINT), 143 by SIGTERM: stopped within a second or two, nothing written"""
+PROGRESS_EVERY = 10.0  # [s] between progress lines inside a long solve (stderr not a terminal)
 
 
 class UserError(Exception):
@@ -33,18 +45,22 @@ def main(argv: list[str] | None = None) -> int:
     from desdemona.simulate import LimitViolation
 
     try:
-        return args.run(args)
-    except (UserError, ParameterError, profiles.ProfileError, ReportError) as exc:
+        with guard.interruptible():
+            return args.run(args)
+    except (UserError, ParameterError, profiles.ProfileError, ReportError, sizing.TooLarge) as exc:
         print(f"desdemona: error: {exc}", file=sys.stderr)
         return EXIT_USAGE
     except LimitViolation as exc:
         print(f"desdemona: no result written: {exc}", file=sys.stderr)
         return EXIT_UNSAFE
+    except guard.Interrupted as exc:
+        print(f"\ndesdemona: interrupted ({exc}); nothing written", file=sys.stderr)
+        return exc.exit_code
 
 
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
-        prog="desdemona",
+        prog="desdemona", epilog=EXIT_CODES, formatter_class=argparse.RawDescriptionHelpFormatter,
         description="Optimal motion cueing for the Desdemona simulator.")
     parser.add_argument("--version", action="version", version=f"desdemona {__version__}")
     sub = parser.add_subparsers(title="commands", required=True, metavar="COMMAND")
@@ -75,7 +91,9 @@ def _parser() -> argparse.ArgumentParser:
     _add_start_options(opt, starts=4)
     opt.add_argument("--workers", type=int, default=1, metavar="N",
                      help="parallel processes for the starts (default: 1)")
-    opt.add_argument("--overwrite", action="store_true", help="replace DIR if it exists")
+    _add_overwrite_option(opt)
+    opt.add_argument("--quiet", action="store_true",
+                     help="no progress on stderr (default: a bar on a terminal, else a line per start)")
     opt.set_defaults(run=_run_optimize)
 
     batch = sub.add_parser(
@@ -94,6 +112,7 @@ def _parser() -> argparse.ArgumentParser:
                        help="local processes when no --dask is given (default: 2)")
     batch.add_argument("--dask", metavar="ADDRESS", default=None,
                        help="Dask scheduler address (tcp://host:8786): run the jobs on that cluster")
+    batch.add_argument("--quiet", action="store_true", help="no line on stderr as each job ends")
     batch.set_defaults(run=_run_batch)
 
     online = sub.add_parser(
@@ -113,7 +132,7 @@ def _parser() -> argparse.ArgumentParser:
                         help="how the future path is guessed from what is known now (default: perfect)")
     online.add_argument("--method", choices=("rti", "nlp"), default="rti",
                         help="rti: one QP per cycle (fast); nlp: IPOPT to convergence (default: rti)")
-    online.add_argument("--overwrite", action="store_true", help="replace DIR if it exists")
+    _add_overwrite_option(online)
     online.set_defaults(run=_run_online)
 
     prof = sub.add_parser("profiles", help="list the built-in desired paths",
@@ -135,6 +154,12 @@ def _add_machine_options(parser: argparse.ArgumentParser, default_config: str = 
                         help="TOML file overriding any subset of the machine parameters")
     parser.add_argument("--base", choices=BUILTIN_SETS, default=None,
                         help="built-in parameter set to start from (default: default)")
+
+
+def _add_overwrite_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--overwrite", action="store_true",
+                        help="replace DIR if it is an earlier result folder of desdemona (never another "
+                             "folder, a file, or the current folder)")
 
 
 def _add_start_options(parser: argparse.ArgumentParser, starts: int) -> None:
@@ -169,13 +194,21 @@ def _load_profile(name: str) -> profiles.DesiredPath:
     return profiles.get_profile(name)  # raises, listing the built-in profiles
 
 
+def _inputs(args) -> tuple:
+    """The files a run reads: a replaced result folder must not hold them."""
+    return tuple(p for p in (args.profile, args.params) if p is not None and os.path.exists(p))
+
+
 def _run_inputs(args):
     """The machine, the desired path and the output folder of a run, each checked before any work."""
+    from desdemona import report
+
     model = _machine(args)
     path = _load_profile(args.profile)
     out = Path(args.out)
     if out.exists() and not args.overwrite:
         raise UserError(f"{out}: already exists; choose another folder or add --overwrite")
+    report.check_replaceable(out, protect=_inputs(args))
     if not out.resolve().parent.is_dir() or not os.access(out.resolve().parent, os.W_OK):
         raise UserError(f"{out}: cannot create it: {out.resolve().parent} is not a writable folder")
     if not model.config.modulus_cost and path.S_d is None:
@@ -197,28 +230,59 @@ def _run_optimize(args) -> int:
         raise UserError(f"--h-u {args.h_u:g}: must be positive and at most the path's {path.duration:g} s")
     if model.config.modulus_cost and args.perception:
         raise UserError("--perception applies to the full path S, not to the dfs modulus")
-    progress = _progress_bar() if sys.stderr.isatty() else None
     if args.method == "thesis":
-        result = thesis_result(path, model.config, model.params,
-                               ThesisOptions(h_u=max(args.h_u, 0.1), starts=args.starts, seed=args.seed))
+        problem = ProblemOptions(h_u=max(args.h_u, 0.1))
     else:
         problem = ProblemOptions(h_u=args.h_u, solver=args.method, perception=args.perception)
-        options = OptimizeOptions(problem, starts=args.starts, seed=args.seed, workers=args.workers)
-        result = optimize(path, model.config, model.params, options, progress=progress)
-    report.write(result, out, command=report.command_line(), overwrite=args.overwrite)
+    size = sizing.check_fits(path, model.config, problem, args.workers)
+    unreachable = sizing.unreachable(path, model)
+    progress = None if args.quiet else _Progress(args.starts, size, path, model.config)
+    with guard.reporting(None if progress is None else progress.solving, PROGRESS_EVERY):
+        if args.method == "thesis":
+            result = thesis_result(path, model.config, model.params,
+                                   ThesisOptions(h_u=problem.h_u, starts=args.starts, seed=args.seed))
+        else:
+            options = OptimizeOptions(problem, starts=args.starts, seed=args.seed, workers=args.workers)
+            result = optimize(path, model.config, model.params, options,
+                              progress=None if progress is None else progress.start_done)
+    report.write(result, out, command=report.command_line(), overwrite=args.overwrite, unreachable=unreachable,
+                 protect=_inputs(args))
     c = result.check
     perceived = f" (perceived {c.rms_perceived:.4g})" if c.rms_perceived is not None else ""
+    solver = f"solver {result.solution.status}" + ("" if result.converged else " (NOT CONVERGED)")
     print(f"{path.name} on {model.config.name}: RMS = {c.rms:.4g}{perceived}, worst limit use "
-          f"{c.worst_use:.4f}, solver {result.solution.status}, {result.timings['wall']:.2f} s; written to {out}")
-    return 0
+          f"{c.worst_use:.4f}, {solver}, {result.timings['wall']:.2f} s{sizing.describe(unreachable)}; "
+          f"written to {out}")
+    return 0 if result.converged else EXIT_NOT_CONVERGED
 
 
-def _progress_bar():
-    def show(done, total):
-        bar = "#" * done + "." * (total - done)
-        print(f"\r  starts [{bar}] {done}/{total}", end="" if done < total else "\n", file=sys.stderr,
-              flush=True)
-    return show
+class _Progress:
+    """Progress of an off-line run on stderr: a bar on a terminal; else (a log file, a CI job) a line
+    when the run starts, one per finished start with the elapsed time and the best cost so far, and one
+    every PROGRESS_EVERY seconds inside a long solve."""
+
+    def __init__(self, starts: int, size: sizing.Size, path, config):
+        self.begin = time.perf_counter()
+        self.tty = sys.stderr.isatty()
+        if not self.tty:
+            self._say(f"{path.name} on {config.name}: {size.intervals:,} control intervals, {size.variables:,} "
+                      f"variables, {starts} start{'s' if starts > 1 else ''}")
+
+    def _say(self, text: str) -> None:
+        print(f"desdemona: {text}", file=sys.stderr, flush=True)
+
+    def start_done(self, done: int, total: int, best: float) -> None:
+        if self.tty:
+            bar = "#" * done + "." * (total - done)
+            print(f"\r  starts [{bar}] {done}/{total}", end="" if done < total else "\n", file=sys.stderr,
+                  flush=True)
+        else:
+            self._say(f"start {done}/{total} done, {time.perf_counter() - self.begin:.1f} s, best cost so far {best:.6g}")
+
+    def solving(self, iteration: int, cost: float, seconds: float) -> None:
+        if not self.tty:
+            self._say(f"  solving: iteration {iteration}, cost {cost:.6g}, {seconds:.0f} s in this start, "
+                      f"{time.perf_counter() - self.begin:.1f} s in all")
 
 
 def _run_batch(args) -> int:
@@ -239,9 +303,18 @@ def _run_batch(args) -> int:
     params = load_params(args.params, base=args.base)
     options = OptimizeOptions(ProblemOptions(h_u=args.h_u), starts=args.starts, seed=args.seed)
     jobs = [batch.Job(p, c) for p in args.profiles for c in args.configs]
-    results = batch.run_batch(jobs, params, options, args.out, args.processes, args.dask)
+    begin = time.perf_counter()
+
+    def progress(done, total, job):
+        print(f"desdemona: job {done}/{total} done, {time.perf_counter() - begin:.1f} s: {job.profile} on "
+              f"{job.config}: {job.status}", file=sys.stderr, flush=True)
+
+    results = batch.run_batch(jobs, params, options, args.out, args.processes, args.dask,
+                              progress=None if args.quiet else progress)
     print(batch.table(results))
-    return 0 if all(r.status == "ok" for r in results) else EXIT_UNSAFE
+    if any(r.status not in ("ok", "not converged") for r in results):
+        return EXIT_UNSAFE
+    return 0 if all(r.status == "ok" for r in results) else EXIT_NOT_CONVERGED
 
 
 def _run_online(args) -> int:

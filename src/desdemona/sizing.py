@@ -26,9 +26,9 @@ from desdemona.profiles import DesiredPath
 # project's 2-core reference machine (CasADi 3.7, IPOPT with MUMPS) as the slope of ru_maxrss between
 # 400 and 1,600 intervals of the cosine path (dfs: its modulus), h_u = 0.05 s:
 # dfs 22.4 kB, yaw-track 40.6 kB, yaw-track-cabin 67.8 kB, full 213 kB; with the thesis' perception model
-# on full, 2.0x that. The cost of a stage grows with its sub-step points (substeps + 1).
+# on full, 1.6x that (341 kB). The cost of a stage grows with its sub-step points (substeps + 1).
 BYTES_PER_INTERVAL = {1: 22.4e3, 2: 40.6e3, 3: 67.8e3, 6: 213e3}  # by number of free joints
-PERCEPTION_FACTOR = 2.0
+PERCEPTION_FACTOR = 1.6
 BASE_BYTES = 250e6  # Python, NumPy, SciPy, CasADi and the path itself
 SAFETY = 2.0  # MUMPS may enlarge its workspace when it re-factorises; the test path converged in 3 iterations
 STEADY_WINDOW = 1.0  # [s] a target held at least this long is "steady"
