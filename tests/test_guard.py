@@ -79,7 +79,7 @@ def test_sigint_inside_ipopt_stops_the_run(tmp_path):
         proc.kill()
     assert time.perf_counter() - sent < 5.0
     assert proc.returncode == 130, err
-    assert err.strip().splitlines()[-1] == "desdemona: interrupted (SIGINT); nothing written"
+    assert err.strip().splitlines()[-1] == "desdemona: interrupted (SIGINT): stopped, no partial result written"
     assert list(tmp_path.iterdir()) == []
 
 

@@ -102,8 +102,25 @@ def run_batch(jobs: list[Job], params: MachineParams, options: OptimizeOptions, 
     """
     validate(jobs, params, options, out_dir)
     out = Path(out_dir)
+    created = not out.exists()
     out.mkdir(parents=True, exist_ok=True)
-    args = [(job, params, options, str(out)) for job in jobs]
+    try:
+        results = _run(jobs, [(job, params, options, str(out)) for job in jobs], processes, dask_address,
+                       progress)
+    except BaseException:
+        if created and not any(out.iterdir()):
+            out.rmdir()  # interrupted before any job finished: leave nothing behind
+        raise
+    with open(out / "batch.csv", "w", newline="") as fh:
+        writer = csv.writer(fh)
+        writer.writerow(["profile", "configuration", "status", "rms", "worst_use", "seconds", "folder", "message"])
+        for r in results:
+            writer.writerow([r.profile, r.config, r.status, r.rms, r.worst_use, f"{r.seconds:.3f}", r.folder,
+                             r.message])
+    return results
+
+
+def _run(jobs, args, processes, dask_address, progress) -> list[JobResult]:
     results: list[JobResult | None] = [None] * len(jobs)
 
     def done(index, result):
@@ -126,15 +143,10 @@ def run_batch(jobs: list[Job], params: MachineParams, options: OptimizeOptions, 
     else:
         context = multiprocessing.get_context("spawn")
         # leaving the block terminates the workers, also when the batch is interrupted
-        with context.Pool(max(1, min(processes, len(jobs))), initializer=guard.worker_signals) as pool:
+        with context.Pool(max(1, min(processes, len(jobs))), initializer=guard.worker_signals,
+                          initargs=(True,)) as pool:
             for i, result in pool.imap_unordered(_indexed_job, list(enumerate(args))):
                 done(i, result)
-    with open(out / "batch.csv", "w", newline="") as fh:
-        writer = csv.writer(fh)
-        writer.writerow(["profile", "configuration", "status", "rms", "worst_use", "seconds", "folder", "message"])
-        for r in results:
-            writer.writerow([r.profile, r.config, r.status, r.rms, r.worst_use, f"{r.seconds:.3f}", r.folder,
-                             r.message])
     return results
 
 

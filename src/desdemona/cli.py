@@ -54,8 +54,9 @@ def main(argv: list[str] | None = None) -> int:
         print(f"desdemona: no result written: {exc}", file=sys.stderr)
         return EXIT_UNSAFE
     except guard.Interrupted as exc:
-        print(f"\ndesdemona: interrupted ({exc}); nothing written", file=sys.stderr)
-        return exc.exit_code
+        end_bar = "\n" if sys.stderr.isatty() else ""  # a progress bar may be half drawn
+        print(f"{end_bar}desdemona: interrupted ({exc.name}): stopped, no partial result written", file=sys.stderr)
+        return exc.code
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -357,6 +358,7 @@ def _run_online(args) -> int:
                                       "max": float(times.max())},
                    "sources": {s: run.sources.count(s) for s in ("mpc", "shifted", "brake")},
                    "deadline_misses": int(np.sum(times > controller.deadline))},
+        "unreachable": sizing.unreachable(path, model),
         "parameters": model.params.to_dict(),
         "versions": report.versions(),
     }
@@ -366,7 +368,8 @@ def _run_online(args) -> int:
           + (f" (classical loop {summary_classical:.4g})" if summary_classical is not None else "")
           + f", worst limit use {result.worst_use:.4f}, compute per cycle median "
           f"{1e3 * cycles['compute_time_s']['median']:.2f} ms, p99 {1e3 * cycles['compute_time_s']['p99']:.2f} ms, "
-          f"fallbacks {cycles['sources']['shifted'] + cycles['sources']['brake']}; written to {out}")
+          f"fallbacks {cycles['sources']['shifted'] + cycles['sources']['brake']}"
+          f"{sizing.describe(summary['unreachable'])}; written to {out}")
     return 0
 
 

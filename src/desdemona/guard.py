@@ -12,7 +12,8 @@ or two, write nothing, and leave the command to exit 128 + the signal number. Th
   signal a repeating timer raises :class:`Interrupted` again every :data:`REPEAT` seconds until it
   reaches Python code that lets it through.
 - Worker processes: they ignore SIGINT (:func:`worker_signals`), so only the parent decides, and the
-  parent terminates them (``multiprocessing.Pool`` does on leaving its ``with`` block).
+  parent terminates them (``multiprocessing.Pool`` sends SIGTERM on leaving its ``with`` block), which
+  stops them the same way.
 
 Signals and signal handlers are process-wide, so is the state here: it is set only inside the CLI's
 ``with interruptible():`` and is inert for a library user who never enters it.
@@ -33,24 +34,21 @@ import casadi as ca
 REPEAT = 0.2  # [s] re-raise period once a signal was received and something swallowed the exception
 
 
-class Interrupted(BaseException):
-    """The user asked the run to stop (SIGINT or SIGTERM). A BaseException, like KeyboardInterrupt, so
-    that ``except Exception`` clauses that turn failures into table lines do not keep the run going."""
+class Interrupted(SystemExit):
+    """The user asked the run to stop (SIGINT or SIGTERM). A SystemExit with code 128 + the signal
+    number: ``except Exception`` clauses that turn failures into table lines let it through, and a
+    worker process that meets it ends quietly with that code."""
 
     def __init__(self, signum: int):
-        super().__init__(signal.Signals(signum).name)
+        super().__init__(128 + signum)
         self.signum = signum
-
-    @property
-    def exit_code(self) -> int:
-        return 128 + self.signum
+        self.name = signal.Signals(signum).name
 
 
 class _State:
     """What the handlers and monitors share within one process."""
 
     def __init__(self):
-        self.active = False  # inside interruptible()
         self.signum: int | None = None  # the first signal received
         self.monitored = 0  # depth of solves whose monitor will stop the solver
         self.reporter = None  # reporter(iteration, cost, seconds) for long solves
@@ -83,7 +81,7 @@ def interruptible():
         yield
         return
     saved = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM, signal.SIGALRM)}
-    _state.active, _state.signum = True, None
+    _state.signum = None
     for s in (signal.SIGINT, signal.SIGTERM):
         signal.signal(s, _handler)
     try:
@@ -92,7 +90,7 @@ def interruptible():
         signal.setitimer(signal.ITIMER_REAL, 0)
         for s, h in saved.items():
             signal.signal(s, h)
-        _state.active, _state.signum, _state.monitored = False, None, 0
+        _state.signum, _state.monitored = None, 0
 
 
 def check() -> None:
@@ -131,12 +129,14 @@ def deferred():
         signal.pthread_sigmask(signal.SIG_SETMASK, previous)
 
 
-def worker_signals() -> None:
-    """Initializer of worker processes: ignore SIGINT (the parent decides, and terminates them) and
-    die at once on SIGTERM."""
+def worker_signals(writes: bool = False) -> None:
+    """Initializer of worker processes: ignore SIGINT (a terminal sends it to the whole process group:
+    the parent decides, and terminates the workers with SIGTERM). On SIGTERM a worker that only
+    computes dies at once; one that ``writes`` result folders stops as the parent would, so that a
+    folder being written is removed, not left half (at the cost of up to an IPOPT iteration)."""
+    _state.signum, _state.monitored, _state.reporter = None, 0, None
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    signal.signal(signal.SIGTERM, signal.SIG_DFL)
-    _state.active, _state.signum, _state.reporter = False, None, None
+    signal.signal(signal.SIGTERM, _handler if writes else signal.SIG_DFL)
 
 
 @contextlib.contextmanager
