@@ -62,6 +62,10 @@ def test_result_folder_respects_the_umask_and_names_its_columns(tmp_path):
     assert float(first["t"]) == 0.0 and "q_track" in first and "fy_d" in first
     traj, _ = report.load(tmp_path / "run")
     assert traj.q.shape[1] == 2
+    # folders of earlier versions, with the names in a comment, still load
+    lines = (tmp_path / "run" / "trajectory.csv").read_text().splitlines()
+    (tmp_path / "run" / "trajectory.csv").write_text("\n".join([lines[0], "# " + lines[1], *lines[2:]]) + "\n")
+    assert (report.load(tmp_path / "run")[0].q == traj.q).all()
 
 
 def test_sigint_inside_ipopt_stops_the_run(tmp_path):

@@ -24,10 +24,14 @@ EXIT_CODES = """exit codes:
   1    an unexpected error (a bug: please report it with the command)
   2    bad input (profile, CSV, parameters, options, --out) or a problem too large for this machine's
        memory; nothing is run and nothing is written
-  3    no trajectory within every limit was found; nothing is written
+  3    no trajectory within every limit was found; nothing is written (batch: for some job)
   4    a result within every limit is written, but the solver stopped before converging (for example
        at its iteration cap): its status is in the printed line and summary.json ("converged": false)
-  130  interrupted by Ctrl-C (SIGINT), 143 by SIGTERM: stopped within a second or two, nothing written"""
+       (batch: for some job, and no job ended with 3)
+  130  interrupted by Ctrl-C (SIGINT), 143 by SIGTERM: stopped within a second or two, workers too;
+       no partial result is written"""
+SEE_EXIT_CODES = "Exit codes: 0 done, 2 bad input, 3 no safe trajectory, 4 not converged, 130 interrupted; " \
+                 "see 'desdemona --help'."
 PROGRESS_EVERY = 10.0  # [s] between progress lines inside a long solve (stderr not a terminal)
 
 
@@ -74,7 +78,7 @@ def _parser() -> argparse.ArgumentParser:
     model.set_defaults(run=_run_model)
 
     opt = sub.add_parser(
-        "optimize", help="compute the best joint trajectory for a desired path (off-line)",
+        "optimize", epilog=SEE_EXIT_CODES, help="compute the best joint trajectory for a desired path (off-line)",
         description="Compute the joint trajectory that makes the cabin's path S follow the desired S_d as "
                     "closely as possible within every limit of the machine, check it independently on a "
                     "10x finer grid, and write a result folder: trajectory.csv, summary.json, "
@@ -98,7 +102,7 @@ def _parser() -> argparse.ArgumentParser:
     opt.set_defaults(run=_run_optimize)
 
     batch = sub.add_parser(
-        "batch", help="optimise many profiles on many configurations, locally or on a Dask cluster",
+        "batch", epilog=SEE_EXIT_CODES, help="optimise many profiles on many configurations, locally or on a Dask cluster",
         description="Run every PROFILE on every configuration of --configs, each into its own result folder "
                     "OUT/<profile>--<configuration>, and print a table of all jobs (also OUT/batch.csv). "
                     "Jobs run on local processes, or on a Dask distributed cluster given its scheduler.")
@@ -117,7 +121,7 @@ def _parser() -> argparse.ArgumentParser:
     batch.set_defaults(run=_run_batch)
 
     online = sub.add_parser(
-        "online", help="run the on-line MPC in closed loop on a desired path",
+        "online", epilog=SEE_EXIT_CODES, help="run the on-line MPC in closed loop on a desired path",
         description="Simulate the on-line model predictive controller: at every step it sees only the "
                     "horizon ahead (through the predictor), plans, and commands the next step; a "
                     "failed or late plan falls back to the previous plan, then to braking. The whole "

@@ -56,7 +56,7 @@ def check_replaceable(out_dir: str | Path, protect=()) -> None:
     if not out.exists():
         return
     if out.is_symlink() or not out.is_dir():
-        raise ReportError(refuse + "not a folder")
+        raise ReportError(refuse + "not a folder (a file or a link)")
     real = out.resolve()
     cwd = Path.cwd().resolve()
     if real == cwd or real in cwd.parents:
