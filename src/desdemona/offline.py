@@ -16,7 +16,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from desdemona import baselines, guard
+from desdemona import baselines, guard, sizing
 from desdemona.configs import Configuration, get_configuration
 from desdemona.model import Model
 from desdemona.params import MachineParams, default_params
@@ -169,11 +169,13 @@ def optimize(path: DesiredPath, config: str | Configuration = "yaw-track-cabin",
     """The best checked joint trajectory for a desired path (thesis chapters 3-7, off-line).
 
     progress : optional callable ``progress(done, total, best_cost)`` told after each start.
-    Raises :class:`LimitViolation` when no start yields a trajectory within every limit.
+    Raises :class:`LimitViolation` when no start yields a trajectory within every limit, and
+    :class:`~desdemona.sizing.TooLarge` before building a problem that would not fit in memory.
     """
     wall = time.perf_counter()
     params = default_params() if params is None else params
     config = get_configuration(config)
+    sizing.check_fits(path, config, options.problem, options.workers)
     build = time.perf_counter()
     full, rough = _problems(params, config, path, options)
     build = time.perf_counter() - build
