@@ -59,7 +59,7 @@ def main(argv: list[str] | None = None) -> int:
         return EXIT_UNSAFE
     except guard.Interrupted as exc:
         end_bar = "\n" if sys.stderr.isatty() else ""  # a progress bar may be half drawn
-        print(f"{end_bar}desdemona: interrupted ({exc.name}): stopped, no partial result written", file=sys.stderr)
+        print(f"{end_bar}desdemona: {exc.message}", file=sys.stderr)
         return exc.code
 
 

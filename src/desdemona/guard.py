@@ -8,9 +8,14 @@ or two, write nothing, and leave the command to exit 128 + the signal number. Th
   solve that carries :class:`SolveMonitor` (the problem's ``iteration_callback``) the handler only
   records the signal; the monitor asks IPOPT to stop at its next iteration and :func:`solving` raises
   :class:`Interrupted` once the solver has returned.
-- Other compiled code (a QP solver, fatrop) may swallow the exception the same way. After the first
-  signal a repeating timer raises :class:`Interrupted` again every :data:`REPEAT` seconds until it
-  reaches Python code that lets it through.
+- fatrop has no iteration callback, and an exception raised into the CasADi functions it evaluates
+  only fails that evaluation: it backtracks and goes on (measured: 400 s to stop the car lap on full,
+  ending in a traceback). Inside such a solve (:func:`solving` without a monitor) the handler ends the
+  process at once with ``os._exit``: nothing is being written while a solver runs (result folders are
+  written after, atomically), so nothing is left half.
+- Other compiled code (the on-line controller's QP solver) may swallow the exception the same way.
+  After the first signal a repeating timer raises :class:`Interrupted` again every :data:`REPEAT`
+  seconds until it reaches Python code that lets it through.
 - Worker processes: they ignore SIGINT (:func:`worker_signals`), so only the parent decides, and the
   parent terminates them (``multiprocessing.Pool`` sends SIGTERM on leaving its ``with`` block), which
   stops them the same way.
@@ -25,7 +30,9 @@ The same monitor reports on a long solve: every ``every`` seconds it calls the r
 from __future__ import annotations
 
 import contextlib
+import os
 import signal
+import sys
 import threading
 import time
 
@@ -43,6 +50,7 @@ class Interrupted(SystemExit):
         super().__init__(128 + signum)
         self.signum = signum
         self.name = signal.Signals(signum).name
+        self.message = f"interrupted ({self.name}): stopped, no partial result written"
 
 
 class _State:
@@ -51,6 +59,8 @@ class _State:
     def __init__(self):
         self.signum: int | None = None  # the first signal received
         self.monitored = 0  # depth of solves whose monitor will stop the solver
+        self.unstoppable = 0  # depth of solves nothing but ending the process stops
+        self.speak = False  # say why the process ends (the command's own process, not a worker)
         self.reporter = None  # reporter(iteration, cost, seconds) for long solves
         self.every = 10.0
 
@@ -66,6 +76,11 @@ def _handler(signum, frame):
         signal.setitimer(signal.ITIMER_REAL, REPEAT, REPEAT)
     if _state.monitored:
         return  # the solve's monitor stops IPOPT cleanly; solving() raises after it returns
+    if _state.unstoppable:
+        if _state.speak:
+            print(f"desdemona: {Interrupted(signum).message}", file=sys.stderr, flush=True)
+        sys.stdout.flush()
+        os._exit(128 + signum)
     raise Interrupted(_state.signum)
 
 
@@ -81,7 +96,7 @@ def interruptible():
         yield
         return
     saved = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM, signal.SIGALRM)}
-    _state.signum = None
+    _state.signum, _state.speak = None, True
     for s in (signal.SIGINT, signal.SIGTERM):
         signal.signal(s, _handler)
     try:
@@ -90,7 +105,7 @@ def interruptible():
         signal.setitimer(signal.ITIMER_REAL, 0)
         for s, h in saved.items():
             signal.signal(s, h)
-        _state.signum, _state.monitored = None, 0
+        _state.signum, _state.monitored, _state.unstoppable, _state.speak = None, 0, 0, False
 
 
 def check() -> None:
@@ -104,16 +119,19 @@ def solving(monitor: SolveMonitor | None):
     """Around one solver call; raises :class:`Interrupted` after it if a stop was asked for.
 
     monitor : the solver's :class:`SolveMonitor`, or None. With one, a signal only asks the monitor to
-    stop the solver at its next iteration: the handler must not raise into it.
+    stop the solver at its next iteration: the handler must not raise into it. Without one (fatrop),
+    a signal ends the process.
     """
     monitored = monitor is not None
     if monitored:
         monitor.restart()
     _state.monitored += monitored
+    _state.unstoppable += not monitored
     try:
         yield
     finally:
         _state.monitored -= monitored
+        _state.unstoppable -= not monitored
     check()
 
 
@@ -134,7 +152,7 @@ def worker_signals(writes: bool = False) -> None:
     the parent decides, and terminates the workers with SIGTERM). On SIGTERM a worker that only
     computes dies at once; one that ``writes`` result folders stops as the parent would, so that a
     folder being written is removed, not left half (at the cost of up to an IPOPT iteration)."""
-    _state.signum, _state.monitored, _state.reporter = None, 0, None
+    _state.signum, _state.monitored, _state.unstoppable, _state.reporter, _state.speak = None, 0, 0, None, False
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, _handler if writes else signal.SIG_DFL)
 
