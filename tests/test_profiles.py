@@ -81,6 +81,10 @@ GOOD = "t,wx,wy,wz,fx,fy,fz\n0,0,0,0,0,0,9.81\n0.1,0,0,0,0,1,9.81\n0.2,0,0,0,0,2
     (GOOD.replace("0.1,0,0,0,0,1,9.81", "0.1,0,0,0,0,abc,9.81"), "line 3: not a number"),
     (GOOD.replace("0.1,0,0,0,0,1,9.81", "0.1,0,0,0,0,1"), "line 3: 6 values for 7 columns"),
     ("", "no header"),
+    ("t,M\n0,9.81\n0.1,-1\n0.2,9.81\n", "line 3: M = -1 m/s^2 is negative"),
+    ("t,M,M\n0,9.81,1\n0.1,1,1\n", "column 'M' twice"),
+    # a 30 s path written in milliseconds: 8 hours at one sample per 500 "s"
+    ("t,M\n" + "".join(f"{500 * k},9.81\n" for k in range(61)), "column 't' looks like milliseconds"),
 ])
 def test_bad_csv_names_the_problem(tmp_path, text, fragment):
     path = tmp_path / "bad.csv"
@@ -88,6 +92,25 @@ def test_bad_csv_names_the_problem(tmp_path, text, fragment):
     with pytest.raises(ProfileError) as info:
         read_csv(path)
     assert fragment in str(info.value) and "bad.csv" in str(info.value)
+
+
+def test_columns_in_any_order_and_a_byte_order_mark(tmp_path):
+    """Columns are read by name (a spreadsheet may reorder them) and the UTF-8 mark it writes is skipped."""
+    reordered = "fz,t,fy,fx,wz,wy,wx\n9.81,0,0,0,0,0,0\n9.81,0.1,1,0,0,0,0.5\n9.81,0.2,2,0,0,0,0\n"
+    (tmp_path / "r.csv").write_text(reordered)
+    (tmp_path / "bom.csv").write_bytes(b"\xef\xbb\xbf" + GOOD.encode())
+    p, q = read_csv(tmp_path / "r.csv"), read_csv(tmp_path / "bom.csv")
+    np.testing.assert_allclose(p.S_d[1], [0.5, 0, 0, 0, 1, 9.81])
+    np.testing.assert_allclose(q.S_d[:, 4], [0, 1, 2])
+    (tmp_path / "m.csv").write_text("M,t\n9.81,0\n12,1\n")
+    np.testing.assert_allclose(read_csv(tmp_path / "m.csv").M_d, [9.81, 12])
+
+
+def test_non_utf8_file_is_one_message(tmp_path):
+    path = tmp_path / "latin.csv"
+    path.write_bytes(b"# caf\xe9 au lait\n" + GOOD.encode())
+    with pytest.raises(ProfileError, match=r"latin.csv: line 1: not UTF-8 text \(byte 0xe9\)"):
+        read_csv(path)
 
 
 def test_comments_and_modulus_files(tmp_path):

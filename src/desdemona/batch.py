@@ -8,7 +8,6 @@ the same results as local processes; Dask is imported only when a scheduler addr
 
 from __future__ import annotations
 
-import concurrent.futures
 import csv
 import dataclasses
 import multiprocessing
@@ -16,7 +15,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from desdemona import profiles, report
+from desdemona import guard, profiles, report, sizing
 from desdemona.configs import get_configuration
 from desdemona.model import Model
 from desdemona.offline import OptimizeOptions, optimize
@@ -70,8 +69,9 @@ def run_job(job: Job, params: MachineParams, options: OptimizeOptions, out_dir: 
             options = dataclasses.replace(options, problem=problem)
         result = optimize(path, Model(params, job.config), options)
         report.write(result, folder, command=f"desdemona batch ({job.profile} on {job.config})", overwrite=True)
-        return JobResult(job.profile, job.config, "ok", result.check.rms, result.check.worst_use,
-                         time.perf_counter() - start, str(folder))
+        status = "ok" if result.converged else "not converged"
+        return JobResult(job.profile, job.config, status, result.check.rms, result.check.worst_use,
+                         time.perf_counter() - start, str(folder), "" if result.converged else result.solution.status)
     except LimitViolation as exc:
         return JobResult(job.profile, job.config, "no safe trajectory", None, exc.check.worst_use,
                          time.perf_counter() - start, "", str(exc))
@@ -79,32 +79,50 @@ def run_job(job: Job, params: MachineParams, options: OptimizeOptions, out_dir: 
         return JobResult(job.profile, job.config, "error", None, None, time.perf_counter() - start, "", str(exc))
 
 
+def validate(jobs: list[Job], params: MachineParams, options: OptimizeOptions, out_dir: str | Path) -> None:
+    """Check every job before any runs: its configuration, its path (each CSV read and checked), that
+    the path suits the configuration, that the problem fits in memory, and that its folder is free or
+    an earlier result. Raises ValueError (:class:`~desdemona.profiles.ProfileError`,
+    :class:`~desdemona.sizing.TooLarge`) or :class:`~desdemona.report.ReportError` naming the job."""
+    paths = {}
+    for job in jobs:
+        config = get_configuration(job.config)
+        if job.profile not in paths:
+            paths[job.profile] = load_path(job.profile)
+        path = paths[job.profile]
+        if not config.modulus_cost and path.S_d is None:
+            raise profiles.ProfileError(f"{job.profile}: gives only the modulus t,M; configuration "
+                                        f"{config.name!r} needs the full path t,wx,wy,wz,fx,fy,fz")
+        if not options.problem.h_u <= path.duration:
+            raise profiles.ProfileError(f"{job.profile}: h_u {options.problem.h_u:g} s is longer than the path "
+                             f"({path.duration:g} s)")
+        sizing.check_fits(path, config, options.problem, options.workers)
+        folder = Path(out_dir) / job.folder_name
+        report.check_replaceable(folder, protect=[job.profile] if Path(job.profile).is_file() else [])
+
+
 def run_batch(jobs: list[Job], params: MachineParams, options: OptimizeOptions, out_dir: str | Path,
-              processes: int = 2, dask_address: str | None = None, weights=None,
-              gain: float = 1.0) -> list[JobResult]:
+              processes: int = 2, dask_address: str | None = None, weights=None, gain: float = 1.0,
+              progress=None) -> list[JobResult]:
     """Run every job, on ``processes`` local processes or on the Dask scheduler at ``dask_address``;
     ``weights`` and ``gain`` as in :func:`run_job`.
 
-    Profiles and configurations are validated before anything runs. Returns the jobs' lines in the
-    order given and writes them to ``OUT/batch.csv``.
+    Every job is validated (:func:`validate`) before anything runs. progress : optional
+    ``progress(done, total, job_result)`` told as each job ends. Returns the jobs' lines in the order
+    given and writes them to ``OUT/batch.csv``. Interrupted, it stops the local workers (or cancels the
+    cluster's jobs) and writes no table.
     """
-    for job in jobs:
-        get_configuration(job.config)
-        if job.profile not in profiles.PROFILES and not Path(job.profile).is_file():
-            profiles.get_profile(job.profile)  # raises, naming the built-in profiles
+    validate(jobs, params, options, out_dir)
     out = Path(out_dir)
+    created = not out.exists()
     out.mkdir(parents=True, exist_ok=True)
-    args = [(job, params, options, str(out), weights, gain) for job in jobs]
-    if dask_address is not None:
-        from distributed import Client
-
-        with Client(dask_address) as client:
-            futures = [client.submit(run_job, *a, pure=False) for a in args]
-            results = client.gather(futures)
-    else:
-        context = multiprocessing.get_context("spawn")
-        with concurrent.futures.ProcessPoolExecutor(max(1, processes), mp_context=context) as pool:
-            results = list(pool.map(run_job, *zip(*args)))
+    try:
+        results = _run(jobs, [(job, params, options, str(out), weights, gain) for job in jobs], processes,
+                       dask_address, progress)
+    except BaseException:
+        if created and not any(out.iterdir()):
+            out.rmdir()  # interrupted before any job finished: leave nothing behind
+        raise
     with open(out / "batch.csv", "w", newline="") as fh:
         writer = csv.writer(fh)
         writer.writerow(["profile", "configuration", "status", "rms", "worst_use", "seconds", "folder", "message"])
@@ -112,6 +130,41 @@ def run_batch(jobs: list[Job], params: MachineParams, options: OptimizeOptions, 
             writer.writerow([r.profile, r.config, r.status, r.rms, r.worst_use, f"{r.seconds:.3f}", r.folder,
                              r.message])
     return results
+
+
+def _run(jobs, args, processes, dask_address, progress) -> list[JobResult]:
+    results: list[JobResult | None] = [None] * len(jobs)
+
+    def done(index, result):
+        results[index] = result
+        if progress is not None:
+            progress(sum(r is not None for r in results), len(jobs), result)
+
+    if dask_address is not None:
+        from distributed import Client, as_completed
+
+        with Client(dask_address) as client:
+            futures = [client.submit(run_job, *a, pure=False) for a in args]
+            index = {f.key: i for i, f in enumerate(futures)}
+            try:
+                for future in as_completed(futures):
+                    done(index[future.key], future.result())
+            except BaseException:
+                client.cancel(futures)
+                raise
+    else:
+        context = multiprocessing.get_context("spawn")
+        # leaving the block terminates the workers, also when the batch is interrupted
+        with context.Pool(max(1, min(processes, len(jobs))), initializer=guard.worker_signals,
+                          initargs=(True,)) as pool:
+            for i, result in pool.imap_unordered(_indexed_job, list(enumerate(args))):
+                done(i, result)
+    return results
+
+
+def _indexed_job(item):
+    index, args = item
+    return index, run_job(*args)
 
 
 def table(results: list[JobResult]) -> str:

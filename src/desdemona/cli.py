@@ -5,11 +5,12 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+import time
 from pathlib import Path
 
 import numpy as np
 
-from desdemona import __version__, profiles
+from desdemona import __version__, guard, profiles, sizing
 from desdemona import perception as perception_models
 from desdemona.configs import CONFIGURATIONS, get_configuration
 from desdemona.model import Model
@@ -17,6 +18,21 @@ from desdemona.params import BUILTIN_SETS, ParameterError, load_params
 
 EXIT_USAGE = 2
 EXIT_UNSAFE = 3  # no trajectory within every limit was found: nothing is written
+EXIT_NOT_CONVERGED = 4  # a result within every limit is written, but the solver did not converge
+EXIT_CODES = """exit codes:
+  0    done: the result is written
+  1    an unexpected error (a bug: please report it with the command)
+  2    bad input (profile, CSV, parameters, options, --out) or a problem too large for this machine's
+       memory; nothing is run and nothing is written
+  3    no trajectory within every limit was found; nothing is written (batch: for some job)
+  4    a result within every limit is written, but the solver stopped before converging (for example
+       at its iteration cap): its status is in the printed line and summary.json ("converged": false)
+       (batch: for some job, and no job ended with 3)
+  130  interrupted by Ctrl-C (SIGINT), 143 by SIGTERM: stopped within a second or two, workers too;
+       no partial result is written"""
+SEE_EXIT_CODES = "Exit codes: 0 done, 2 bad input, 3 no safe trajectory, 4 not converged, 130 interrupted; " \
+                 "see 'desdemona --help'."
+PROGRESS_EVERY = 10.0  # [s] between progress lines inside a long solve (stderr not a terminal)
 
 
 class UserError(Exception):
@@ -33,18 +49,23 @@ def main(argv: list[str] | None = None) -> int:
     from desdemona.simulate import LimitViolation
 
     try:
-        return args.run(args)
-    except (UserError, ParameterError, profiles.ProfileError, ReportError) as exc:
+        with guard.interruptible():
+            return args.run(args)
+    except (UserError, ParameterError, profiles.ProfileError, ReportError, sizing.TooLarge) as exc:
         print(f"desdemona: error: {exc}", file=sys.stderr)
         return EXIT_USAGE
     except LimitViolation as exc:
         print(f"desdemona: no result written: {exc}", file=sys.stderr)
         return EXIT_UNSAFE
+    except guard.Interrupted as exc:
+        end_bar = "\n" if sys.stderr.isatty() else ""  # a progress bar may be half drawn
+        print(f"{end_bar}desdemona: {exc.message}", file=sys.stderr)
+        return exc.code
 
 
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
-        prog="desdemona",
+        prog="desdemona", epilog=EXIT_CODES, formatter_class=argparse.RawDescriptionHelpFormatter,
         description="Optimal motion cueing for the Desdemona simulator.")
     parser.add_argument("--version", action="version", version=f"desdemona {__version__}")
     sub = parser.add_subparsers(title="commands", required=True, metavar="COMMAND")
@@ -57,7 +78,7 @@ def _parser() -> argparse.ArgumentParser:
     model.set_defaults(run=_run_model)
 
     opt = sub.add_parser(
-        "optimize", help="compute the best joint trajectory for a desired path (off-line)",
+        "optimize", epilog=SEE_EXIT_CODES, help="compute the best joint trajectory for a desired path (off-line)",
         description="Compute the joint trajectory that makes the cabin's path S follow the desired S_d as "
                     "closely as possible within every limit of the machine, check it independently on a "
                     "10x finer grid, and write a result folder: trajectory.csv, summary.json, "
@@ -79,11 +100,13 @@ def _parser() -> argparse.ArgumentParser:
                           "then refine with the full dynamics (thesis 5.7)")
     opt.add_argument("--workers", type=int, default=1, metavar="N",
                      help="parallel processes for the starts (default: 1)")
-    opt.add_argument("--overwrite", action="store_true", help="replace DIR if it exists")
+    _add_overwrite_option(opt)
+    opt.add_argument("--quiet", action="store_true",
+                     help="no progress on stderr (default: a bar on a terminal, else a line per start)")
     opt.set_defaults(run=_run_optimize)
 
     batch = sub.add_parser(
-        "batch", help="optimise many profiles on many configurations, locally or on a Dask cluster",
+        "batch", epilog=SEE_EXIT_CODES, help="optimise many profiles on many configurations, locally or on a Dask cluster",
         description="Run every PROFILE on every configuration of --configs, each into its own result folder "
                     "OUT/<profile>--<configuration>, and print a table of all jobs (also OUT/batch.csv). "
                     "Jobs run on local processes, or on a Dask distributed cluster given its scheduler.")
@@ -99,10 +122,11 @@ def _parser() -> argparse.ArgumentParser:
                        help="local processes when no --dask is given (default: 2)")
     batch.add_argument("--dask", metavar="ADDRESS", default=None,
                        help="Dask scheduler address (tcp://host:8786): run the jobs on that cluster")
+    batch.add_argument("--quiet", action="store_true", help="no line on stderr as each job ends")
     batch.set_defaults(run=_run_batch)
 
     online = sub.add_parser(
-        "online", help="run the on-line MPC in closed loop on a desired path",
+        "online", epilog=SEE_EXIT_CODES, help="run the on-line MPC in closed loop on a desired path",
         description="Simulate the on-line model predictive controller: at every step it sees only the "
                     "horizon ahead (through the predictor), plans, and commands the next step; a "
                     "failed or late plan falls back to the previous plan, then to braking. The whole "
@@ -131,7 +155,7 @@ def _parser() -> argparse.ArgumentParser:
                         help="with --predictor route: a recording of the course (same channels as the path)")
     online.add_argument("--method", choices=("rti", "nlp"), default="rti",
                         help="rti: one QP per cycle (fast); nlp: IPOPT to convergence (default: rti)")
-    online.add_argument("--overwrite", action="store_true", help="replace DIR if it exists")
+    _add_overwrite_option(online)
     online.set_defaults(run=_run_online)
 
     prof = sub.add_parser("profiles", help="list the built-in desired paths",
@@ -169,6 +193,12 @@ def _add_machine_options(parser: argparse.ArgumentParser, default_config: str = 
                         help="TOML file overriding any subset of the machine parameters")
     parser.add_argument("--base", choices=BUILTIN_SETS, default=None,
                         help="built-in parameter set to start from (default: default)")
+
+
+def _add_overwrite_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--overwrite", action="store_true",
+                        help="replace DIR if it is an earlier result folder of desdemona (never another "
+                             "folder, a file, or the current folder)")
 
 
 def _add_start_options(parser: argparse.ArgumentParser, starts: int) -> None:
@@ -253,13 +283,21 @@ def _run_model(args) -> int:
     return 0
 
 
+def _inputs(args) -> tuple:
+    """The files a run reads: a replaced result folder must not hold them."""
+    return tuple(p for p in (args.profile, args.params) if p is not None and os.path.exists(p))
+
+
 def _run_inputs(args):
     """The machine, the desired path and the output folder of a run, each checked before any work."""
+    from desdemona import report
+
     model = _machine(args)
     path = profiles.load(args.profile)
     out = Path(args.out)
     if out.exists() and not args.overwrite:
         raise UserError(f"{out}: already exists; choose another folder or add --overwrite")
+    report.check_replaceable(out, protect=_inputs(args))
     if not out.resolve().parent.is_dir() or not os.access(out.resolve().parent, os.W_OK):
         raise UserError(f"{out}: cannot create it: {out.resolve().parent} is not a writable folder")
     if not model.config.modulus_cost and path.S_d is None:
@@ -281,35 +319,65 @@ def _run_optimize(args) -> int:
         raise UserError(f"--h-u {args.h_u:g}: must be positive and at most the path's {path.duration:g} s")
     if model.config.modulus_cost and args.perception:
         raise UserError("--perception applies to the full path S, not to the dfs modulus")
-    progress = _progress_bar() if sys.stderr.isatty() else None
     if args.method == "thesis":
         if (args.initial, args.initial_state, args.final, args.weights) != (None, None, "centre", profiles.WEIGHT_CHOICES[0]):
             raise UserError("--method thesis reproduces the thesis: its weights are the path's and its start "
                             "free; drop --initial, --initial-state, --final and --weights")
         path = path.with_gain(args.gain)
-        result = thesis_result(path, model, ThesisOptions(h_u=max(args.h_u, 0.1), starts=args.starts, seed=args.seed))
+        problem = ProblemOptions(h_u=max(args.h_u, 0.1))
     else:
         path, session = _session(args, model, path)
         perception = perception_models.get_model(args.perception) if args.perception else None
         problem = ProblemOptions(h_u=args.h_u, solver=args.method, perception=perception, **session)
-        options = OptimizeOptions(problem, starts=args.starts, seed=args.seed, workers=args.workers,
-                                  refine=args.refine)
-        result = optimize(path, model, options, progress=progress)
-    report.write(result, out, command=report.command_line(), overwrite=args.overwrite)
+    size = sizing.check_fits(path, model.config, problem, args.workers)
+    unreachable = sizing.unreachable(path, model)
+    progress = None if args.quiet else _Progress(args.starts, size, path, model.config)
+    with guard.reporting(None if progress is None else progress.solving, PROGRESS_EVERY):
+        if args.method == "thesis":
+            result = thesis_result(path, model, ThesisOptions(h_u=problem.h_u, starts=args.starts, seed=args.seed))
+        else:
+            options = OptimizeOptions(problem, starts=args.starts, seed=args.seed, workers=args.workers,
+                                      refine=args.refine)
+            result = optimize(path, model, options, progress=None if progress is None else progress.start_done)
+    report.write(result, out, command=report.command_line(), overwrite=args.overwrite, unreachable=unreachable,
+                 protect=_inputs(args))
     c = result.check
     perceived = f" (perceived {c.rms_perceived:.4g})" if c.rms_perceived is not None else ""
+    solver = f"solver {result.solution.status}" + ("" if result.converged else " (NOT CONVERGED)")
     print(f"{path.name} on {model.config.name}: RMS = {c.rms:.4g}{perceived}, worst limit use "
-          f"{c.worst_use:.4f}, solver {result.solution.status}, {result.timings['wall']:.2f} s; written to {out}")
+          f"{c.worst_use:.4f}, {solver}, {result.timings['wall']:.2f} s{sizing.describe(unreachable)}; "
+          f"written to {out}")
     print(f"  felt: {result.quality.headline()}")
-    return 0
+    return 0 if result.converged else EXIT_NOT_CONVERGED
 
 
-def _progress_bar():
-    def show(done, total):
-        bar = "#" * done + "." * (total - done)
-        print(f"\r  starts [{bar}] {done}/{total}", end="" if done < total else "\n", file=sys.stderr,
-              flush=True)
-    return show
+class _Progress:
+    """Progress of an off-line run on stderr: a bar on a terminal; else (a log file, a CI job) a line
+    when the run starts, one per finished start with the elapsed time and the best cost so far, and one
+    every PROGRESS_EVERY seconds inside a long solve."""
+
+    def __init__(self, starts: int, size: sizing.Size, path, config):
+        self.begin = time.perf_counter()
+        self.tty = sys.stderr.isatty()
+        if not self.tty:
+            self._say(f"{path.name} on {config.name}: {size.intervals:,} control intervals, {size.variables:,} "
+                      f"variables, {starts} start{'s' if starts > 1 else ''}")
+
+    def _say(self, text: str) -> None:
+        print(f"desdemona: {text}", file=sys.stderr, flush=True)
+
+    def start_done(self, done: int, total: int, best: float) -> None:
+        if self.tty:
+            bar = "#" * done + "." * (total - done)
+            print(f"\r  starts [{bar}] {done}/{total}", end="" if done < total else "\n", file=sys.stderr,
+                  flush=True)
+        else:
+            self._say(f"start {done}/{total} done, {time.perf_counter() - self.begin:.1f} s, best cost so far {best:.6g}")
+
+    def solving(self, iteration: int, cost: float, seconds: float) -> None:
+        if not self.tty:
+            self._say(f"  solving: iteration {iteration}, cost {cost:.6g}, {seconds:.0f} s in this start, "
+                      f"{time.perf_counter() - self.begin:.1f} s in all")
 
 
 def _run_batch(args) -> int:
@@ -333,10 +401,18 @@ def _run_batch(args) -> int:
     options = OptimizeOptions(ProblemOptions(h_u=args.h_u, initial=args.initial or "rest", final=args.final),
                               starts=args.starts, seed=args.seed)
     jobs = [batch.Job(p, c) for p in args.profiles for c in args.configs]
+    begin = time.perf_counter()
+
+    def progress(done, total, job):
+        print(f"desdemona: job {done}/{total} done, {time.perf_counter() - begin:.1f} s: {job.profile} on "
+              f"{job.config}: {job.status}", file=sys.stderr, flush=True)
+
     results = batch.run_batch(jobs, params, options, args.out, args.processes, args.dask,
-                              weights=args.weights, gain=args.gain)
+                              weights=args.weights, gain=args.gain, progress=None if args.quiet else progress)
     print(batch.table(results))
-    return 0 if all(r.status == "ok" for r in results) else EXIT_UNSAFE
+    if any(r.status not in ("ok", "not converged") for r in results):
+        return EXIT_UNSAFE
+    return 0 if all(r.status == "ok" for r in results) else EXIT_NOT_CONVERGED
 
 
 def _run_online(args) -> int:
@@ -364,13 +440,15 @@ def _run_online(args) -> int:
         raise UserError("--reference is used only with --predictor route")
     options = online.OnlineOptions(mpc, predictor=args.predictor, reference=reference)
     result = online.run(path, model, options)
-    report.write_online(result, out, report.command_line(), args.overwrite)
+    unreachable = sizing.unreachable(path, model)
+    report.write_online(result, out, report.command_line(), args.overwrite, unreachable=unreachable,
+                        protect=_inputs(args))
     c, times, sources = result.check, result.loop.compute_times, result.loop.sources
     classical = "" if result.baseline_check is None else f" (classical loop {result.baseline_check.rms:.4g})"
     print(f"{path.name} on-line on {model.config.name}: RMS = {c.rms:.4g}{classical}, worst limit use "
           f"{c.worst_use:.4f}, compute per cycle median {1e3 * np.median(times):.2f} ms, "
-          f"p99 {1e3 * np.percentile(times, 99):.2f} ms, fallbacks {len(sources) - sources.count('mpc')}; "
-          f"written to {out}")
+          f"p99 {1e3 * np.percentile(times, 99):.2f} ms, fallbacks {len(sources) - sources.count('mpc')}"
+          f"{sizing.describe(unreachable)}; written to {out}")
     print(f"  felt: {result.quality.headline()}")
     if result.baseline_quality is not None:
         print(f"  felt with the classical loop: {result.baseline_quality.headline()}")

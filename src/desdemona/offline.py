@@ -10,7 +10,6 @@ smart guesses of table 5.2 do, and seeded random starts widen the search.
 
 from __future__ import annotations
 
-import concurrent.futures
 import functools
 import multiprocessing
 import time
@@ -18,7 +17,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from desdemona import baselines, metrics
+from desdemona import baselines, guard, metrics, sizing
 from desdemona.model import Model
 from desdemona.plan import Plan
 from desdemona.problem import CueingProblem, ProblemOptions, Solution
@@ -89,6 +88,11 @@ class Result:
     def plan(self) -> Plan:
         """The chosen joint plan (grid, initial state, accelerations)."""
         return self.solution.plan
+
+    @property
+    def converged(self) -> bool:
+        """The chosen start's solver reported success (not stopped at its iteration cap or otherwise)."""
+        return bool(self.solution.success)
 
     @functools.cached_property
     def quality(self) -> metrics.Metrics:
@@ -234,31 +238,38 @@ def optimize(path: DesiredPath, model: Model, options: OptimizeOptions = Optimiz
     """The best checked joint trajectory for a desired path (thesis chapters 3-7, off-line).
 
     model : the machine and configuration, e.g. ``Model(default_params(), "yaw-track-cabin")``;
-    progress : optional callable ``progress(done, total)`` told after each start.
-    Raises :class:`LimitViolation` when no start yields a trajectory within every limit.
+    progress : optional callable ``progress(done, total, best_cost)`` told after each start.
+    Raises :class:`LimitViolation` when no start yields a trajectory within every limit, and
+    :class:`~desdemona.sizing.TooLarge` before building a problem that would not fit in memory.
     """
     wall = time.perf_counter()
+    sizing.check_fits(path, model.config, options.problem, options.workers)
     build = time.perf_counter()
     full, rough = _problems(model, path, options)
     build = time.perf_counter() - build
     guesses = initial_guesses(full, options.starts, options.seed)
+    solved = []
+
+    def done(item):
+        solved.append(item)
+        if progress is not None:
+            progress(len(solved), len(guesses), min(sol.cost for _, sol in solved))
+
     if options.workers > 1 and len(guesses) > 1:
-        chunks = [c for c in (guesses[i::options.workers] for i in range(options.workers)) if c]
         _WORKER["problems"] = (full, rough)
         context = multiprocessing.get_context("fork")
+        # leaving the block terminates the workers, also when the parent is interrupted
         try:
-            with concurrent.futures.ProcessPoolExecutor(len(chunks), mp_context=context) as pool:
-                solved = [item for part in pool.map(_worker_solve, chunks) for item in part]
+            with context.Pool(min(options.workers, len(guesses)), initializer=guard.worker_signals) as pool:
+                for part in pool.imap_unordered(_worker_solve, [[g] for g in guesses]):
+                    done(part[0])
         finally:
             _WORKER.clear()
         order = {name: i for i, (name, _, _) in enumerate(guesses)}
         solved.sort(key=lambda item: order[item[0]])
     else:
-        solved = []
         for name, x, u in guesses:
-            solved.append((name, _solve_one(full, rough, x, u)))
-            if progress is not None:
-                progress(len(solved), len(guesses))
+            done((name, _solve_one(full, rough, x, u)))
     candidates, reports = [], []
     for name, sol in solved:
         result_check, _ = _check(full, sol)

@@ -44,6 +44,7 @@ from typing import Literal
 import casadi as ca
 import numpy as np
 
+from desdemona import guard
 from desdemona.perception import VestibularModel
 from desdemona.plan import Plan, advance, node_states
 from desdemona.model import Model
@@ -57,6 +58,8 @@ EXPAND_LIMIT = 400_000
 EXPAND_SOLVES = 5
 # The stages' Jacobians and Hessians are independent: evaluate them on two threads.
 MAP_MODE, MAP_THREADS = "thread", 2
+# fatrop reports a number (its FatropAlg::optimize return code, CasADi 3.7); the words IPOPT uses for it.
+FATROP_STATUS = {0: "Solve_Succeeded", 1: "Maximum_Iterations_Exceeded"}
 
 
 @dataclass(frozen=True)
@@ -208,6 +211,7 @@ class CueingProblem:
         self.nz = self.vestibular.n_states if self.vestibular else 0
         n = model.n
         self.nx, self.nu = 2 * n + self.nz, n
+        self.monitor = None  # the solver's guard.SolveMonitor, where it has one
         self.stage = self._stage_function()
         self._build_nlp()
 
@@ -466,6 +470,9 @@ class CueingProblem:
                     "print_time": False, "expand": self.expanded}
             if not self.expanded:  # a flat graph differentiates well by itself
                 opts.update(self.derivatives)
+            if not self.parametric:  # off-line solves are long: stoppable by Ctrl-C, and reported on
+                self.monitor = guard.SolveMonitor(self.nlp["x"].numel(), self.nlp["g"].numel())
+                opts["iteration_callback"] = self.monitor
             return ca.nlpsol("cueing", "ipopt", self.nlp, opts)
         opts = {"structure_detection": "auto", "equality": self.equality, "print_time": False,
                 "expand": self.expanded,
@@ -506,11 +513,14 @@ class CueingProblem:
         if warm is not None and warm.lam_g is not None and self.options.solver == "ipopt":
             args.update(lam_g0=warm.lam_g, lam_x0=warm.lam_x)
         start = time.perf_counter()
-        sol = self.solver(**args)
+        with guard.solving(self.monitor):  # raises guard.Interrupted after a stop was asked for
+            sol = self.solver(**args)
         elapsed = time.perf_counter() - start
         stats = self.solver.stats()
         x, u = self.unpack(sol["x"])
-        status = str(stats.get("return_status", stats.get("unified_return_status", "unknown")))
+        status = stats.get("return_status", stats.get("unified_return_status", "unknown"))
+        if isinstance(status, int):
+            status = FATROP_STATUS.get(status, f"fatrop_return_code_{status}")
         return Solution(t_nodes=self.t_nodes.copy(), x=x, u=u, cost=float(sol["f"]), status=status,
                         success=bool(stats["success"]), iterations=int(stats.get("iter_count", -1)),
                         solve_time=elapsed, lam_g=np.asarray(sol["lam_g"]).ravel(),

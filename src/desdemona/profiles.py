@@ -366,17 +366,23 @@ def load(name_or_file: str | Path) -> DesiredPath:
 
 
 def read_csv(path: str | Path) -> DesiredPath:
-    """Read a desired path from CSV: header ``t,wx,wy,wz,fx,fy,fz`` (SI) or ``t,M``; ``#`` comments.
+    """Read a desired path from CSV: columns ``t,wx,wy,wz,fx,fy,fz`` (SI) or ``t,M``, in any order; ``#``
+    comments; UTF-8, with or without the byte-order mark spreadsheet programs write.
 
     Strict: every problem (missing or unknown column, a value that is not a finite number, time not
-    strictly increasing, fewer than two rows, |f| above 100 g, |omega| above 50 rad/s) raises
-    :class:`ProfileError` naming the file and the line.
+    strictly increasing, fewer than two rows, a negative modulus, |f| above 100 g, |omega| above
+    50 rad/s, a time column that looks like milliseconds) raises :class:`ProfileError` naming the file
+    and the line or column.
     """
     path = Path(path)
     try:
-        text = path.read_text()
+        text = path.read_bytes().decode("utf-8-sig")
     except OSError as exc:
         raise ProfileError(f"{path}: cannot read: {exc.strerror or exc}") from None
+    except UnicodeDecodeError as exc:
+        line = path.read_bytes()[: exc.start].count(b"\n") + 1
+        raise ProfileError(f"{path}: line {line}: not UTF-8 text (byte 0x{exc.object[exc.start]:02x}); "
+                           f"save it as UTF-8 CSV") from None
     weights = _header_weights(path, text)
     lines = [(i + 1, line) for i, line in enumerate(text.splitlines())
              if line.strip() and not line.lstrip().startswith("#")]
@@ -384,13 +390,15 @@ def read_csv(path: str | Path) -> DesiredPath:
         raise ProfileError(f"{path}: no header and no data")
     header_line, header = lines[0]
     columns = [c.strip() for c in next(csv.reader([header]))]
-    if columns[:1] != ["t"] or tuple(columns) not in (PATH_COLUMNS, MODULUS_COLUMNS):
-        missing = [c for c in PATH_COLUMNS if c not in columns]
+    layout = next((cols for cols in (PATH_COLUMNS, MODULUS_COLUMNS) if sorted(columns) == sorted(cols)), None)
+    if layout is None:
+        missing = [c for c in (MODULUS_COLUMNS if "M" in columns else PATH_COLUMNS) if c not in columns]
         unknown = [c for c in columns if c not in PATH_COLUMNS + MODULUS_COLUMNS]
-        detail = (f"unknown column {unknown[0]!r}" if unknown else
-                  f"missing column {missing[0]!r}" if "M" not in columns else "columns out of order")
-        raise ProfileError(f"{path}: line {header_line}: {detail}; the header must be "
-                           f"'{','.join(PATH_COLUMNS)}' or '{','.join(MODULUS_COLUMNS)}' (SI units)")
+        repeated = [c for c in columns if columns.count(c) > 1]
+        detail = (f"unknown column {unknown[0]!r}" if unknown else f"column {repeated[0]!r} twice" if repeated
+                  else f"missing column {missing[0]!r}" if missing else "a modulus M with the full path")
+        raise ProfileError(f"{path}: line {header_line}: {detail}; the columns must be "
+                           f"'{','.join(PATH_COLUMNS)}' or '{','.join(MODULUS_COLUMNS)}' (SI units, any order)")
     rows = []
     for number, line in lines[1:]:
         cells = next(csv.reader([line]))
@@ -406,15 +414,21 @@ def read_csv(path: str | Path) -> DesiredPath:
         rows.append(values)
     if len(rows) < 2:
         raise ProfileError(f"{path}: needs at least two rows of data, found {len(rows)}")
-    data = np.array(rows)
+    data = np.array(rows)[:, [columns.index(c) for c in layout]]  # reordered as ``layout``
     t = data[:, 0]
     steps = np.diff(t)
     if np.any(steps <= 0):
         k = int(np.argmax(steps <= 0))
         raise ProfileError(f"{path}: line {lines[k + 2][0]}: time {t[k + 1]:g} s does not increase "
                            f"(previous {t[k]:g} s)")
+    _check_time_unit(path, t)
     name = path.stem
-    if tuple(columns) == MODULUS_COLUMNS:
+    if layout == MODULUS_COLUMNS:
+        negative = data[:, 1] < 0
+        if np.any(negative):
+            k = int(np.argmax(negative))
+            raise ProfileError(f"{path}: line {lines[k + 1][0]}: M = {data[k, 1]:g} m/s^2 is negative; the "
+                               f"modulus |f| is >= 0")
         _check_magnitude(path, lines, data[:, 1:2], "M", MAX_SPECIFIC_FORCE, "m/s^2")
         return DesiredPath(name, t - t[0], None, modulus=data[:, 1], description=f"read from {path.name}")
     _check_magnitude(path, lines, np.linalg.norm(data[:, 4:7], axis=1, keepdims=True), "|f|",
@@ -442,6 +456,20 @@ def _header_weights(path, text: str) -> tuple[float, ...]:
     except (ValueError, ProfileError) as exc:
         detail = str(exc) if isinstance(exc, ProfileError) else f"not a number in {value.strip()!r}"
         raise ProfileError(f"{path}: line {number}: {detail}") from None
+
+
+# A time column in milliseconds read as seconds: a path of hours sampled at most twice a second. No
+# vehicle recording meant for motion cueing has both (cues live in 0.1-10 Hz and a session lasts
+# minutes), and as seconds it would ask for hundreds of thousands of control intervals.
+MS_DURATION = 3600.0  # [s]
+MS_MEDIAN_STEP = 0.5  # [s]
+
+
+def _check_time_unit(path: Path, t: np.ndarray) -> None:
+    duration, step = float(t[-1] - t[0]), float(np.median(np.diff(t)))
+    if duration > MS_DURATION and step >= MS_MEDIAN_STEP:
+        raise ProfileError(f"{path}: column 't' looks like milliseconds: {duration:g} s ({duration / 3600:.1f} h) "
+                           f"sampled every {step:g} s; the time column must be in seconds (divide it by 1000)")
 
 
 def _check_magnitude(path, lines, values, label, limit, unit):

@@ -1,9 +1,15 @@
 """Result folders: trajectory.csv, summary.json, trajectory.mat and figures like the thesis'.
 
 A folder is written to a temporary sibling and renamed into place only when complete, so a failed or
-interrupted run never leaves a half-written result. :func:`write` takes an off-line result,
-:func:`write_online` an on-line one (both values, never live solver objects); :func:`load` reads a
-folder back. The figures are drawn by :mod:`desdemona.figures`.
+interrupted run never leaves a half-written result. Its ``summary.json`` carries ``"format":
+"desdemona result"``: only a folder with that mark and nothing but result files in it is ever replaced
+(:func:`check_replaceable`), never a file, the working folder, a folder holding the run's input, or a
+folder of the user's. :func:`write` takes an off-line result, :func:`write_online` an on-line one (both
+values, never live solver objects); :func:`load` reads a folder back. The figures are drawn by
+:mod:`desdemona.figures`.
+
+``trajectory.csv``: a ``#`` line with the units, then the column names as the first non-comment line
+(so pandas, ``csv.DictReader`` and MATLAB's ``readtable`` name the columns), then the rows.
 """
 
 from __future__ import annotations
@@ -18,15 +24,50 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona import figures
+from desdemona import figures, guard
 from desdemona._version import __version__
 from desdemona.simulate import Trajectory
 
 CHANNELS = ("wx", "wy", "wz", "fx", "fy", "fz")
 
 
+RESULT_FORMAT = "desdemona result"  # the mark in summary.json that makes a folder ours to replace
+# Everything a result folder of ours may hold: replacing one never deletes anything else.
+RESULT_FILES = {"trajectory.csv", "summary.json", "trajectory.mat", "cycles.csv"}
+UNITS = "units: SI (s, rad, m, rad/s, m/s, rad/s^2, m/s^2, N*m, N, W)"
+
+
 class ReportError(RuntimeError):
     """The result folder cannot be written or read; the message says where and why."""
+
+
+def check_replaceable(out_dir: str | Path, protect=()) -> None:
+    """Raise :class:`ReportError` unless ``out_dir`` may be replaced by a new result: it is a result
+    folder of ours (``summary.json`` with the :data:`RESULT_FORMAT` mark, only result files inside),
+    not the working folder or one of its parents, and holds none of the paths in ``protect`` (the
+    run's own inputs)."""
+    out = Path(out_dir)
+    refuse = f"{out}: --overwrite replaces only a desdemona result folder, and this is "
+    if not out.exists():
+        return
+    if out.is_symlink() or not out.is_dir():
+        raise ReportError(refuse + "not a folder (a file or a link)")
+    real = out.resolve()
+    cwd = Path.cwd().resolve()
+    if real == cwd or real in cwd.parents:
+        raise ReportError(refuse + "the current folder or one of its parents")
+    for path in protect:
+        if path is not None and real in Path(path).resolve().parents:
+            raise ReportError(refuse + f"the folder of the input {path}")
+    try:
+        mark = json.loads((out / "summary.json").read_text()).get("format")
+    except (OSError, ValueError, AttributeError):
+        mark = None
+    if mark != RESULT_FORMAT:
+        raise ReportError(refuse + "not one (no summary.json written by desdemona)")
+    others = sorted(p.name for p in out.iterdir() if p.name not in RESULT_FILES and p.suffix != ".png")
+    if others:
+        raise ReportError(refuse + f"holds other files too ({', '.join(others[:3])}); move them first")
 
 
 def versions() -> dict[str, str]:
@@ -65,8 +106,17 @@ def run_description(path, config) -> dict:
                               "held_positions": list(config.fixed)}}
 
 
-def write(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False) -> Path:
-    """Write the result folder of an off-line :class:`~desdemona.offline.Result` atomically."""
+def write(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False,
+          unreachable: dict | None = None, protect=()) -> Path:
+    """Write the result folder of an off-line :class:`~desdemona.offline.Result` atomically.
+
+    unreachable : :func:`desdemona.sizing.unreachable` of the result's path (computed when not given).
+    protect : see :func:`write_folder`.
+    """
+    if unreachable is None:
+        from desdemona import sizing
+
+        unreachable = sizing.unreachable(result.path, result.model)
     summary = {
         "command": command,
         **run_description(result.path, result.model.config),
@@ -84,27 +134,34 @@ def write(result, out_dir: str | Path, command: str | None = None, overwrite: bo
                                     for k, v in result.check.use.items()},
         },
         "quality": result.quality.to_dict(),
-        "solver": {"status": result.solution.status, "success": result.solution.success,
+        "unreachable": unreachable,
+        "solver": {"converged": result.converged, "status": result.solution.status,
+                   "success": result.solution.success,
                    "iterations": result.solution.iterations, "cost": result.solution.cost,
                    "starts": [vars(s) for s in result.starts], "timings_s": result.timings},
         "options": _plain(result.options),
         "parameters": result.model.params.to_dict(),
         "versions": versions(),
     }
-    return write_folder(result.trajectory, summary, result.model.config.joint_names, out_dir, overwrite)
+    return write_folder(result.trajectory, summary, result.model.config.joint_names, out_dir, overwrite,
+                        protect=protect)
 
 
 def write_folder(traj: Trajectory, summary: dict, joint_names, out_dir: str | Path, overwrite: bool = False,
-                 extra=None) -> Path:
+                 extra=None, protect=()) -> Path:
     """Write trajectory.csv, summary.json, trajectory.mat and the figures into ``out_dir`` atomically.
 
+    overwrite : replace ``out_dir`` if it is a result folder of ours (:func:`check_replaceable`).
     extra : optional ``extra(folder)`` that writes more files into the folder before it is moved in.
+    protect : paths (the run's inputs) that the replaced folder must not hold.
     """
     import scipy.io
 
     out = Path(out_dir)
     if out.exists() and not overwrite:
         raise ReportError(f"{out}: already exists; choose another folder or allow overwriting")
+    check_replaceable(out, protect)
+    summary = {"format": RESULT_FORMAT, **summary}
     parent = out.resolve().parent
     if not parent.is_dir():
         raise ReportError(f"{out}: the parent folder {parent} does not exist")
@@ -113,22 +170,27 @@ def write_folder(traj: Trajectory, summary: dict, joint_names, out_dir: str | Pa
     except OSError as exc:
         raise ReportError(f"{out}: cannot write in {parent}: {exc.strerror or exc}") from None
     try:
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o777 & ~umask)  # mkdtemp makes it private (0700); a result is an ordinary folder
         names, table = trajectory_table(traj, joint_names)
-        header = "units: SI (s, rad, m, rad/s, m/s, rad/s^2, m/s^2, N*m, N, W)\n" + ",".join(names)
-        np.savetxt(tmp / "trajectory.csv", table, delimiter=",", header=header, comments="# ", fmt="%.10g")
+        with open(tmp / "trajectory.csv", "w") as fh:
+            fh.write(f"# {UNITS}\n{','.join(names)}\n")
+            np.savetxt(fh, table, delimiter=",", fmt="%.10g")
         (tmp / "summary.json").write_text(json.dumps(summary, indent=2, default=_json_default))
         scipy.io.savemat(tmp / "trajectory.mat", {n.replace("-", "_"): table[:, i] for i, n in enumerate(names)},
                          oned_as="column")
         figures.draw_result(traj, summary, tmp)
         if extra is not None:
             extra(tmp)
-        if out.exists():
-            old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old.", dir=parent))
-            os.replace(out, old / out.name)
-            os.replace(tmp, out)
-            shutil.rmtree(old)
-        else:
-            os.replace(tmp, out)
+        with guard.deferred():  # an interrupt between the two renames would lose both folders
+            if out.exists():
+                old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old.", dir=parent))
+                os.replace(out, old / out.name)
+                os.replace(tmp, out)
+                shutil.rmtree(old)
+            else:
+                os.replace(tmp, out)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
@@ -141,10 +203,14 @@ def load(out_dir: str | Path) -> tuple[Trajectory, dict]:
     try:
         summary = json.loads((out / "summary.json").read_text())
         with open(out / "trajectory.csv") as fh:
-            fh.readline()
-            names = fh.readline().lstrip("# ").strip().split(",")
-        table = np.loadtxt(out / "trajectory.csv", delimiter=",", comments="#", ndmin=2)
-    except (OSError, ValueError) as exc:
+            lines = fh.read().splitlines()
+        rows = [line for line in lines if not line.startswith("#")]
+        if rows and rows[0].startswith("t,"):
+            names, rows = rows[0].split(","), rows[1:]
+        else:  # written by earlier versions: the column names in a comment
+            names = next(line.lstrip("# ") for line in lines if line.lstrip("# ").startswith("t,")).split(",")
+        table = np.loadtxt(rows, delimiter=",", ndmin=2)
+    except (OSError, ValueError, StopIteration) as exc:
         raise ReportError(f"{out}: not a readable result folder: {exc}") from None
     col = {n: table[:, i] for i, n in enumerate(names)}
     joints = summary["configuration"]["free_joints"]
@@ -224,11 +290,17 @@ def online_summary(result, command: str | None = None) -> dict:
     }
 
 
-def write_online(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False) -> Path:
+def write_online(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False,
+                 unreachable: dict | None = None, protect=()) -> Path:
     """The result folder of an on-line :class:`~desdemona.online.OnlineResult`: the usual files plus
     ``cycles.csv`` (per-cycle compute time, source of the command, fallback reason), ``online.png``
-    (like thesis figures 7.5/7.6) and ``compute_time.png`` (compute time per cycle against the deadline)."""
-    summary = online_summary(result, command)
+    (like thesis figures 7.5/7.6) and ``compute_time.png`` (compute time per cycle against the deadline).
+    unreachable, protect : as in :func:`write`."""
+    if unreachable is None:
+        from desdemona import sizing
+
+        unreachable = sizing.unreachable(result.path, result.model)
+    summary = {**online_summary(result, command), "unreachable": unreachable}
     loop = result.loop
 
     def extra(folder: Path) -> None:
@@ -238,4 +310,5 @@ def write_online(result, out_dir: str | Path, command: str | None = None, overwr
                 fh.write(f"{t:.6g},{c:.6g},{s},\"{r}\"\n")
         figures.draw_online(result, folder)
 
-    return write_folder(result.trajectory, summary, result.model.config.joint_names, out_dir, overwrite, extra)
+    return write_folder(result.trajectory, summary, result.model.config.joint_names, out_dir, overwrite, extra,
+                        protect=protect)

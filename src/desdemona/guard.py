@@ -1,0 +1,216 @@
+"""Guarding the user's time: interrupts that stop a whole run, and word from a long solve.
+
+A run may spend minutes inside IPOPT. Ctrl-C (SIGINT) or SIGTERM must stop all of it within a second
+or two, write nothing, and leave the command to exit 128 + the signal number. Three obstacles:
+
+- CasADi checks for signals at each IPOPT iteration, but turns an exception raised by a Python handler
+  into a warning and a failed start (``NonIpopt_Exception_Thrown``), and the run goes on. So inside a
+  solve that carries :class:`SolveMonitor` (the problem's ``iteration_callback``) the handler only
+  records the signal; the monitor asks IPOPT to stop at its next iteration and :func:`solving` raises
+  :class:`Interrupted` once the solver has returned.
+- fatrop has no iteration callback, and an exception raised into the CasADi functions it evaluates
+  only fails that evaluation: it backtracks and goes on (measured: 400 s to stop the car lap on full,
+  ending in a traceback). Inside such a solve (:func:`solving` without a monitor) the handler ends the
+  process at once with ``os._exit``: nothing is being written while a solver runs (result folders are
+  written after, atomically), so nothing is left half.
+- Other compiled code (the on-line controller's QP solver) may swallow the exception the same way.
+  After the first signal a repeating timer raises :class:`Interrupted` again every :data:`REPEAT`
+  seconds until it reaches Python code that lets it through.
+- Worker processes: they ignore SIGINT (:func:`worker_signals`), so only the parent decides, and the
+  parent terminates them (``multiprocessing.Pool`` sends SIGTERM on leaving its ``with`` block), which
+  stops them the same way.
+
+Signals and signal handlers are process-wide, so is the state here: it is set only inside the CLI's
+``with interruptible():`` and is inert for a library user who never enters it.
+
+The same monitor reports on a long solve: every ``every`` seconds it calls the reporter given to
+:func:`reporting` with the iteration count and the current cost.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import signal
+import sys
+import threading
+import time
+
+import casadi as ca
+
+REPEAT = 0.2  # [s] re-raise period once a signal was received and something swallowed the exception
+
+
+class Interrupted(SystemExit):
+    """The user asked the run to stop (SIGINT or SIGTERM). A SystemExit with code 128 + the signal
+    number: ``except Exception`` clauses that turn failures into table lines let it through, and a
+    worker process that meets it ends quietly with that code."""
+
+    def __init__(self, signum: int):
+        super().__init__(128 + signum)
+        self.signum = signum
+        self.name = signal.Signals(signum).name
+        self.message = f"interrupted ({self.name}): stopped, no partial result written"
+
+
+class _State:
+    """What the handlers and monitors share within one process."""
+
+    def __init__(self):
+        self.signum: int | None = None  # the first signal received
+        self.monitored = 0  # depth of solves whose monitor will stop the solver
+        self.unstoppable = 0  # depth of solves nothing but ending the process stops
+        self.speak = False  # say why the process ends (the command's own process, not a worker)
+        self.reporter = None  # reporter(iteration, cost, seconds) for long solves
+        self.every = 10.0
+
+
+_state = _State()
+
+
+def _handler(signum, frame):
+    if _state.signum is None:
+        _state.signum = signum
+        # a backstop for exceptions swallowed by compiled code: raise again until one gets through
+        signal.signal(signal.SIGALRM, _repeat)
+        signal.setitimer(signal.ITIMER_REAL, REPEAT, REPEAT)
+    if _state.monitored:
+        return  # the solve's monitor stops IPOPT cleanly; solving() raises after it returns
+    if _state.unstoppable:
+        if _state.speak:
+            print(f"desdemona: {Interrupted(signum).message}", file=sys.stderr, flush=True)
+        sys.stdout.flush()
+        os._exit(128 + signum)
+    raise Interrupted(_state.signum)
+
+
+def _repeat(signum, frame):
+    if _state.signum is not None and not _state.monitored:
+        raise Interrupted(_state.signum)
+
+
+@contextlib.contextmanager
+def interruptible():
+    """Within this block SIGINT and SIGTERM raise :class:`Interrupted` (main thread only)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    saved = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM, signal.SIGALRM)}
+    _state.signum, _state.speak = None, True
+    for s in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(s, _handler)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        for s, h in saved.items():
+            signal.signal(s, h)
+        _state.signum, _state.monitored, _state.unstoppable, _state.speak = None, 0, 0, False
+
+
+def check() -> None:
+    """Raise :class:`Interrupted` if a stop was requested (between pieces of work)."""
+    if _state.signum is not None:
+        raise Interrupted(_state.signum)
+
+
+@contextlib.contextmanager
+def solving(monitor: SolveMonitor | None):
+    """Around one solver call; raises :class:`Interrupted` after it if a stop was asked for.
+
+    monitor : the solver's :class:`SolveMonitor`, or None. With one, a signal only asks the monitor to
+    stop the solver at its next iteration: the handler must not raise into it. Without one (fatrop),
+    a signal ends the process.
+    """
+    monitored = monitor is not None
+    if monitored:
+        monitor.restart()
+    _state.monitored += monitored
+    _state.unstoppable += not monitored
+    try:
+        yield
+    finally:
+        _state.monitored -= monitored
+        _state.unstoppable -= not monitored
+    check()
+
+
+@contextlib.contextmanager
+def deferred():
+    """Hold SIGINT and SIGTERM back for a short block that must not be cut in two (renaming a result
+    folder into place); they are delivered when it ends."""
+    blocked = {signal.SIGINT, signal.SIGTERM}
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, blocked)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+
+
+def worker_signals(writes: bool = False) -> None:
+    """Initializer of worker processes: ignore SIGINT (a terminal sends it to the whole process group:
+    the parent decides, and terminates the workers with SIGTERM). On SIGTERM a worker that only
+    computes dies at once; one that ``writes`` result folders stops as the parent would, so that a
+    folder being written is removed, not left half (at the cost of up to an IPOPT iteration)."""
+    _state.signum, _state.monitored, _state.unstoppable, _state.reporter, _state.speak = None, 0, 0, None, False
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, _handler if writes else signal.SIG_DFL)
+
+
+@contextlib.contextmanager
+def reporting(reporter, every: float = 10.0):
+    """Within this block a long solve calls ``reporter(iteration, cost, seconds)`` every ``every`` s."""
+    saved = _state.reporter, _state.every
+    _state.reporter, _state.every = reporter, every
+    try:
+        yield
+    finally:
+        _state.reporter, _state.every = saved
+
+
+class SolveMonitor(ca.Callback):
+    """IPOPT's ``iteration_callback``: stops the solve when a signal was received (a non-zero return
+    makes IPOPT end with User_Requested_Stop) and reports a long solve's progress.
+
+    nx, ng : numbers of decision variables and constraints of the NLP.
+    """
+
+    def __init__(self, nx: int, ng: int):
+        ca.Callback.__init__(self)
+        self.nx, self.ng = nx, ng
+        self.iteration, self.started, self.last = 0, 0.0, 0.0
+        self.construct("monitor", {})
+
+    def get_n_in(self):
+        return ca.nlpsol_n_out()
+
+    def get_n_out(self):
+        return 1
+
+    def get_name_in(self, i):
+        return ca.nlpsol_out(i)
+
+    def get_name_out(self, i):
+        return "stop"
+
+    def get_sparsity_in(self, i):
+        name = ca.nlpsol_out(i)
+        if name == "f":
+            return ca.Sparsity.scalar()
+        if name in ("x", "lam_x"):
+            return ca.Sparsity.dense(self.nx)
+        if name in ("g", "lam_g"):
+            return ca.Sparsity.dense(self.ng)
+        return ca.Sparsity(0, 0)
+
+    def restart(self) -> None:
+        self.iteration, self.started = 0, time.perf_counter()
+        self.last = self.started
+
+    def eval(self, arg):
+        self.iteration += 1
+        now = time.perf_counter()
+        if _state.reporter is not None and now - self.last >= _state.every:
+            self.last = now
+            _state.reporter(self.iteration, float(arg[1]), now - self.started)
+        return [1.0 if _state.signum is not None else 0.0]

@@ -1,0 +1,165 @@
+"""Safe with the user's files and time: --overwrite, interrupts, runaway inputs, progress, exit codes."""
+
+import csv
+import functools
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import desdemona
+from desdemona import cli, problem, profiles, report
+from desdemona.cli import main
+
+SHORT = ["cosine", "--config", "yaw-track", "--h-u", "0.1", "--starts", "1"]
+
+
+def _optimize(out, *extra):
+    return main(["optimize", *SHORT, "--out", str(out), *extra])
+
+
+def test_overwrite_replaces_only_a_result_folder(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    data = tmp_path / "data"
+    data.mkdir()
+    (data / "keep.txt").write_text("the user's")
+    (tmp_path / "notes.txt").write_text("also the user's")
+    for out in ("data", "notes.txt", ".", ".."):
+        assert _optimize(out, "--overwrite") == 2, out
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "--overwrite replaces only a desdemona result folder" in err
+    assert (data / "keep.txt").read_text() == "the user's"
+    assert (tmp_path / "notes.txt").read_text() == "also the user's"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["data", "notes.txt"]  # no temporary left over
+    # an earlier result is replaced, but not once the user has put a file of theirs in it
+    assert _optimize("run") == 0 and _optimize("run", "--overwrite") == 0
+    assert json.loads((tmp_path / "run" / "summary.json").read_text())["format"] == "desdemona result"
+    (tmp_path / "run" / "mine.txt").write_text("x")
+    assert _optimize("run", "--overwrite") == 2 and (tmp_path / "run" / "mine.txt").exists()
+
+
+def test_overwrite_never_replaces_the_folder_of_the_input(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert _optimize("run") == 0
+    profiles.write_csv(tmp_path / "run" / "trajectory.csv", profiles.cosine(duration=1.0))  # looks like ours
+    assert main(["optimize", "run/trajectory.csv", "--config", "yaw-track", "--h-u", "0.1", "--starts", "1",
+                 "--out", "run", "--overwrite"]) == 2
+
+
+def test_result_folder_respects_the_umask_and_names_its_columns(tmp_path):
+    old = os.umask(0o022)
+    try:
+        assert _optimize(tmp_path / "run") == 0
+    finally:
+        os.umask(old)
+    assert (tmp_path / "run").stat().st_mode & 0o777 == 0o755
+    with open(tmp_path / "run" / "trajectory.csv") as fh:
+        rows = csv.DictReader(line for line in fh if not line.startswith("#"))
+        first = next(rows)
+    assert float(first["t"]) == 0.0 and "q_track" in first and "fy_d" in first
+    traj, _ = report.load(tmp_path / "run")
+    assert traj.q.shape[1] == 2
+    # folders of earlier versions, with the names in a comment, still load
+    lines = (tmp_path / "run" / "trajectory.csv").read_text().splitlines()
+    (tmp_path / "run" / "trajectory.csv").write_text("\n".join([lines[0], "# " + lines[1], *lines[2:]]) + "\n")
+    assert (report.load(tmp_path / "run")[0].q == traj.q).all()
+
+
+def test_sigint_inside_ipopt_stops_the_run(tmp_path):
+    """Acceptance: SIGINT 2 s into the car lap on full ends the process within 5 s, exit 130, nothing written."""
+    env = dict(os.environ, PYTHONPATH=str(Path(desdemona.__file__).resolve().parent.parent))
+    out = tmp_path / "lap"
+    start = time.perf_counter()
+    proc = subprocess.Popen([sys.executable, "-m", "desdemona.cli", "optimize", "car-lap", "--config", "full",
+                             "--starts", "2", "--out", str(out)], env=env, stderr=subprocess.PIPE, text=True)
+    # its first line says the command has started (on a loaded machine Python's imports alone may take 2 s)
+    assert "700 control intervals" in proc.stderr.readline()
+    time.sleep(max(0.0, 2.0 - (time.perf_counter() - start)))
+    proc.send_signal(signal.SIGINT)
+    sent = time.perf_counter()
+    try:
+        err = proc.stderr.read()
+        proc.wait(timeout=5.0)
+    finally:
+        proc.kill()
+    assert time.perf_counter() - sent < 5.0
+    assert proc.returncode == 130, err
+    assert err.strip().splitlines()[-1] == "desdemona: interrupted (SIGINT): stopped, no partial result written"
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_millisecond_time_column_is_refused_at_once(tmp_path, capsys):
+    path = tmp_path / "ms.csv"
+    path.write_text("t,wx,wy,wz,fx,fy,fz\n" + "".join(f"{500 * k},0,0,0,0,1,9.81\n" for k in range(61)))
+    start = time.perf_counter()
+    assert main(["optimize", str(path), "--config", "full", "--out", str(tmp_path / "r")]) == 2
+    assert time.perf_counter() - start < 2.0
+    assert "column 't' looks like milliseconds" in capsys.readouterr().err
+
+
+def test_batch_with_one_bad_csv_stops_before_any_job(tmp_path, capsys):
+    good, bad = tmp_path / "good.csv", tmp_path / "bad.csv"
+    profiles.write_csv(good, profiles.cosine(duration=1.0))
+    bad.write_text(good.read_text().replace("0.5,", "nan,", 1))
+    out = tmp_path / "runs"
+    assert main(["batch", str(good), str(bad), "cosine", "--configs", "yaw-track", "--out", str(out),
+                 "--h-u", "0.1", "--starts", "1"]) == 2
+    err = capsys.readouterr().err
+    assert "bad.csv: line" in err and "not a finite number" in err and err.count("\n") == 1
+    assert not out.exists()
+    # a modulus-only path on a configuration that needs the full path: also before any job
+    (tmp_path / "m.csv").write_text("t,M\n0,9.81\n1,12\n")
+    assert main(["batch", str(tmp_path / "m.csv"), "--configs", "dfs", "yaw-track", "--out", str(out)]) == 2
+    assert not out.exists()
+
+
+def test_progress_lines_when_stderr_is_not_a_terminal(tmp_path, monkeypatch, capsys):
+    """A line when the run starts, per start (elapsed time, best cost) and, inside a long solve, every
+    PROGRESS_EVERY s; --quiet silences them. (By hand: the README's car lap on full, 3 min, prints a line
+    every 10 s.)"""
+    monkeypatch.setattr(cli, "PROGRESS_EVERY", 0.0)
+    assert main(["optimize", "cosine", "--config", "yaw-track", "--h-u", "0.1", "--starts", "2",
+                 "--out", str(tmp_path / "a")]) == 0
+    err = capsys.readouterr().err
+    assert "50 control intervals" in err
+    assert "start 1/2 done" in err and "start 2/2 done" in err and "best cost so far" in err
+    assert "solving: iteration 1," in err
+    assert _optimize(tmp_path / "b", "--quiet") == 0
+    assert capsys.readouterr().err == ""
+
+
+def test_iteration_cap_is_reported_as_not_converged(tmp_path, monkeypatch, capsys):
+    monkeypatch.setattr(problem, "ProblemOptions", functools.partial(problem.ProblemOptions, max_iter=3))
+    assert _optimize(tmp_path / "r") == cli.EXIT_NOT_CONVERGED
+    assert "solver Maximum_Iterations_Exceeded (NOT CONVERGED)" in capsys.readouterr().out
+    solver = json.loads((tmp_path / "r" / "summary.json").read_text())["solver"]
+    assert solver["converged"] is False and solver["status"] == "Maximum_Iterations_Exceeded"
+
+
+def test_unreachable_target_is_reported_not_refused(tmp_path, capsys):
+    path = tmp_path / "low.csv"
+    path.write_text("t,M\n0,9.81\n1,7\n2,7\n3,9.81\n")
+    assert main(["optimize", str(path), "--config", "dfs", "--h-u", "0.1", "--starts", "1",
+                 "--out", str(tmp_path / "r")]) == 0
+    assert "of the time below g 9.81 m/s^2 (worst 7)" in capsys.readouterr().out
+    below = json.loads((tmp_path / "r" / "summary.json").read_text())["unreachable"]["below_g"]
+    assert below["worst_m_s2"] == 7.0 and below["share_of_time"] == 0.5  # two of four equal samples
+
+
+def test_exit_codes_are_documented(capsys):
+    assert main(["--help"]) == 0
+    out = capsys.readouterr().out
+    for code in ("0 ", "2 ", "3 ", "4 ", "130"):
+        assert f"\n  {code}" in out
+
+
+def test_fatrop_status_in_words():
+    from desdemona import Model
+    from desdemona.offline import OptimizeOptions, optimize
+
+    result = optimize(profiles.cosine(duration=1.0), Model(config="yaw-track"),
+                      options=OptimizeOptions(problem.ProblemOptions(h_u=0.1, solver="fatrop"), starts=1))
+    assert result.solution.status == "Solve_Succeeded" and result.converged
