@@ -298,8 +298,11 @@ def _run_inputs(args):
     if out.exists() and not args.overwrite:
         raise UserError(f"{out}: already exists; choose another folder or add --overwrite")
     report.check_replaceable(out, protect=_inputs(args))
-    if not out.resolve().parent.is_dir() or not os.access(out.resolve().parent, os.W_OK):
-        raise UserError(f"{out}: cannot create it: {out.resolve().parent} is not a writable folder")
+    parent = out.resolve().parent
+    if not parent.is_dir():
+        raise UserError(f"{out}: cannot create it: the folder {parent} does not exist")
+    if not os.access(parent, os.W_OK):
+        raise UserError(f"{out}: cannot create it: {parent} is not a writable folder")
     if not model.config.modulus_cost and path.S_d is None:
         raise UserError(f"configuration {model.config.name!r} needs a full path t,wx,wy,wz,fx,fy,fz; "
                         f"{args.profile} gives only the modulus (use --config dfs)")
