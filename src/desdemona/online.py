@@ -1,9 +1,11 @@
 """On-line optimal motion cueing: a model predictive controller with a safe fallback (thesis chapter 7).
 
 With a pilot in the loop the desired path is known only a horizon T_h ahead. :class:`MPC` is built
-once and stepped every T_c = h seconds: ``step(state, preview) -> Command``. Each step solves the
-problem of :mod:`desdemona.problem` over the horizon (eq. 3.8) from the measured state, warm-started
-from the previous plan shifted by one step, with every limit hard and every planned state
+once and stepped every re-plan period T_c (a whole number of plan steps h; by default T_c = h):
+``step(state, preview) -> Command``, the accelerations of the coming period. Each step solves the
+problem of :mod:`desdemona.problem` over the horizon (eq. 3.8) from the measured state (or, with the
+thesis' computation delay, the state predicted for when the plan takes over, figure 7.2),
+warm-started from the previous plan shifted by one period, with every limit hard and every planned state
 *stoppable* (each track and heave position can still brake to rest within its limits: the end
 condition of chapter 7, section 3.4's K, imposed at every node so that any remainder of a plan ends
 stoppable too).
@@ -16,8 +18,10 @@ command is scaled down until it passes. The controller never returns a command t
 The predictors that turn what is known now into the preview live in :mod:`desdemona.predictors`.
 
 :func:`run` is a whole closed-loop session as a value: the MPC against the plant
-(:func:`desdemona.simulate.closed_loop`), the independent check, and the classical loop beside it
-(:class:`OnlineResult`); the ``online`` command, the benchmark and the tests all call it.
+(:func:`desdemona.simulate.closed_loop`) from rest, the independent check, and what a simulator runs
+today beside it (the classical loop of 7.4.2 on dfs, a classical washout elsewhere, from
+:mod:`desdemona.baselines`) (:class:`OnlineResult`); the ``online`` command, the benchmark and the
+tests all call it.
 """
 
 from __future__ import annotations
@@ -51,8 +55,8 @@ class MPCOptions:
     replan : T_c [s], the period at which a new plan is computed, a whole number of steps (default:
     every step); delay : simulate the computation time as the thesis does (7.1, figure 7.2): the plan
     computed during [t, t + T_c] from the state at t is applied from t + T_c, so it starts from the state
-    predicted there; deadline : compute budget per plan [s] (default: T_c); substeps, regularisation, margin, weights : as in
-    :class:`desdemona.problem.ProblemOptions`; braking : fraction of the acceleration limit assumed
+    predicted there; deadline : compute budget per plan [s] (default: T_c); substeps, regularisation,
+    margin, weights : as in :class:`desdemona.problem.ProblemOptions`; braking : fraction of the acceleration limit assumed
     for stopping; method : "rti" (real-time iteration: one Gauss-Newton QP per step, linearised at the
     shifted previous plan, solved by CasADi's ``qp_solver`` plugin) or "nlp" (IPOPT to convergence,
     warm-started, at most ``max_iter`` iterations); perception : minimise the perceived difference
