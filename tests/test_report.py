@@ -120,8 +120,15 @@ def test_batch_command(tmp_path, capsys):
                  "--starts", "1", "--h-u", "0.1", "--processes", "2"])
     assert code == 0
     table = capsys.readouterr().out
-    assert table.count(" ok ") == 2
+    assert table.count(" ok ") == 2 and "false rot" in table and "flips/s" in table
     assert (out / "catapult--yaw-track" / "summary.json").exists()
+    import csv
+    import json
+
+    rows = list(csv.DictReader(open(out / "batch.csv")))
+    assert [r["profile"] for r in rows] == ["catapult", "cosine"]
+    felt = json.loads((out / "catapult--yaw-track" / "summary.json").read_text())["quality"]
+    assert float(rows[0]["sign_changes_per_s_max"]) == pytest.approx(max(felt["joints"]["sign_changes_per_s"].values()))
     assert main(["batch", "catapult", "--configs", "nope", "--out", str(out)]) == 2
 
 

@@ -47,10 +47,10 @@ class JobResult:
     seconds: float
     folder: str
     message: str = ""
+    felt: dict | None = None  # metrics.Metrics.key_figures of the result
 
 
-def load_path(profile: str) -> profiles.DesiredPath:
-    return profiles.get_profile(profile) if profile in profiles.PROFILES else profiles.read_csv(profile)
+FELT_COLUMNS = ("peak_false_rotation_deg_s", "felt_force_rms_max", "rms_modulus", "sign_changes_per_s_max")
 
 
 def run_job(job: Job, params: MachineParams, options: OptimizeOptions, out_dir: str, weights=None,
@@ -63,7 +63,7 @@ def run_job(job: Job, params: MachineParams, options: OptimizeOptions, out_dir: 
     start = time.perf_counter()
     folder = Path(out_dir) / job.folder_name
     try:
-        path = load_path(job.profile).with_gain(gain)
+        path = profiles.load(job.profile).with_gain(gain)
         if weights is not None:
             problem = dataclasses.replace(options.problem, weights=tuple(profiles.weights_for(weights, path)))
             options = dataclasses.replace(options, problem=problem)
@@ -71,7 +71,8 @@ def run_job(job: Job, params: MachineParams, options: OptimizeOptions, out_dir: 
         report.write(result, folder, command=f"desdemona batch ({job.profile} on {job.config})", overwrite=True)
         status = "ok" if result.converged else "not converged"
         return JobResult(job.profile, job.config, status, result.check.rms, result.check.worst_use,
-                         time.perf_counter() - start, str(folder), "" if result.converged else result.solution.status)
+                         time.perf_counter() - start, str(folder), "" if result.converged else result.solution.status,
+                         result.quality.key_figures())
     except LimitViolation as exc:
         return JobResult(job.profile, job.config, "no safe trajectory", None, exc.check.worst_use,
                          time.perf_counter() - start, "", str(exc))
@@ -88,7 +89,7 @@ def validate(jobs: list[Job], params: MachineParams, options: OptimizeOptions, o
     for job in jobs:
         config = get_configuration(job.config)
         if job.profile not in paths:
-            paths[job.profile] = load_path(job.profile)
+            paths[job.profile] = profiles.load(job.profile)
         path = paths[job.profile]
         if not config.modulus_cost and path.S_d is None:
             raise profiles.ProfileError(f"{job.profile}: gives only the modulus t,M; configuration "
@@ -125,10 +126,12 @@ def run_batch(jobs: list[Job], params: MachineParams, options: OptimizeOptions, 
         raise
     with open(out / "batch.csv", "w", newline="") as fh:
         writer = csv.writer(fh)
-        writer.writerow(["profile", "configuration", "status", "rms", "worst_use", "seconds", "folder", "message"])
+        writer.writerow(["profile", "configuration", "status", "rms", "worst_use", *FELT_COLUMNS, "seconds",
+                         "folder", "message"])
         for r in results:
-            writer.writerow([r.profile, r.config, r.status, r.rms, r.worst_use, f"{r.seconds:.3f}", r.folder,
-                             r.message])
+            felt = [None if r.felt is None else r.felt[c] for c in FELT_COLUMNS]
+            writer.writerow([r.profile, r.config, r.status, r.rms, r.worst_use, *felt, f"{r.seconds:.3f}",
+                             r.folder, r.message])
     return results
 
 
@@ -168,11 +171,20 @@ def _indexed_job(item):
 
 
 def table(results: list[JobResult]) -> str:
-    lines = [f"{'profile':<18}{'configuration':<18}{'status':<20}{'RMS':>10}{'worst use':>11}{'time [s]':>10}"]
+    """The batch's printed table: per job its status, RMS, worst limit use, what is felt (peak false
+    rotation [deg/s], worst felt force error RMS [m/s^2], most acceleration reversals per second) and
+    its time."""
+    def cell(value, fmt):
+        return "-" if value is None else format(value, fmt)
+
+    lines = [f"{'profile':<18}{'configuration':<18}{'status':<20}{'RMS':>10}{'worst use':>11}{'false rot':>11}"
+             f"{'felt f':>9}{'flips/s':>9}{'time [s]':>10}"]
     for r in results:
-        rms = "-" if r.rms is None else f"{r.rms:.4g}"
-        worst = "-" if r.worst_use is None else f"{r.worst_use:.4f}"
-        lines.append(f"{r.profile:<18}{r.config:<18}{r.status:<20}{rms:>10}{worst:>11}{r.seconds:>10.2f}")
+        felt = r.felt or {}
+        lines.append(f"{r.profile:<18}{r.config:<18}{r.status:<20}{cell(r.rms, '.4g'):>10}"
+                     f"{cell(r.worst_use, '.4f'):>11}{cell(felt.get('peak_false_rotation_deg_s'), '.3g'):>11}"
+                     f"{cell(felt.get('felt_force_rms_max'), '.3g'):>9}"
+                     f"{cell(felt.get('sign_changes_per_s_max'), '.3g'):>9}{r.seconds:>10.2f}")
         if r.message:
             lines.append(f"    {r.message}")
     return "\n".join(lines)

@@ -269,6 +269,19 @@ class Metrics:
                  ("modulus lag_s", "s", _plain(self.modulus_lag_s))]
         return rows
 
+    def key_figures(self) -> dict[str, float | None]:
+        """The few numbers a table of many runs shows (the batch table): peak false rotation [deg/s],
+        the worst felt force error RMS [m/s^2] (full paths), RMS(M - M_d) [m/s^2] (modulus paths), the
+        most acceleration sign changes per second of any joint [1/s]."""
+        rotation = None if self.peak_false_cue is None else self.peak_false_cue[:3]
+        return {
+            "peak_false_rotation_deg_s": None if rotation is None or not np.isfinite(rotation).any()
+            else math.degrees(float(np.nanmax(rotation))),
+            "felt_force_rms_max": None if self.perceived_rms is None else float(np.max(self.perceived_rms[3:])),
+            "rms_modulus": _plain(self.modulus_rms),
+            "sign_changes_per_s_max": float(np.max(self.sign_changes_per_s)) if len(self.joints) else None,
+        }
+
     def headline(self) -> str:
         """One line of the figures a rider and an operator look at first."""
         parts = []
