@@ -19,7 +19,7 @@ import numpy as np
 
 from desdemona import baselines, guard, metrics, sizing
 from desdemona.model import Model
-from desdemona.plan import Plan
+from desdemona.plan import Plan, start_state
 from desdemona.problem import CueingProblem, ProblemOptions, Solution
 from desdemona.profiles import DesiredPath
 from desdemona.report import trajectory_dataframe
@@ -161,10 +161,8 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
 
 def _start(problem: CueingProblem) -> tuple[np.ndarray, np.ndarray]:
     """The fixed initial state of a problem that starts at rest (position 0) or at a given state."""
-    n = problem.model.n
-    if problem.options.initial == "given":
-        return tuple(np.asarray(v, dtype=float).reshape(n) for v in problem.options.initial_state)
-    return np.zeros(n), np.zeros(n)
+    o = problem.options
+    return start_state(o.initial_state if o.initial == "given" else None, problem.model.n)
 
 
 def _spin_up(problem: CueingProblem, direction: float, rate: float = 0.5, accel: float = 0.8) -> np.ndarray:

@@ -38,7 +38,7 @@ from desdemona import metrics
 from desdemona.baselines import classical_dfs, classical_washout
 from desdemona.model import Model
 from desdemona.perception import VestibularModel
-from desdemona.plan import Plan, advance
+from desdemona.plan import Plan, advance, start_state
 from desdemona.predictors import PREDICTORS, predictor
 from desdemona.problem import CueingProblem, ProblemOptions
 from desdemona.profiles import DesiredPath
@@ -389,12 +389,7 @@ class OnlineOptions:
 
     def start(self, n: int) -> tuple[np.ndarray, np.ndarray]:
         """(q0, qd0) of ``n`` free joints: the given state, or rest at the centre."""
-        if self.initial_state is None:
-            return np.zeros(n), np.zeros(n)
-        q0, qd0 = (np.asarray(v, dtype=float).reshape(-1) for v in self.initial_state)
-        if q0.shape != (n,) or qd0.shape != (n,) or not (np.all(np.isfinite(q0)) and np.all(np.isfinite(qd0))):
-            raise ValueError(f"initial_state needs {n} finite positions and {n} finite rates, one per free joint")
-        return q0, qd0
+        return start_state(self.initial_state, n)
 
 
 @dataclass(frozen=True, eq=False)

@@ -37,6 +37,17 @@ def node_states(q0, qd0, u, h) -> tuple[np.ndarray, np.ndarray]:
     return np.vstack([q0, q0 + np.cumsum(steps, axis=0)]), qd
 
 
+def start_state(state, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """(q0, qd0), each (n,), from ``state`` = (positions, rates) of n joints, or rest at the centre
+    (zeros) where ``state`` is None. A clear error unless both are n finite numbers."""
+    if state is None:
+        return np.zeros(n), np.zeros(n)
+    q0, qd0 = (np.asarray(v, dtype=float).reshape(-1) for v in state)
+    if q0.shape != (n,) or qd0.shape != (n,) or not (np.all(np.isfinite(q0)) and np.all(np.isfinite(qd0))):
+        raise ValueError(f"an initial state needs {n} finite positions and {n} finite rates, one per free joint")
+    return q0, qd0
+
+
 @dataclass(frozen=True, eq=False)
 class Plan:
     """Accelerations ``u`` held per interval of ``t_nodes`` from the state (q0, qd0).
