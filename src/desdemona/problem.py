@@ -46,7 +46,7 @@ import numpy as np
 
 from desdemona import guard
 from desdemona.perception import VestibularModel
-from desdemona.plan import Plan, advance, node_states
+from desdemona.plan import Plan, advance, node_states, start_state
 from desdemona.model import Model
 from desdemona.profiles import DesiredPath
 
@@ -212,7 +212,7 @@ class CueingProblem:
         n = model.n
         self.nx, self.nu = 2 * n + self.nz, n
         self.monitor = None  # the solver's guard.SolveMonitor, where it has one
-        self.stage = self._stage_function()
+        self.stage, self.residual, self.families = self._stage_functions()
         self._build_nlp()
 
     # ------------------------------------------------------------------------------------------
@@ -237,8 +237,15 @@ class CueingProblem:
     # ------------------------------------------------------------------------------------------
     # the stage: one control interval
 
-    def _stage_function(self) -> ca.Function:
-        """One control interval: the next node state, the stage cost and the path constraints.
+    @property
+    def n_path(self) -> int:
+        """Path constraints per stage: the rows of every family."""
+        return sum(f.expression.numel() for f in self.families)
+
+    def _stage_functions(self) -> tuple[ca.Function, ca.Function, list[Family]]:
+        """One control interval: ``stage(x, u, d) -> (x_next, L, g)`` (the next node state, the stage
+        cost and the path constraints), ``residual(x, u, d) -> r`` (the cost is sum(r^2)) and the
+        constraint families that make up g, in order.
 
         The motion at the sub-step points is exact (:func:`desdemona.plan.advance`); there the cue
         (S, or the modulus against its desired value) and the torques are evaluated once, and shared by
@@ -260,13 +267,12 @@ class CueingProblem:
             positions.append(qj)
         residuals, z_next = self._residuals(values, u, x[2 * n:], d)
         r = ca.vertcat(*residuals)
-        self.residual = ca.Function("stage_residual", [x, u, d], [r], ["x", "u", "d"], ["r"])
-        self.families = self._families(positions, efforts, powers, q_next, qd_next)
-        g = ca.vertcat(*[f.expression for f in self.families])
-        self.n_path = g.numel()
+        residual = ca.Function("stage_residual", [x, u, d], [r], ["x", "u", "d"], ["r"])
+        families = self._families(positions, efforts, powers, q_next, qd_next)
+        g = ca.vertcat(*[f.expression for f in families])
         x_next = ca.vertcat(q_next, qd_next, z_next)
-        return ca.Function("stage", [x, u, d], [x_next, ca.sumsqr(r), g], ["x", "u", "d"],
-                           ["x_next", "L", "g"])
+        stage = ca.Function("stage", [x, u, d], [x_next, ca.sumsqr(r), g], ["x", "u", "d"], ["x_next", "L", "g"])
+        return stage, residual, families
 
     def _residuals(self, values, u, z, d) -> tuple[list, ca.SX]:
         """The stage's cost as squared residuals, and the filter states at its end.
@@ -441,7 +447,7 @@ class CueingProblem:
         if o.initial in ("rest", "given"):
             lbx[n:2 * n] = ubx[n:2 * n] = 0.0
         if o.initial == "given":
-            q0, qd0 = (np.asarray(v, dtype=float).reshape(n) for v in o.initial_state)
+            q0, qd0 = start_state(o.initial_state, n)
             lbx[:n] = ubx[:n] = q0
             lbx[n:2 * n] = ubx[n:2 * n] = qd0
         if o.final in ("rest", "centre"):
