@@ -4,10 +4,15 @@ A configuration is data, not a code path: the free joints and the positions of t
 joints have zero rate and acceleration; their bodies still ride along, so their masses and inertias
 stay in the dynamics ("rigid connections", section 5.5), and their forces are not motor limits.
 
-- ``dfs``: the dynamic flight simulator of chapter 7. Only the yaw moves; the track is held at its
-  outer end (q2 = -4 m) and the heave at its lowest (q3 = -1 m). The gimbals align the cabin with the
-  specific force (:func:`desdemona.kinematics.gimbal_alignment`), so the cue is the modulus
-  M = |f| (eq. 7.1-7.3, 7.7).
+- ``dfs``: the dynamic flight simulator of chapter 7 (7.2) driving the whole machine. The yaw spins
+  the arm and the three gimbals turn the cabin; the track is held at its outer end (q2 = -4 m) and the
+  heave at its lowest (q3 = -1 m). Given only the modulus M_d of the force (eq. 7.1, 7.2), the cue
+  is the force along the occupant's vertical, f = (0, 0, M_d) in cabin coordinates, and no rotation
+  (:func:`desdemona.profiles.along_vertical`): the optimiser plans the gimbals with the yaw, within
+  their own limits, instead of assuming they follow. Chapter 8's advice, with the gimbals as joints.
+- ``dfs-yaw``: the thesis' own one-joint formulation of chapter 7: only the yaw, cost on the modulus
+  M = |f| (eq. 7.3, 7.7), the gimbals assumed to align the cabin
+  (:func:`desdemona.kinematics.gimbal_alignment`) and not planned. Kept to reproduce its figures.
 - ``yaw-track``: yaw and track, the two-joint model of appendix B and chapters 4-5.
 - ``yaw-track-cabin``: yaw, track and cabin yaw (q5), the three-joint model of section 5.6.
 - ``full``: all six joints.
@@ -28,7 +33,9 @@ class Configuration:
     """A set of free joints (0-based indices into q1..q6) and the positions of the held ones.
 
     fixed : (6,) position of every joint when held [rad | m]; the entries of free joints are unused.
-    modulus_cost : True where the cue is the modulus of the specific force (``dfs``), not all of S.
+    modulus_cost : True where the cue is the modulus of the specific force (``dfs-yaw``), not all of S.
+    aligned : a path that gives only the modulus asks for it along the occupant's vertical, with no
+        rotation (``dfs``, see :meth:`cue_path`).
     """
 
     name: str
@@ -36,6 +43,17 @@ class Configuration:
     fixed: tuple[float, ...]
     modulus_cost: bool
     description: str
+    aligned: bool = False
+
+    def cue_path(self, path):
+        """The desired path this configuration follows: ``path`` itself, or for an aligned
+        configuration and a modulus-only path, the modulus along cabin +z with no rotation
+        (:func:`desdemona.profiles.along_vertical`)."""
+        if self.aligned and path.S_d is None:
+            from desdemona.profiles import along_vertical
+
+            return along_vertical(path)
+        return path
 
     @property
     def n(self) -> int:
@@ -66,7 +84,7 @@ class Configuration:
         idx = list(self.free)
         return Limits(position_min=params.position_min[idx], position_max=params.position_max[idx],
                       velocity=params.velocity_max[idx], acceleration=params.acceleration_max[idx],
-                      effort=params.effort_max[idx], power=params.power_max[idx])
+                      effort=params.effort_max[idx], power=params.power_max[idx], jerk=params.jerk_max[idx])
 
 
 @dataclass(frozen=True, eq=False)
@@ -74,7 +92,8 @@ class Limits:
     """Limits of a set of joints, one (n,) array per kind of limit, SI (eq. 3.3-3.5).
 
     position_min, position_max : [rad | m], -inf / inf where a joint is unbounded; velocity
-    [rad/s | m/s], acceleration [rad/s^2 | m/s^2], effort [N*m | N], power [W]: symmetric bounds.
+    [rad/s | m/s], acceleration [rad/s^2 | m/s^2], effort [N*m | N], power [W], jerk [rad/s^3 | m/s^3]
+    (inf where unbounded): symmetric bounds.
     """
 
     position_min: np.ndarray
@@ -83,6 +102,12 @@ class Limits:
     acceleration: np.ndarray
     effort: np.ndarray
     power: np.ndarray
+    jerk: np.ndarray
+
+    @property
+    def smooth(self) -> bool:
+        """True where the jerk is bounded: plans then have continuous, piecewise-linear accelerations."""
+        return bool(np.all(np.isfinite(self.jerk)))
 
     @property
     def bounded(self) -> list[int]:
@@ -92,8 +117,11 @@ class Limits:
 
 CONFIGURATIONS: dict[str, Configuration] = {
     c.name: c for c in (
-        Configuration("dfs", (0,), (0.0, -4.0, -1.0, 0.0, 0.0, 0.0), True,
-                      "dynamic flight simulator: yaw only, track at -4 m, cue = |f| (chapter 7)"),
+        Configuration("dfs", (0, 3, 4, 5), (0.0, -4.0, -1.0, 0.0, 0.0, 0.0), False,
+                      "dynamic flight simulator: yaw and gimbals, track at -4 m, force along the occupant's "
+                      "vertical (chapter 7)", aligned=True),
+        Configuration("dfs-yaw", (0,), (0.0, -4.0, -1.0, 0.0, 0.0, 0.0), True,
+                      "the thesis' dynamic flight simulator: yaw only, track at -4 m, cue = |f| (chapter 7)"),
         Configuration("yaw-track", (0, 1), (0.0,) * 6, False,
                       "yaw and linear track (appendix B, chapters 4-5)"),
         Configuration("yaw-track-cabin", (0, 1, 4), (0.0,) * 6, False,

@@ -95,27 +95,32 @@ class Model:
 
     @functools.lru_cache(maxsize=8)
     def step_limit_use(self, h: float) -> ca.Function:
-        """``(q, qd, qdd) -> use`` of every limit (1 = at the limit) over a step of ``h`` seconds with
-        ``qdd`` held, at its ends and its middle: the guard a controller applies before it commands.
+        """``(q, qd, qdd, jerk) -> use`` of every limit (1 = at the limit) over a step of ``h`` seconds
+        from acceleration ``qdd`` changing at ``jerk``, at its ends and its middle: the guard a
+        controller applies before it commands.
 
-        Positions are parabolas and rates lines in time, torque and power smooth over the step: the
-        independent check of :mod:`desdemona.simulate` verifies the whole run on a 10x finer grid. A
-        bounded position counts as 1 + how far outside its range, as a share of the range.
+        Positions are cubics, rates parabolas and accelerations lines in time, torque and power smooth
+        over the step: the independent check of :mod:`desdemona.simulate` verifies the whole run on a
+        10x finer grid. A bounded position counts as 1 + how far outside its range, as a share of the
+        range. Jerk counts where the machine limits it.
         """
         lim, n = self.limits, self.n
-        q, qd, qdd = (ca.SX.sym(k, n) for k in ("q", "qd", "qdd"))
-        uses = [ca.fabs(qdd) / ca.DM(lim.acceleration)]
+        q, qd, qdd, jerk = (ca.SX.sym(k, n) for k in ("q", "qd", "qdd", "jerk"))
+        uses = []
+        if lim.smooth:
+            uses.append(ca.fabs(jerk) / ca.DM(lim.jerk))
         bounded = lim.bounded
         lo, hi = lim.position_min[bounded], lim.position_max[bounded]
         for s in (0.0, 0.5 * h, h):
-            qs, qds = advance(q, qd, qdd, s)
-            tau = self.functions["tau"](qs, qds, qdd)
-            uses += [ca.fabs(qds) / ca.DM(lim.velocity), ca.fabs(tau) / ca.DM(lim.effort),
-                     ca.fabs(tau * qds) / ca.DM(lim.power)]
+            qs, qds = advance(q, qd, qdd, s, jerk)
+            a = qdd + jerk * s
+            tau = self.functions["tau"](qs, qds, a)
+            uses += [ca.fabs(a) / ca.DM(lim.acceleration), ca.fabs(qds) / ca.DM(lim.velocity),
+                     ca.fabs(tau) / ca.DM(lim.effort), ca.fabs(tau * qds) / ca.DM(lim.power)]
             if bounded:
                 outside = ca.fmax(ca.DM(lo) - qs[bounded], qs[bounded] - ca.DM(hi)) / ca.DM(hi - lo)
                 uses.append(1.0 + outside)
-        return ca.Function("limit_use", [q, qd, qdd], [ca.vertcat(*uses)])
+        return ca.Function("limit_use", [q, qd, qdd, jerk], [ca.vertcat(*uses)])
 
     def kinetic_energy(self, q, qd):
         return call(self.functions["kinetic_energy"], q, qd)

@@ -19,7 +19,7 @@ import numpy as np
 
 from desdemona import baselines, guard, metrics, sizing
 from desdemona.model import Model
-from desdemona.plan import Plan, start_state
+from desdemona.plan import Plan, start_acceleration, start_state
 from desdemona.problem import CueingProblem, ProblemOptions, Solution
 from desdemona.profiles import DesiredPath
 from desdemona.report import trajectory_dataframe
@@ -119,7 +119,9 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
 
     def add(name, q0, qd0, u=None):
         u = np.zeros((N, n)) if u is None else u
-        guesses.append((name, problem.states_from(np.asarray(q0, float), np.asarray(qd0, float), u), u))
+        guesses.append((name, *problem.guess(np.asarray(q0, float), np.asarray(qd0, float), u, a0)))
+
+    a0 = None if problem.options.initial == "free" else start_acceleration(problem.options.initial_state, n)
 
     free = model.config.free
     if problem.options.initial != "free":
@@ -199,8 +201,9 @@ def _guesses_from_start(problem: CueingProblem) -> list[tuple[str, np.ndarray, n
         start = q0.copy()
         if track is not None and track_position:
             start[track] = track_position
-        u = _spin_up(problem, direction)
-        guesses.append((name, problem.states_from(start, qd0, u), u))
+        x, u = problem.guess(start, qd0, _spin_up(problem, direction),
+                             start_acceleration(problem.options.initial_state, model.n))
+        guesses.append((name, x, u))
     return guesses
 
 
@@ -241,6 +244,7 @@ def optimize(path: DesiredPath, model: Model, options: OptimizeOptions = Optimiz
     :class:`~desdemona.sizing.TooLarge` before building a problem that would not fit in memory.
     """
     wall = time.perf_counter()
+    path = model.config.cue_path(path)
     sizing.check_fits(path, model.config, options.problem, options.workers)
     build = time.perf_counter()
     full, rough = _problems(model, path, options)

@@ -41,7 +41,7 @@ from desdemona.perception import VestibularModel
 from desdemona.plan import Plan, advance, start_state
 from desdemona.predictors import PREDICTORS, predictor
 from desdemona.problem import CueingProblem, ProblemOptions
-from desdemona.profiles import DesiredPath
+from desdemona.profiles import DesiredPath, along_vertical, vertical_force
 from desdemona.simulate import (TOLERANCE, ClosedLoop, LimitCheck, LimitViolation, Trajectory, check, closed_loop,
                                 evaluate_plan)
 
@@ -102,17 +102,24 @@ class MPCOptions:
 
 @dataclass(frozen=True)
 class Command:
-    """What one cycle returns: the joint accelerations to hold for its steps, and why.
+    """What one cycle returns: the joint accelerations of its steps, and why.
 
-    sequence : (r, n) accelerations, each held for one step, r = ``options.replan_steps``;
+    sequence : (r, n) accelerations at the start of each step, r = ``options.replan_steps``;
     source : "mpc" (this cycle's plan), "shifted" (the previous plan), "brake" (no plan left);
-    compute_time [s] of the cycle; reason : why a fallback was used ("" for "mpc").
+    compute_time [s] of the cycle; reason : why a fallback was used ("" for "mpc");
+    jerk : (r, n) the accelerations' rate of change over each step (None: held constant).
     """
 
     sequence: np.ndarray
     source: Literal["mpc", "shifted", "brake"]
     compute_time: float
     reason: str = ""
+    jerk: np.ndarray | None = None
+
+    @property
+    def jerks(self) -> np.ndarray:
+        """(r, n) jerks of the steps (zeros where the accelerations are held)."""
+        return np.zeros_like(self.sequence) if self.jerk is None else self.jerk
 
     @property
     def qdd(self) -> np.ndarray:
@@ -129,8 +136,10 @@ class MPC:
         n_steps = int(round(options.horizon / options.step))
         t = np.linspace(0.0, n_steps * options.step, n_steps + 1)
         # A placeholder path fixes the problem's shape; the preview arrives as its parameter each step.
+        default = DesiredPath("preview", t, None, modulus=np.zeros(len(t)))
         placeholder = DesiredPath("preview", t, None if model.config.modulus_cost else np.zeros((len(t), 6)),
-                                  weights=weights or (1, 1, 1, 1, 1, 1),
+                                  weights=weights or (along_vertical(default).weights if model.config.aligned
+                                                      else (1, 1, 1, 1, 1, 1)),
                                   modulus=np.zeros(len(t)) if model.config.modulus_cost else None)
         problem_options = ProblemOptions(
             h_u=options.step, substeps=options.substeps, initial="given",
@@ -144,61 +153,71 @@ class MPC:
         self._z_d_next = None  # the desired filter state one step on, from this step's preview
         if options.method == "rti":
             self._qp_data, self._qp = self._real_time_iteration(options.qp_solver)
-        self.plan: tuple[np.ndarray, np.ndarray] | None = None  # node states, controls
+        self.smooth = self.problem.smooth
+        self.plan: tuple[np.ndarray, np.ndarray] | None = None  # accelerations, jerks of the last plan
         self.plan_age = 0
 
     # ------------------------------------------------------------------------------------------
 
     def step(self, state, preview) -> Command:
-        """The commands of the coming cycle from the state (q, qd) and the preview of S_d.
+        """The commands of the coming cycle from the state (q, qd[, qdd]) and the preview of S_d.
 
-        state : where the plan starts: the measured state, or with ``delay`` the state predicted for
+        state : where the plan starts: the measured state (positions, rates and, on a machine with
+            jerk limits, accelerations; zero where not given), or with ``delay`` the state predicted for
             when the plan takes over; preview : a :class:`DesiredPath` starting there, or raw arrays
             ``(t, values)`` with t (K,) [s] from there and values (K, 6) of S_d or (K,) of M_d for
             ``dfs`` (as a predictor may deliver them, NaN included: such a preview is not used).
         """
         start = time.perf_counter()
-        q, qd = (np.asarray(v, dtype=float).reshape(self.model.n) for v in state)
+        q, qd = (np.asarray(v, dtype=float).reshape(self.model.n) for v in state[:2])
+        a = np.asarray(state[2], dtype=float).reshape(self.model.n) if len(state) > 2 else np.zeros_like(q)
+        if not self.smooth:
+            a = np.zeros_like(q)  # the acceleration is a command, not a state
         if self.problem.nz and self.z is None:  # the person has sat still before the run
-            self.z = self.problem.filter.steady_state(self.model.S(q, qd, np.zeros_like(q)))
+            self.z = self.problem.filter.steady_state(self.model.S(q, qd, a))
         t, values = self._preview_arrays(preview)
         reason = self._preview_problem(t, values)
         self._z_d_next = None
         plan = None
         if not reason:
-            plan, success, elapsed = self._solve(q, qd, self._data(t, values))
+            plan, success, elapsed = self._solve(q, qd, a, self._data(t, values))
             if not success:
                 reason, plan = "solver failed", None
             elif elapsed > self.deadline:
                 reason, plan = f"deadline missed ({elapsed * 1e3:.1f} ms > {self.deadline * 1e3:.1f} ms)", None
         r = self.options.replan_steps
-        if plan is not None and self._safe_sequence(q, qd, plan[1][:r]):
+        if plan is not None and self._safe_sequence(q, qd, a, plan[0][:r], plan[1][:r]):
             self.plan, self.plan_age = plan, 0
-            command = Command(plan[1][:r].copy(), "mpc", time.perf_counter() - start)
+            command = Command(plan[0][:r].copy(), "mpc", time.perf_counter() - start, jerk=plan[1][:r].copy())
         else:
             reason = reason or "plan fails the limit check"
-            command = self._fallback(q, qd, reason, start)
+            command = self._fallback(q, qd, a, reason, start)
         if self.problem.nz:
-            self._advance_filters(q, qd, command.sequence)
+            self._advance_filters(q, qd, command)
         return command
 
-    def _advance_filters(self, q, qd, sequence) -> None:
+    def _advance_filters(self, q, qd, command) -> None:
         """Carry the felt filter state over the cycle just commanded, and the desired one with it."""
         prob = self.problem
-        for qdd in sequence:
-            S = self.model.S(*advance(q, qd, qdd, prob.tau_sub[:-1, None]), np.tile(qdd, (prob.m, 1)))
+        s = prob.tau_sub[:-1, None]
+        for qdd, jerk in zip(command.sequence, command.jerks):
+            S = self.model.S(*advance(q, qd, qdd, s, jerk), qdd + jerk * s)
             for row in S:
                 self.z = prob.filter.Ad @ self.z + prob.filter.Bd @ row
-            q, qd = advance(q, qd, qdd, self.options.step)
+            q, qd = advance(q, qd, qdd, self.options.step, jerk)
         # without a usable preview the desired state is unknown: restart from the next preview's steady state
         self.z_d = self._z_d_next
 
     def _preview_arrays(self, preview):
         if isinstance(preview, DesiredPath):
+            preview = self.model.config.cue_path(preview)
             values = preview.M_d if self.model.config.modulus_cost else preview.S_d
             return preview.t, values
         t, values = preview
-        return np.asarray(t, dtype=float), None if values is None else np.asarray(values, dtype=float)
+        values = None if values is None else np.asarray(values, dtype=float)
+        if values is not None and values.ndim == 1 and self.model.config.aligned:
+            values = vertical_force(values)  # a modulus, for a cabin that follows the force
+        return np.asarray(t, dtype=float), values
 
     def _preview_problem(self, t, values) -> str:
         shape = (len(t),) if self.model.config.modulus_cost else (len(t), 6)
@@ -271,27 +290,30 @@ class MPC:
         qp = ca.conic("rti", qp_solver, {"h": qp_data.sparsity_out(0), "a": qp_data.sparsity_out(2)}, options)
         return qp_data, qp
 
-    def _solve(self, q, qd, data):
-        """One warm-started solve from (q, qd); returns ((x, u), success, elapsed seconds)."""
+    def _solve(self, q, qd, a, data):
+        """One warm-started solve from (q, qd, a); returns ((accelerations, jerks), success, elapsed seconds)."""
         prob = self.problem
         n = self.model.n
         if self.plan is not None:
-            _, u_prev = self.plan
-            shift = min(self.plan_age + self.options.replan_steps, len(u_prev) - 1)
-            u = np.vstack([u_prev[shift:], np.repeat(u_prev[-1:], shift, axis=0)])
+            previous, _ = self.plan
+            shift = min(self.plan_age + self.options.replan_steps, len(previous) - 1)
+            u = np.vstack([previous[shift:], np.repeat(previous[-1:], shift, axis=0)])
         else:
             u = np.zeros((prob.N, n))
         u = self._leave_rest(qd, u)
-        x = prob.states_from(q, qd, u, clip=self.options.method != "rti")  # RTI: a consistent point
+        # RTI: a consistent point, not clipped
+        x, controls = prob.guess(q, qd, u, a, clip=self.options.method != "rti")
         lbx, ubx = prob.lbx.copy(), prob.ubx.copy()
         lbx[:n], ubx[:n] = q, q
         lbx[n:2 * n], ubx[n:2 * n] = qd, qd
+        if self.smooth:
+            lbx[2 * n:3 * n], ubx[2 * n:3 * n] = a, a
         if prob.nz:
-            x[:, 2 * n:] = self.z
-            lbx[2 * n:prob.nx], ubx[2 * n:prob.nx] = self.z, self.z
+            x[:, prob.n_motion:] = self.z
+            lbx[prob.n_motion:prob.nx], ubx[prob.n_motion:prob.nx] = self.z, self.z
         start = time.perf_counter()
         p = np.asarray(data).ravel(order="F")
-        w = prob.pack(x, u)
+        w = prob.pack(x, controls)
         if self.options.method == "rti":
             H, gradient, A, g = self._qp_data(w, p)
             g = np.asarray(g).ravel()
@@ -303,7 +325,10 @@ class MPC:
             success = bool(prob.solver.stats()["success"])
             w = sol["x"]
         elapsed = time.perf_counter() - start
-        return prob.unpack(w), success, elapsed
+        x, controls = prob.unpack(w)
+        if self.smooth:
+            return (x[:-1, 2 * n:3 * n], controls), success, elapsed
+        return (controls, np.zeros_like(controls)), success, elapsed
 
     def _leave_rest(self, qd, u) -> np.ndarray:
         """The seed ``u`` (N, n), with a spin-up of the yaw where it would otherwise stay still.
@@ -327,42 +352,66 @@ class MPC:
         u[:, k] = (1.0 if qd[k] >= 0 else -1.0) * self.options.spin_up * self.limits.acceleration[k]
         return u
 
-    def _safe(self, q, qd, qdd) -> bool:
+    def _safe(self, q, qd, qdd, jerk) -> bool:
         """Every limit over the coming step with this command, to the independent check's tolerance."""
-        return float(np.max(np.asarray(self._limit_use(q, qd, qdd)))) <= 1.0 + TOLERANCE
+        return float(np.max(np.asarray(self._limit_use(q, qd, qdd, jerk)))) <= 1.0 + TOLERANCE
 
-    def _safe_sequence(self, q, qd, sequence) -> bool:
-        """:meth:`_safe` for every step of a sequence of accelerations, from (q, qd) on."""
-        for qdd in sequence:
-            if not self._safe(q, qd, qdd):
+    def _safe_sequence(self, q, qd, a, sequence, jerks) -> bool:
+        """:meth:`_safe` for every step of a sequence of accelerations and jerks, from (q, qd, a) on;
+        with jerk limits each step must also start at the acceleration the last one ended with."""
+        h = self.options.step
+        for qdd, jerk in zip(sequence, jerks):
+            if self.smooth and np.any(np.abs(qdd - a) > TOLERANCE * self.limits.acceleration):
                 return False
-            q, qd = advance(q, qd, qdd, self.options.step)
+            if not self._safe(q, qd, qdd, jerk):
+                return False
+            q, qd = advance(q, qd, qdd, h, jerk)
+            a = qdd + jerk * h
         return True
 
-    def _fallback(self, q, qd, reason: str, start: float) -> Command:
-        r = self.options.replan_steps
-        if self.plan is not None and self.plan_age + 2 * r <= len(self.plan[1]):
+    def _fallback(self, q, qd, a, reason: str, start: float) -> Command:
+        r, h = self.options.replan_steps, self.options.step
+        if self.plan is not None and self.plan_age + 2 * r <= len(self.plan[0]):
             self.plan_age += r
-            sequence = self.plan[1][self.plan_age:self.plan_age + r]
-            if self._safe_sequence(q, qd, sequence):
-                return Command(sequence.copy(), "shifted", time.perf_counter() - start, reason)
+            window = slice(self.plan_age, self.plan_age + r)
+            sequence, jerks = self.plan[0][window], self.plan[1][window]
+            if self._safe_sequence(q, qd, a, sequence, jerks):
+                return Command(sequence.copy(), "shifted", time.perf_counter() - start, reason, jerks.copy())
         self.plan = None
-        sequence = []
+        sequence, jerks = [], []
         for _ in range(r):
-            sequence.append(self.brake(q, qd))
-            q, qd = advance(q, qd, sequence[-1], self.options.step)
-        return Command(np.array(sequence), "brake", time.perf_counter() - start, reason)
+            qdd, jerk = self.brake(q, qd, a)
+            sequence.append(qdd)
+            jerks.append(jerk)
+            q, qd = advance(q, qd, qdd, h, jerk)
+            a = qdd + jerk * h
+        return Command(np.array(sequence), "brake", time.perf_counter() - start, reason, np.array(jerks))
 
-    def brake(self, q, qd) -> np.ndarray:
-        """The strongest deceleration towards rest (at most ``braking`` x the acceleration limit, not
-        past zero rate within the step) that keeps every limit over the step; scaled down until safe."""
-        lim, h = self.limits, self.options.step
-        full = -np.sign(qd) * np.minimum(self.options.braking * lim.acceleration, np.abs(qd) / h)
+    def brake(self, q, qd, a=None) -> tuple[np.ndarray, np.ndarray]:
+        """The step's (acceleration, jerk) towards rest that keeps every limit over the step.
+
+        Without jerk limits: the strongest deceleration (at most ``braking`` x the acceleration limit,
+        not past zero rate within the step), scaled down until safe. With them: the acceleration turns
+        from ``a`` at most at the jerk limit towards a deceleration proportional to the rate, -qd / T,
+        with T the time the jerk limit needs to build up the braking deceleration and lose it again
+        (so the rate comes to rest without overshoot), at most ``braking`` x the acceleration limit; the
+        jerk is scaled down until safe.
+        """
+        lim, h, braking = self.limits, self.options.step, self.options.braking
+        if not self.smooth:
+            full = -np.sign(qd) * np.minimum(braking * lim.acceleration, np.abs(qd) / h)
+            for scale in (1.0, 0.75, 0.5, 0.25, 0.1, 0.0):
+                if self._safe(q, qd, scale * full, np.zeros_like(qd)):
+                    return scale * full, np.zeros_like(qd)
+            return np.zeros_like(qd), np.zeros_like(qd)  # holding: the last resort (the check reports any excess)
+        a = np.zeros_like(qd) if a is None else np.asarray(a, dtype=float)
+        T = 2.0 * braking * lim.acceleration / lim.jerk + h
+        target = np.clip(-qd / T, -braking * lim.acceleration, braking * lim.acceleration)
+        full = np.clip((target - a) / h, -lim.jerk, lim.jerk)
         for scale in (1.0, 0.75, 0.5, 0.25, 0.1, 0.0):
-            qdd = scale * full
-            if self._safe(q, qd, qdd):
-                return qdd
-        return np.zeros_like(qd)  # holding: the last resort (the independent check reports any excess)
+            if self._safe(q, qd, a, scale * full):
+                return a, scale * full
+        return a, full  # the last resort (the independent check reports any excess)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -447,6 +496,7 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
     grid.
     """
     step = options.mpc.step
+    path = model.config.cue_path(path)
     q0, qd0 = options.start(model.n)
     controller = MPC(model, options.mpc, weights=path.weights)
     loop = closed_loop(controller, path, predictor(options.predictor, options.reference), q0=q0, qd0=qd0)

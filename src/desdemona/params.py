@@ -42,6 +42,8 @@ _UNITS: dict[str, dict[str, float]] = {
     "linear_velocity": {"m_s": 1.0},
     "angular_acceleration": {"rad_s2": 1.0, "deg_s2": _DEG},
     "linear_acceleration": {"m_s2": 1.0},
+    "angular_jerk": {"rad_s3": 1.0, "deg_s3": _DEG},
+    "linear_jerk": {"m_s3": 1.0},
     "torque": {"N_m": 1.0, "kN_m": 1e3},
     "force": {"N": 1.0, "kN": 1e3},
     "power": {"W": 1.0, "kW": 1e3, "MW": 1e6},
@@ -53,6 +55,7 @@ _JOINT_QUANTITIES = {
     "position": ("angle", "length"),
     "velocity": ("angular_velocity", "linear_velocity"),
     "acceleration": ("angular_acceleration", "linear_acceleration"),
+    "jerk": ("angular_jerk", "linear_jerk"),
     "torque": ("torque", None),
     "force": (None, "force"),
     "power": ("power", "power"),
@@ -74,6 +77,8 @@ class JointLimits:
     velocity, acceleration : symmetric bounds [rad/s | m/s], [rad/s^2 | m/s^2].
     effort : torque [N*m] of a revolute joint or force [N] of a prismatic one.
     power : bound on |effort * velocity| [W].
+    jerk : symmetric bound on the rate of change of the acceleration [rad/s^3 | m/s^3]; inf where the
+        parameter set gives none (the thesis' toy set): the joint's acceleration may then step.
     """
 
     name: str
@@ -83,6 +88,7 @@ class JointLimits:
     acceleration: float
     effort: float
     power: float
+    jerk: float = math.inf
 
 
 @dataclass(frozen=True)
@@ -141,6 +147,11 @@ class MachineParams:
         return np.array([j.acceleration for j in self.joints])
 
     @property
+    def jerk_max(self) -> np.ndarray:
+        """(6,) jerk bounds [rad/s^3 | m/s^3]; inf where the set gives none."""
+        return np.array([j.jerk for j in self.joints])
+
+    @property
     def effort_max(self) -> np.ndarray:
         return np.array([j.effort for j in self.joints])
 
@@ -162,7 +173,8 @@ class MachineParams:
             "joints": {j.name: {"kind": j.kind,
                                 "position": None if j.position is None else list(j.position),
                                 "velocity": j.velocity, "acceleration": j.acceleration,
-                                "effort": j.effort, "power": j.power} for j in self.joints},
+                                "effort": j.effort, "power": j.power,
+                                "jerk": None if math.isinf(j.jerk) else j.jerk} for j in self.joints},
             "bodies": {b.name: {"mass_kg": b.mass, "com_m": list(b.com),
                                 "inertia_kg_m2": [list(r) for r in b.inertia]} for b in self.bodies},
         }
@@ -316,15 +328,15 @@ def _parse_joint(table: dict, where: str, index: int) -> dict[str, Any]:
         w = f"{where}.{key}"
         quantity, unit = _split_key(key, _JOINT_QUANTITIES)
         if not quantity:
-            raise ParameterError(f"{w}: unknown key; valid: position, velocity, acceleration, "
+            raise ParameterError(f"{w}: unknown key; valid: position, velocity, acceleration, jerk, "
                                  f"{'torque' if col == 0 else 'force'}, power (each with a unit suffix)")
         qkind = _JOINT_QUANTITIES[quantity][col]
         if qkind is None:
             other = "torque_N_m or torque_kN_m" if col == 0 else "force_N or force_kN"
             raise ParameterError(f"{w}: a {kind} joint has a {'torque' if col == 0 else 'force'} limit, "
                                  f"write {other}")
-        if quantity == "position" and value == "unbounded":
-            out["position"] = None
+        if quantity in ("position", "jerk") and value == "unbounded":
+            out[quantity] = None if quantity == "position" else math.inf
             continue
         factor = _unit_factor(w, quantity, qkind, unit, value)
         if quantity == "position":
@@ -396,6 +408,12 @@ def _build(merged: dict[str, Any], source: str) -> MachineParams:
         if missing:
             raise ParameterError(f"{source}: joints.{name}: missing {', '.join(missing)}")
         joints.append(JointLimits(name=name, kind=JOINT_KINDS[i], **table))
+    bounded = [j.name for j in joints if math.isfinite(j.jerk)]
+    if bounded and len(bounded) < len(joints):
+        free = ", ".join(j.name for j in joints if not math.isfinite(j.jerk))
+        raise ParameterError(f"{source}: joints.{free.split(',')[0]}: jerk is unbounded while "
+                             f"{', '.join(bounded)} have jerk limits; give every joint a jerk limit "
+                             f"(jerk_deg_s3, jerk_rad_s3 or jerk_m_s3) or none ({free} have none)")
     bodies = []
     for name in BODY_NAMES:
         table = merged["bodies"].get(name, {})

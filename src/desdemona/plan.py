@@ -1,9 +1,15 @@
-"""A joint plan: piecewise-constant accelerations from an initial state (thesis 4.2, 5.3).
+"""A joint plan: piecewise-linear (or piecewise-constant) accelerations from an initial state (thesis 4.2, 5.3).
 
-Every optimiser and controller of desdemona commands the free joints' accelerations qdd, held over
-the intervals of a control grid. Between two nodes the motion is then the exact double integral::
+Every optimiser and controller of desdemona commands the free joints' accelerations over the intervals
+of a control grid: on interval k the acceleration starts at ``u[k]`` and changes at the constant jerk
+``jerk[k]``. Between two nodes the motion is then the exact triple integral::
 
-    q(t_k + s) = q_k + qd_k s + qdd_k s^2 / 2,    qd(t_k + s) = qd_k + qdd_k s.
+    q(t_k + s) = q_k + qd_k s + u_k s^2 / 2 + j_k s^3 / 6,    qd(t_k + s) = qd_k + u_k s + j_k s^2 / 2,
+    qdd(t_k + s) = u_k + j_k s.
+
+On a machine with jerk limits the accelerations are continuous, u[k + 1] = u[k] + jerk[k] h_k, and the
+jerk is bounded everywhere; without them (the thesis' setting, section 5.3) jerk is zero and the
+accelerations are held constant per interval, stepping at the nodes.
 
 :func:`advance` is the one place this formula lives; it takes floats, NumPy arrays and CasADi symbols
 alike, so the optimisers' transcription, the MPC's limit check, the plant simulation and the
@@ -19,22 +25,45 @@ from dataclasses import dataclass
 import numpy as np
 
 
-def advance(q, qd, qdd, s):
-    """Position and rate after ``s`` seconds with ``qdd`` held: the exact double integral.
+def advance(q, qd, qdd, s, jerk=None):
+    """Position and rate after ``s`` seconds from acceleration ``qdd`` changing at ``jerk`` (held
+    constant where ``jerk`` is None): the exact integral.
 
-    q, qd, qdd : (n,) or broadcastable arrays [rad | m, /s, /s^2], or CasADi expressions; s [s].
-    Returns (q + qd s + qdd s^2 / 2, qd + qdd s).
+    q, qd, qdd, jerk : (n,) or broadcastable arrays [rad | m, /s, /s^2, /s^3], or CasADi expressions;
+    s [s]. Returns (q + qd s + qdd s^2 / 2 + jerk s^3 / 6, qd + qdd s + jerk s^2 / 2).
     """
-    return q + qd * s + 0.5 * qdd * s * s, qd + qdd * s
+    if jerk is None:
+        return q + qd * s + 0.5 * qdd * s * s, qd + qdd * s
+    return q + qd * s + 0.5 * qdd * s * s + jerk * (s * s * s / 6.0), qd + qdd * s + 0.5 * jerk * s * s
 
 
-def node_states(q0, qd0, u, h) -> tuple[np.ndarray, np.ndarray]:
-    """Positions and rates (N + 1, n) at the nodes of accelerations ``u`` (N, n) held for ``h`` [s]
-    each (a scalar, or (N, 1) steps), from (q0, qd0): the intervals' :func:`advance` summed up."""
+def node_states(q0, qd0, u, h, jerk=None) -> tuple[np.ndarray, np.ndarray]:
+    """Positions and rates (N + 1, n) at the nodes of accelerations ``u`` (N, n) starting each
+    interval of ``h`` [s] (a scalar, or (N, 1) steps), changing at ``jerk`` (N, n) or held where it is
+    None, from (q0, qd0): the intervals' :func:`advance` summed up."""
     u = np.asarray(u, dtype=float)
-    qd = np.vstack([qd0, qd0 + np.cumsum(u * h, axis=0)])
-    steps, _ = advance(0.0, qd[:-1], u, h)
+    jerk = np.zeros_like(u) if jerk is None else np.asarray(jerk, dtype=float)
+    _, dqd = advance(0.0, 0.0, u, h, jerk)
+    qd = np.vstack([qd0, qd0 + np.cumsum(dqd, axis=0)])
+    steps, _ = advance(0.0, qd[:-1], u, h, jerk)
     return np.vstack([q0, q0 + np.cumsum(steps, axis=0)]), qd
+
+
+def ramp(accelerations, h, a0=None, jerk_max=None) -> tuple[np.ndarray, np.ndarray]:
+    """Continuous accelerations that follow ``accelerations`` (N, n), one target per interval of ``h``
+    [s]: each interval ramps from where the last one ended towards its target at a jerk of at most
+    ``jerk_max`` (n,) (exactly onto it where the limit allows). Returns the interval-start
+    accelerations (N, n) and jerks (N, n) of a :class:`Plan`; a0 : (n,) the acceleration at the start
+    (default the first target, reached at once)."""
+    targets = np.asarray(accelerations, dtype=float)
+    a = targets[0].copy() if a0 is None else np.asarray(a0, dtype=float).copy()
+    limit = np.inf if jerk_max is None else np.asarray(jerk_max, dtype=float)
+    starts, jerks = np.empty_like(targets), np.empty_like(targets)
+    for k, target in enumerate(targets):
+        starts[k] = a
+        jerks[k] = np.clip((target - a) / h, -limit, limit)
+        a = a + jerks[k] * h
+    return starts, jerks
 
 
 def start_state(state, n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -42,31 +71,47 @@ def start_state(state, n: int) -> tuple[np.ndarray, np.ndarray]:
     (zeros) where ``state`` is None. A clear error unless both are n finite numbers."""
     if state is None:
         return np.zeros(n), np.zeros(n)
-    q0, qd0 = (np.asarray(v, dtype=float).reshape(-1) for v in state)
+    q0, qd0 = (np.asarray(v, dtype=float).reshape(-1) for v in state[:2])
     if q0.shape != (n,) or qd0.shape != (n,) or not (np.all(np.isfinite(q0)) and np.all(np.isfinite(qd0))):
         raise ValueError(f"an initial state needs {n} finite positions and {n} finite rates, one per free joint")
     return q0, qd0
 
 
+def start_acceleration(state, n: int) -> np.ndarray:
+    """(n,) accelerations of a start ``state`` = (positions, rates[, accelerations]) of n joints: its
+    third entry where it has one, else zero (a machine at rest, or moving steadily)."""
+    if state is None or len(state) < 3:
+        return np.zeros(n)
+    a0 = np.asarray(state[2], dtype=float).reshape(-1)
+    if a0.shape != (n,) or not np.all(np.isfinite(a0)):
+        raise ValueError(f"an initial state's accelerations must be {n} finite numbers, one per free joint")
+    return a0
+
+
 @dataclass(frozen=True, eq=False)
 class Plan:
-    """Accelerations ``u`` held per interval of ``t_nodes`` from the state (q0, qd0).
+    """Accelerations ``u`` at the start of each interval of ``t_nodes``, changing at ``jerk`` over it,
+    from the state (q0, qd0).
 
     t_nodes : (N + 1,) control grid [s]; q0, qd0 : (n,) initial positions and rates of the free joints;
-    u : (N, n) joint accelerations, u[k] held from t_nodes[k] to t_nodes[k + 1].
+    u : (N, n) joint accelerations at t_nodes[k]; jerk : (N, n) their constant rate of change until
+    t_nodes[k + 1], or None for accelerations held constant over each interval (zero jerk).
     """
 
     t_nodes: np.ndarray
     q0: np.ndarray
     qd0: np.ndarray
     u: np.ndarray
+    jerk: np.ndarray | None = None
 
     def __post_init__(self):
-        for name in ("t_nodes", "q0", "qd0", "u"):
+        if self.jerk is None:
+            object.__setattr__(self, "jerk", np.zeros_like(np.asarray(self.u, dtype=float)))
+        for name in ("t_nodes", "q0", "qd0", "u", "jerk"):
             object.__setattr__(self, name, np.asarray(getattr(self, name), dtype=float))
-        if self.u.ndim != 2 or len(self.t_nodes) != len(self.u) + 1:
-            raise ValueError(f"a plan needs (N + 1,) nodes and (N, n) accelerations, got "
-                             f"{self.t_nodes.shape} and {self.u.shape}")
+        if self.u.ndim != 2 or len(self.t_nodes) != len(self.u) + 1 or self.jerk.shape != self.u.shape:
+            raise ValueError(f"a plan needs (N + 1,) nodes and (N, n) accelerations and jerks, got "
+                             f"{self.t_nodes.shape}, {self.u.shape} and {self.jerk.shape}")
 
     @property
     def n(self) -> int:
@@ -79,7 +124,13 @@ class Plan:
 
     def nodes(self) -> tuple[np.ndarray, np.ndarray]:
         """Positions and rates (N + 1, n) at the nodes, accumulated exactly."""
-        return node_states(self.q0, self.qd0, self.u, np.diff(self.t_nodes)[:, None])
+        return node_states(self.q0, self.qd0, self.u, np.diff(self.t_nodes)[:, None], self.jerk)
+
+    def acceleration_jumps(self) -> np.ndarray:
+        """(N - 1, n) steps of the acceleration at the inner nodes: the next interval's start minus
+        where this one ends (zero for a plan with continuous accelerations)."""
+        ends = self.u + self.jerk * np.diff(self.t_nodes)[:, None]
+        return self.u[1:] - ends[:-1]
 
     def at(self, times) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Positions, rates and accelerations (K, n) at ``times`` (K,) [s].
@@ -90,9 +141,9 @@ class Plan:
         q_nodes, qd_nodes = self.nodes()
         times = np.asarray(times, dtype=float)
         k = np.clip(np.searchsorted(self.t_nodes, times, side="right") - 1, 0, len(self.u) - 1)
-        qdd = self.u[k]
-        q, qd = advance(q_nodes[k], qd_nodes[k], qdd, (times - self.t_nodes[k])[:, None])
-        return q, qd, qdd
+        s = (times - self.t_nodes[k])[:, None]
+        q, qd = advance(q_nodes[k], qd_nodes[k], self.u[k], s, self.jerk[k])
+        return q, qd, self.u[k] + self.jerk[k] * s
 
     def states(self) -> np.ndarray:
         """Node states (N + 1, 2n): positions then rates."""

@@ -9,10 +9,13 @@ desired S_d::
 or, for the ``dfs`` configuration, the modulus error (M - M_d)^2 of eq. 7.3; with a perception model
 (chapter 6) the error is taken between the *perceived* S and S_d.
 
-Transcription: direct multiple shooting on a control grid h_u, controls qdd held constant per interval
-(thesis 4.2, 5.3). The states are (q, qd) of the free joints; with qdd as the control the state
-equation is the double integrator, whose solution over an interval is exact in closed form,
-q(t) = q_k + qd_k t + qdd_k t^2 / 2. The gap constraints are therefore *linear* and exact: no
+Transcription: direct multiple shooting on a control grid h_u (thesis 4.2, 5.3). On a machine with
+jerk limits (every built-in one but the thesis' toy set) the states are (q, qd, qdd) of the free joints
+and the controls their jerks j, held constant per interval: the accelerations are continuous and
+piecewise linear, and |j| <= j_max holds everywhere. Without jerk limits (the thesis' setting) the
+states are (q, qd) and the controls qdd, held constant per interval. Either way the state equation is
+a chain of integrators, whose solution over an interval is exact in closed form,
+q(t) = q_k + qd_k t + qdd_k t^2 / 2 + j_k t^3 / 6. The gap constraints are therefore *linear* and exact: no
 integration error at all, the nonlinearity sits where it belongs, in S and in the torque and power
 limits (tau from inverse dynamics, eq. A.26). We chose multiple shooting over collocation because of
 this: collocation would add variables to approximate a trajectory that is known exactly. With a
@@ -23,15 +26,17 @@ Each control interval is divided into ``substeps`` sub-steps (by default the sam
 cost is integrated on them (trapezoid rule on the one-sided values inside the interval, so the jump of
 S where qdd jumps is respected) and every limit is enforced on them: positions (quadratic in t) at each
 sub-step point, backed off by qdd_max h^2 / 8, which bounds the bulge between two points, so position
-limits hold for all t; velocities are linear in t and accelerations constant, so bounds at the nodes
-hold for all t; torques and power are enforced at every sub-step point with a small relative back-off
+limits hold for all t; accelerations are linear in t (or constant), so bounds at the nodes hold for all
+t; velocities are quadratic in t (or linear), and their bounds at the nodes are backed off by
+j_max h_u^2 / 8, the bulge of such a parabola; jerks are bounds on the controls; torques and power are enforced at every sub-step point with a small relative back-off
 (``margin``), and the independent check of :mod:`desdemona.simulate` verifies them on a 10x finer grid.
 
 Regularisation ``rho``: a full-scale joint acceleration held for the whole path costs rho (m/s^2)^2,
 equivalent to an RMS error of sqrt(rho); the default 1e-4 (0.01 m/s^2, well below the 0.17 m/s^2
 perception threshold) never trades a felt cue for effort, but removes the flat directions of the
 cost (joints that do not change S in the weighted channels), which makes the Hessian regular and the
-optimum unique.
+optimum unique. With jerk limits the jerk gets the same weight against its own limit, so that a plan
+does not swing its accelerations where the cue gains nothing from it.
 """
 
 from __future__ import annotations
@@ -46,7 +51,7 @@ import numpy as np
 
 from desdemona import guard
 from desdemona.perception import VestibularModel
-from desdemona.plan import Plan, advance, node_states, start_state
+from desdemona.plan import Plan, advance, node_states, ramp, start_acceleration, start_state
 from desdemona.model import Model
 from desdemona.profiles import DesiredPath
 
@@ -91,6 +96,7 @@ class ProblemOptions:
         change neither the optimum nor, measured, the iteration count: None leaves them out on
         configurations of more than three joints. Every other term (cost, gaps, positions,
         braking) stays exact.
+    jerk_weight : the rho of the jerk, against j_max (with jerk limits); None: as ``regularisation``.
     unweighted : weight of the channels of S that Q leaves at zero, in the cost only (RMS figures keep
         Q). With it, joints that move only unweighted channels (on ``full``, the gimbals turning the
         cabin about the felt force) stop being flat directions of the cost. None: 0.01 on
@@ -115,6 +121,7 @@ class ProblemOptions:
     initial_filter: Literal["steady", "given"] = "steady"
     limit_curvature: bool | None = None
     unweighted: float | None = None
+    jerk_weight: float | None = None
 
     def __post_init__(self):
         if not (math.isfinite(self.h_u) and self.h_u > 0):
@@ -163,10 +170,16 @@ class Solution:
     solve_time: float
     lam_g: np.ndarray = field(repr=False, default=None)
     lam_x: np.ndarray = field(repr=False, default=None)
+    smooth: bool = False
 
     @property
     def n(self) -> int:
         return self.u.shape[1]
+
+    @property
+    def accelerations(self) -> np.ndarray:
+        """(N, n) the joints' accelerations at the start of each interval."""
+        return self.x[:-1, 2 * self.n: 3 * self.n] if self.smooth else self.u
 
     @property
     def q0(self) -> np.ndarray:
@@ -178,8 +191,8 @@ class Solution:
 
     @property
     def plan(self) -> Plan:
-        """The joints' plan: this solution's grid, initial state and accelerations."""
-        return Plan(self.t_nodes, self.q0, self.qd0, self.u)
+        """The joints' plan: this solution's grid, initial state, accelerations and jerks."""
+        return Plan(self.t_nodes, self.q0, self.qd0, self.accelerations, self.u if self.smooth else None)
 
 
 class CueingProblem:
@@ -188,6 +201,7 @@ class CueingProblem:
     def __init__(self, model: Model, path: DesiredPath, options: ProblemOptions = ProblemOptions(),
                  solves: int = 1, parametric: bool = False):
         self.solves, self.parametric = solves, parametric
+        path = model.config.cue_path(path)
         self.model, self.path, self.options = model, path, options
         self.modulus = model.config.modulus_cost
         if not self.modulus and path.S_d is None:
@@ -210,7 +224,9 @@ class CueingProblem:
         self.filter = self.vestibular.discretize(self.h_sub) if self.vestibular else None
         self.nz = self.vestibular.n_states if self.vestibular else 0
         n = model.n
-        self.nx, self.nu = 2 * n + self.nz, n
+        self.smooth = model.limits.smooth
+        self.n_motion = (3 if self.smooth else 2) * n  # (q, qd[, qdd]) lead the state, filters follow
+        self.nx, self.nu = self.n_motion + self.nz, n
         self.monitor = None  # the solver's guard.SolveMonitor, where it has one
         self.stage, self.residual, self.families = self._stage_functions()
         self._build_nlp()
@@ -255,26 +271,28 @@ class CueingProblem:
         lim, margin = self.model.limits, 1.0 - self.options.margin
         x, u = ca.SX.sym("x", self.nx), ca.SX.sym("u", self.nu)
         q, qd = x[:n], x[n:2 * n]
+        a, jerk = (x[2 * n:3 * n], u) if self.smooth else (u, None)
         d = ca.SX.sym("d", (self.m + 1) if self.modulus else (self.m * 6 if self.vestibular else (self.m + 1) * 6))
-        q_next, qd_next = advance(q, qd, u, h_u)
+        q_next, qd_next = advance(q, qd, a, h_u, jerk)
         positions, values, efforts, powers = [], [], [], []
         for j, tj in enumerate(self.tau_sub):
-            qj, qdj = advance(q, qd, u, tj)
-            values.append(fn["modulus"](qj, qdj, u) - d[j] if self.modulus else fn["S"](qj, qdj, u))
-            tau = fn["tau"](qj, qdj, u)
+            qj, qdj = advance(q, qd, a, tj, jerk)
+            aj = a + jerk * tj if self.smooth else a
+            values.append(fn["modulus"](qj, qdj, aj) - d[j] if self.modulus else fn["S"](qj, qdj, aj))
+            tau = fn["tau"](qj, qdj, aj)
             efforts.append(tau / ca.DM(lim.effort * margin))
             powers.append(tau * qdj / ca.DM(lim.power * margin))
             positions.append(qj)
-        residuals, z_next = self._residuals(values, u, x[2 * n:], d)
+        residuals, z_next = self._residuals(values, a, jerk, x[self.n_motion:], d)
         r = ca.vertcat(*residuals)
         residual = ca.Function("stage_residual", [x, u, d], [r], ["x", "u", "d"], ["r"])
         families = self._families(positions, efforts, powers, q_next, qd_next)
         g = ca.vertcat(*[f.expression for f in families])
-        x_next = ca.vertcat(q_next, qd_next, z_next)
+        x_next = ca.vertcat(q_next, qd_next, *([a + jerk * h_u] if self.smooth else []), z_next)
         stage = ca.Function("stage", [x, u, d], [x_next, ca.sumsqr(r), g], ["x", "u", "d"], ["x_next", "L", "g"])
         return stage, residual, families
 
-    def _residuals(self, values, u, z, d) -> tuple[list, ca.SX]:
+    def _residuals(self, values, a, jerk, z, d) -> tuple[list, ca.SX]:
         """The stage's cost as squared residuals, and the filter states at its end.
 
         values : per sub-step point, S (full paths) or M - M_d (modulus paths). A sum of squared
@@ -297,8 +315,12 @@ class CueingProblem:
             for j in range(m):  # zero-order hold of S over each sub-step
                 residuals.append(math.sqrt(h / T) * root_w * (C @ z + D @ values[j] - d[6 * j: 6 * j + 6]))
                 z = A @ z + B @ values[j]
-        rho = self.options.regularisation * self.options.h_u / T
-        residuals.append(math.sqrt(rho) * u / ca.DM(self.model.limits.acceleration))
+        lim, o = self.model.limits, self.options
+        rho = o.regularisation * o.h_u / T
+        residuals.append(math.sqrt(rho) * a / ca.DM(lim.acceleration))
+        if jerk is not None:
+            rho_j = (o.regularisation if o.jerk_weight is None else o.jerk_weight) * o.h_u / T
+            residuals.append(math.sqrt(rho_j) * jerk / ca.DM(lim.jerk))
         return residuals, z
 
     def _families(self, positions, efforts, powers, q_next, qd_next) -> list[Family]:
@@ -370,7 +392,8 @@ class CueingProblem:
         residual = ca.SX(0, 1)
         if self.nz and self.options.initial_filter == "steady":
             n = self.model.n
-            residual = x[2 * n:] - ca.DM(self.filter.steady_gain()) @ self.model.functions["S"](x[:n], x[n:2 * n], u)
+            a = x[2 * n:3 * n] if self.smooth else u
+            residual = x[self.n_motion:] - ca.DM(self.filter.steady_gain()) @ self.model.functions["S"](x[:n], x[n:2 * n], a)
         return ca.Function("initial", [x, u], [residual])
 
     def _derivative_functions(self, w, XU, data) -> dict[str, ca.Function]:
@@ -438,21 +461,31 @@ class CueingProblem:
         n, N, nx, o = self.model.n, self.N, self.nx, self.options
         lim = self.model.limits
         qmin, qmax = self.position_bounds()
-        x_lo = np.r_[qmin, -lim.velocity, np.full(self.nz, -np.inf)]
-        x_hi = np.r_[qmax, lim.velocity, np.full(self.nz, np.inf)]
-        lbx = np.tile(np.r_[x_lo, -lim.acceleration], N)
-        ubx = np.tile(np.r_[x_hi, lim.acceleration], N)
+        if self.smooth:  # a rate is a parabola between nodes: back off by its largest bulge
+            velocity = lim.velocity - lim.jerk * o.h_u**2 / 8.0
+            x_lo = np.r_[qmin, -velocity, -lim.acceleration, np.full(self.nz, -np.inf)]
+            x_hi = np.r_[qmax, velocity, lim.acceleration, np.full(self.nz, np.inf)]
+            control = lim.jerk
+        else:
+            x_lo = np.r_[qmin, -lim.velocity, np.full(self.nz, -np.inf)]
+            x_hi = np.r_[qmax, lim.velocity, np.full(self.nz, np.inf)]
+            control = lim.acceleration
+        lbx = np.tile(np.r_[x_lo, -control], N)
+        ubx = np.tile(np.r_[x_hi, control], N)
         lbx, ubx = np.r_[lbx, x_lo], np.r_[ubx, x_hi]
         last = slice(N * (nx + self.nu), N * (nx + self.nu) + nx)
+        moving = slice(n, self.n_motion)  # rates (and accelerations): zero at rest
         if o.initial in ("rest", "given"):
-            lbx[n:2 * n] = ubx[n:2 * n] = 0.0
+            lbx[moving] = ubx[moving] = 0.0
         if o.initial == "given":
             q0, qd0 = start_state(o.initial_state, n)
             lbx[:n] = ubx[:n] = q0
             lbx[n:2 * n] = ubx[n:2 * n] = qd0
+            if self.smooth:
+                lbx[2 * n:3 * n] = ubx[2 * n:3 * n] = start_acceleration(o.initial_state, n)
         if o.final in ("rest", "centre"):
             lo, hi = lbx[last], ubx[last]  # views into lbx, ubx
-            lo[n:2 * n] = hi[n:2 * n] = 0.0
+            lo[moving] = hi[moving] = 0.0
             if o.final == "centre":
                 prismatic = [k for k, i in enumerate(self.model.config.free)
                              if self.model.params.joints[i].kind == "prismatic"]
@@ -497,19 +530,27 @@ class CueingProblem:
         XU = w[: N * (nx + nu)].reshape(N, nx + nu)
         return np.vstack([XU[:, :nx], w[N * (nx + nu):]]), XU[:, nx:]
 
-    def states_from(self, q0, qd0, u, clip: bool = True) -> np.ndarray:
-        """Node states (N + 1, nx) of a guess: the plan of ``u`` from (q0, qd0) (clipped to the
-        limits with ``clip``), filter states at the steady state of the first S."""
-        lim = self.model.limits
-        q, qd = node_states(q0, qd0, u, self.options.h_u)
+    def guess(self, q0, qd0, accelerations, a0=None, clip: bool = True) -> tuple[np.ndarray, np.ndarray]:
+        """Node states (N + 1, nx) and controls (N, nu) of a guess: the joints following
+        ``accelerations`` (N, n), one per interval, from (q0, qd0) (with jerk limits: ramped from
+        ``a0``, default the first, at most at j_max, :func:`desdemona.plan.ramp`), clipped to the
+        limits with ``clip``; filter states at the steady state of the first S."""
+        lim, h = self.model.limits, self.options.h_u
+        accelerations = np.asarray(accelerations, dtype=float)
+        if self.smooth:
+            starts, u = ramp(accelerations, h, a0, lim.jerk)
+            a = np.vstack([starts, starts[-1] + u[-1] * h])
+        else:
+            starts, u, a = accelerations, accelerations, np.zeros((self.N + 1, 0))
+        q, qd = node_states(q0, qd0, starts, h, u if self.smooth else None)
         if clip:
             qd = np.clip(qd, -lim.velocity, lim.velocity)
             q = np.clip(q, lim.position_min, lim.position_max)
-        x = np.hstack([q, qd])
+        x = np.hstack([q, qd, a])
         if self.nz:
-            S0 = self.model.S(q0, qd0, u[0])
+            S0 = self.model.S(q0, qd0, starts[0])
             x = np.hstack([x, np.tile(self.filter.steady_state(S0), (self.N + 1, 1))])
-        return x
+        return x, u
 
     def solve(self, x_guess: np.ndarray, u_guess: np.ndarray, warm: Solution | None = None) -> Solution:
         """Solve from a guess of node states (N + 1, nx) and controls (N, nu), optionally warm-started
@@ -530,4 +571,4 @@ class CueingProblem:
         return Solution(t_nodes=self.t_nodes.copy(), x=x, u=u, cost=float(sol["f"]), status=status,
                         success=bool(stats["success"]), iterations=int(stats.get("iter_count", -1)),
                         solve_time=elapsed, lam_g=np.asarray(sol["lam_g"]).ravel(),
-                        lam_x=np.asarray(sol["lam_x"]).ravel())
+                        lam_x=np.asarray(sol["lam_x"]).ravel(), smooth=self.smooth)

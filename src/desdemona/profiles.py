@@ -193,6 +193,30 @@ def modulus_version(path: DesiredPath) -> DesiredPath:
                        description=f"modulus of: {path.description}")
 
 
+#: Weight of each rotation channel in the cost of a path built by :func:`along_vertical`, per
+#: (rad/s)^2 against 1 per (m/s^2)^2 of force: 1 rad/s of unwanted rotation costs as much as 0.3 m/s^2
+#: of force error. Low on purpose: in a centrifuge the arm's own turn is a rotation that cannot be
+#: removed, and the modulus comes first; the gimbals still turn the cabin to keep what remains small.
+ALIGNED_ROTATION_WEIGHT = 0.1
+
+
+def along_vertical(path: DesiredPath, rotation_weight: float = ALIGNED_ROTATION_WEIGHT) -> DesiredPath:
+    """A modulus-only path as a full one for a cabin that follows the force (thesis 7.2): the felt force
+    along the occupant's vertical, f_d = (0, 0, M_d) in cabin coordinates (at rest f = (0, 0, G)), and
+    no rotation, omega_d = 0. The modulus stays the path's own."""
+    w = float(rotation_weight)
+    return DesiredPath(path.name, path.t, vertical_force(path.M_d), (w, w, w, 1.0, 1.0, 1.0),
+                       f"{path.description} (force along the occupant's vertical)", path.M_d)
+
+
+def vertical_force(M) -> np.ndarray:
+    """(K, 6) S with the force M (K,) [m/s^2] along cabin +z and no rotation."""
+    M = np.asarray(M, dtype=float)
+    S = np.zeros((len(M), 6))
+    S[:, 5] = M
+    return S
+
+
 def catapult(level: float = 20.0, push: float = 2.0, quiet: float = 1.0, rise: float = 0.2,
              duration: float = 8.0, dt: float = 0.01) -> DesiredPath:
     """A catapult launch from a carrier (section 5.5.2): a quiet start, then ~2 s at ~20 m/s^2 along y.

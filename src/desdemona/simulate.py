@@ -20,7 +20,7 @@ from desdemona.plan import Plan, advance
 from desdemona.profiles import DesiredPath
 
 TOLERANCE = 1e-6
-LIMIT_NAMES = ("position", "velocity", "acceleration", "effort", "power")
+LIMIT_NAMES = ("position", "velocity", "acceleration", "jerk", "effort", "power")
 
 
 class LimitViolation(RuntimeError):
@@ -142,15 +142,35 @@ def limit_use(model: Model, traj: Trajectory) -> dict[str, np.ndarray]:
     }
 
 
+def jerk_use(model: Model, plan: Plan, step: float) -> np.ndarray:
+    """Worst use of the jerk limit per free joint (n,) over a plan, on a grid of ``step`` [s].
+
+    Inside an interval the jerk is the plan's own, constant; a step of the acceleration at a node is a
+    jerk without bound, counted as the jerk that would make that step within one ``step`` of the check's
+    grid. Zero where the machine has no jerk limit.
+    """
+    limit = model.limits.jerk
+    if not np.any(np.isfinite(limit)):
+        return np.zeros(plan.n)
+    jumps = np.abs(plan.acceleration_jumps()) / step
+    worst = np.max(np.abs(plan.jerk), axis=0, initial=0.0)
+    worst = np.maximum(worst, np.max(jumps, axis=0, initial=0.0))
+    return np.where(np.isfinite(limit), worst / limit, 0.0)
+
+
 def check(model: Model, path: DesiredPath, plan: Plan, step: float, fine: int = 10,
           weights=None, perception: VestibularModel | None = None) -> tuple[LimitCheck, Trajectory]:
     """The independent check: re-integrate a plan on a grid ``fine`` times finer than ``step``.
 
+    Every limit of every free joint is measured there, the jerk included (:func:`jerk_use`).
+
     step : the optimiser's finest grid (its sub-step) [s]; weights : diagonal of Q, default the path's.
     Returns the check and the fine-grid trajectory.
     """
+    path = model.config.cue_path(path)
     traj = evaluate_plan(model, path, plan, fine_grid(plan.t_nodes, step / fine), perception)
     use = limit_use(model, traj)
+    use["jerk"] = jerk_use(model, plan, step / fine)
     rms_modulus = float(np.sqrt(np.mean((traj.M - traj.M_d) ** 2)))
     w = np.asarray(weights if weights is not None else path.weights, float)
     rms_channels = rms_perceived = None
@@ -182,14 +202,19 @@ class ClosedLoop:
 
 def closed_loop(controller, path: DesiredPath, predictor, q0=None, qd0=None,
                 duration: float | None = None) -> ClosedLoop:
-    """Run a controller against the plant: each cycle's commanded accelerations are held one step
-    each and integrated exactly (the same model, as the machine's servos follow it).
+    """Run a controller against the plant: each cycle's commands are applied one step each and
+    integrated exactly (the same model, as the machine's servos follow it).
 
-    controller : has ``step((q, qd), preview) -> command`` with ``command.sequence`` (r, n),
+    controller : has ``step((q, qd, qdd), preview) -> command`` with ``command.sequence`` (r, n) the
+        accelerations at the start of each step, ``command.jerk`` (r, n) their rates of change over it,
         ``.source``, ``.compute_time``, ``.reason``, and ``options`` with ``step``, ``horizon``,
         ``period`` (T_c = r steps) and ``delay`` (e.g. :class:`desdemona.online.MPC`);
         predictor : ``predictor(path, now, horizon) -> preview``, e.g. from
         :data:`desdemona.online.PREDICTORS`. Every cycle's compute time is recorded.
+
+    The plant starts at (q0, qd0) with zero acceleration and applies what it is told: a command whose
+    acceleration does not start where the last one ended is a step of acceleration, which the
+    independent check reports on a machine with jerk limits.
 
     With ``delay`` (thesis 7.1, figure 7.2) the plan computed in the cycle that starts at t is applied
     from t + T_c: the controller is given the state predicted for then (the commands of the running
@@ -201,29 +226,32 @@ def closed_loop(controller, path: DesiredPath, predictor, q0=None, qd0=None,
     steps = int(math.floor((duration or path.duration) / h + 1e-9))
     q = np.zeros(n) if q0 is None else np.asarray(q0, float).copy()
     qd = np.zeros(n) if qd0 is None else np.asarray(qd0, float).copy()
+    a = np.zeros(n)
     start_q, start_qd = q.copy(), qd.copy()
-    u, starts, sources, times, reasons = [], [], [], [], []
-    pending = np.zeros((r, n))  # with delay: the commands of the running cycle
+    u, jerks, starts, sources, times, reasons = [], [], [], [], [], []
+    pending = (np.zeros((r, n)), np.zeros((r, n)))  # with delay: the commands of the running cycle
     for k in range(0, steps, r):
         now = k * h
         if o.delay:
-            q_next, qd_next = q, qd
-            for qdd in pending:
-                q_next, qd_next = advance(q_next, qd_next, qdd, h)
-            command = controller.step((q_next, qd_next), _later(predictor(path, now, o.horizon + o.period), o.period))
-            sequence, pending = pending, command.sequence
+            state = (q, qd, a)
+            for qdd, jerk in zip(*pending):
+                state = (*advance(state[0], state[1], qdd, h, jerk), qdd + jerk * h)
+            command = controller.step(state, _later(predictor(path, now, o.horizon + o.period), o.period))
+            (sequence, jerk_sequence), pending = pending, (command.sequence, command.jerks)
         else:
-            command = controller.step((q, qd), predictor(path, now, o.horizon))
-            sequence = command.sequence
+            command = controller.step((q, qd, a), predictor(path, now, o.horizon))
+            sequence, jerk_sequence = command.sequence, command.jerks
         starts.append(now)
         sources.append(command.source)
         times.append(command.compute_time)
         reasons.append(command.reason)
-        for qdd in sequence[:steps - k]:
+        for qdd, jerk in list(zip(sequence, jerk_sequence))[:steps - k]:
             u.append(qdd)
-            q, qd = advance(q, qd, qdd, h)
-    return ClosedLoop(Plan(np.arange(len(u) + 1) * h, start_q, start_qd, np.array(u)), np.array(starts),
-                      tuple(sources), np.array(times), tuple(reasons))
+            jerks.append(jerk)
+            q, qd = advance(q, qd, qdd, h, jerk)
+            a = qdd + jerk * h
+    return ClosedLoop(Plan(np.arange(len(u) + 1) * h, start_q, start_qd, np.array(u), np.array(jerks)),
+                      np.array(starts), tuple(sources), np.array(times), tuple(reasons))
 
 
 def _later(preview, offset: float):
