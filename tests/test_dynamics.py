@@ -77,7 +77,7 @@ def test_full_model_equals_pinocchio(params, head_offset):
         np.testing.assert_allclose(S[k, 3:], f, rtol=1e-10, atol=1e-9)
 
 
-@pytest.mark.parametrize("config", ["dfs", "yaw-track", "yaw-track-cabin", "full"])
+@pytest.mark.parametrize("config", ["dfs", "dfs-yaw", "yaw-track", "yaw-track-cabin", "full"])
 def test_mass_matrix_symmetric_positive_definite(params, config):
     model = Model(params, config)
     q, _, _ = random_states(model, 100, seed=13)
@@ -119,7 +119,7 @@ def test_power_balance(params, gravity):
     np.testing.assert_allclose(dE, power, rtol=1e-6, atol=1e-6 * np.abs(power).max())
 
 
-@pytest.mark.parametrize("config", ["dfs", "yaw-track", "yaw-track-cabin", "full"])
+@pytest.mark.parametrize("config", ["dfs", "dfs-yaw", "yaw-track", "yaw-track-cabin", "full"])
 def test_forward_dynamics_inverts_inverse_dynamics(params, config):
     model = Model(params, config)
     q, qd, qdd = random_states(model, 100, seed=16)
@@ -143,7 +143,7 @@ def test_gravity_acts_through_heave_and_offset_cabin(params):
 
 def test_configuration_rows_equal_full_model_with_held_joints_at_rest(params):
     """A reduced model is the full eq. A.26 with held joints fixed, rows of the free joints."""
-    for name in ("dfs", "yaw-track", "yaw-track-cabin"):
+    for name in ("dfs", "dfs-yaw", "yaw-track", "yaw-track-cabin"):
         model = Model(params, name)
         cfg = model.config
         q, qd, qdd = random_states(model, 30, seed=17)

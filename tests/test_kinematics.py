@@ -44,7 +44,7 @@ def test_appendix_B_path_at_100_random_states(toy):
 
 def test_dfs_modulus_eq_7_7(params):
     """q2 = -4 m: at constant yaw rate M = sqrt((4 w^2)^2 + g^2); yaw acceleration adds (4 qdd1)^2."""
-    model = Model(params, "dfs")
+    model = Model(params, "dfs-yaw")
     g = params.gravity
     for w in (0.0, 0.5, 1.3, 2.7):
         np.testing.assert_allclose(model.modulus(0.2, w, 0.0), np.sqrt((4 * w**2) ** 2 + g**2), rtol=1e-14)
@@ -55,7 +55,7 @@ def test_dfs_modulus_eq_7_7(params):
 
 def test_gimbal_alignment_puts_specific_force_on_cabin_z(params):
     """With the gimbals of :func:`gimbal_alignment`, the dfs cabin feels (0, 0, M) (chapter 7)."""
-    dfs = Model(params, "dfs")
+    dfs = Model(params, "dfs-yaw")
     rng = np.random.default_rng(7)
     for _ in range(20):
         q1, q1d, q1dd = rng.uniform(-3, 3), rng.uniform(-2.5, 2.5), rng.uniform(-0.8, 0.8)
@@ -81,7 +81,7 @@ def test_head_offset_adds_rigid_body_terms(params):
     np.testing.assert_allclose(S1[:3], S0[:3], atol=1e-15)
 
 
-@pytest.mark.parametrize("config", ["dfs", "yaw-track", "yaw-track-cabin", "full"])
+@pytest.mark.parametrize("config", ["dfs", "dfs-yaw", "yaw-track", "yaw-track-cabin", "full"])
 def test_float_and_casadi_evaluations_agree(params, config):
     model = Model(params, config)
     q, qd, qdd = random_states(model, 20, seed=3)

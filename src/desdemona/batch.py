@@ -91,7 +91,7 @@ def validate(jobs: list[Job], params: MachineParams, options: OptimizeOptions, o
         if job.profile not in paths:
             paths[job.profile] = profiles.load(job.profile)
         path = paths[job.profile]
-        if not config.modulus_cost and path.S_d is None:
+        if not config.takes_modulus and path.S_d is None:
             raise profiles.ProfileError(f"{job.profile}: gives only the modulus t,M; configuration "
                                         f"{config.name!r} needs the full path t,wx,wy,wz,fx,fy,fz")
         if not options.problem.h_u <= path.duration:

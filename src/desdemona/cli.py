@@ -303,7 +303,7 @@ def _run_inputs(args):
         raise UserError(f"{out}: cannot create it: the folder {parent} does not exist")
     if not os.access(parent, os.W_OK):
         raise UserError(f"{out}: cannot create it: {parent} is not a writable folder")
-    if not model.config.modulus_cost and path.S_d is None:
+    if not model.config.takes_modulus and path.S_d is None:
         raise UserError(f"configuration {model.config.name!r} needs a full path t,wx,wy,wz,fx,fy,fz; "
                         f"{args.profile} gives only the modulus (use --config dfs)")
     return model, path, out
@@ -332,7 +332,7 @@ def _run_optimize(args) -> int:
         path, session = _session(args, model, path)
         perception = perception_models.get_model(args.perception) if args.perception else None
         problem = ProblemOptions(h_u=args.h_u, solver=args.method, perception=perception, **session)
-    size = sizing.check_fits(path, model.config, problem, args.workers)
+    size = sizing.check_fits(path, model.config, problem, args.workers, model.limits.smooth)
     unreachable = sizing.unreachable(path, model)
     progress = None if args.quiet else _Progress(args.starts, size, path, model.config)
     with guard.reporting(None if progress is None else progress.solving, PROGRESS_EVERY):

@@ -45,6 +45,11 @@ class Configuration:
     description: str
     aligned: bool = False
 
+    @property
+    def takes_modulus(self) -> bool:
+        """A path that gives only the modulus M_d can be followed (``dfs``, ``dfs-yaw``)."""
+        return self.modulus_cost or self.aligned
+
     def cue_path(self, path):
         """The desired path this configuration follows: ``path`` itself, or for an aligned
         configuration and a modulus-only path, the modulus along cabin +z with no rotation

@@ -104,7 +104,7 @@ class Result:
     def to_dataframe(self):
         """The trajectory as a pandas DataFrame indexed by time (needs pandas: ``pip install
         'desdemona[dataframe]'``); the columns of ``trajectory.csv``."""
-        return trajectory_dataframe(self.trajectory, self.model.config.joint_names)
+        return trajectory_dataframe(self.trajectory, self.model.config)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -245,7 +245,7 @@ def optimize(path: DesiredPath, model: Model, options: OptimizeOptions = Optimiz
     """
     wall = time.perf_counter()
     path = model.config.cue_path(path)
-    sizing.check_fits(path, model.config, options.problem, options.workers)
+    sizing.check_fits(path, model.config, options.problem, options.workers, model.limits.smooth)
     build = time.perf_counter()
     full, rough = _problems(model, path, options)
     build = time.perf_counter() - build

@@ -27,6 +27,7 @@ tests all call it.
 from __future__ import annotations
 
 import functools
+import math
 import time
 from dataclasses import dataclass
 from typing import Literal
@@ -63,7 +64,10 @@ class MPCOptions:
     through this vestibular model (chapter 6): the controller then carries the filter states of what
     the person has felt and of what they should have felt from step to step; spin_up : fraction of
     the yaw's acceleration limit with which a still yaw is seeded (see :meth:`MPC._leave_rest`), 0 to
-    switch it off."""
+    switch it off; jerk_weight : as in :class:`desdemona.problem.ProblemOptions`; tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon
+    (None: ``step`` throughout). A coarse tail keeps the horizon's reach at a fraction of the work:
+    what the plan does in a second matters only through where it leaves the machine, and it is
+    re-planned long before then."""
 
     horizon: float = 2.0
     step: float = 0.02
@@ -80,6 +84,9 @@ class MPCOptions:
     qp_solver: str = "hpipm"
     perception: VestibularModel | None = None
     spin_up: float = 0.2
+    tail_step: float | None = 0.1
+    fine: float = 0.4
+    jerk_weight: float = 1.0
 
     def __post_init__(self):
         if not (self.step > 0 and self.horizon >= 2 * self.step):
@@ -98,6 +105,20 @@ class MPCOptions:
     def replan_steps(self) -> int:
         """Steps of a plan applied before the next plan takes over."""
         return int(round(self.period / self.step))
+
+    def grid(self) -> np.ndarray:
+        """The plan's interval lengths [s] over the horizon: ``step`` for the first ``fine`` seconds
+        (at least the re-plan period and one step more), then ``tail_step`` (evened out to end exactly
+        at the horizon); uniform with a perception model, whose filters are discretised for one step."""
+        total = int(round(self.horizon / self.step))
+        if self.tail_step is None or self.tail_step <= self.step or self.perception is not None:
+            return np.full(total, self.step)
+        fine = min(total, max(int(round(self.fine / self.step)), self.replan_steps + 1))
+        rest = self.horizon - fine * self.step
+        if rest <= 1e-9:
+            return np.full(fine, self.step)
+        count = max(1, int(math.ceil(rest / self.tail_step - 1e-9)))
+        return np.r_[np.full(fine, self.step), np.full(count, rest / count)]
 
 
 @dataclass(frozen=True)
@@ -133,8 +154,8 @@ class MPC:
     def __init__(self, model: Model, options: MPCOptions = MPCOptions(), weights=None):
         self.model, self.options = model, options
         self.deadline = options.deadline if options.deadline is not None else options.period
-        n_steps = int(round(options.horizon / options.step))
-        t = np.linspace(0.0, n_steps * options.step, n_steps + 1)
+        steps = options.grid()
+        t = np.r_[0.0, np.cumsum(steps)]
         # A placeholder path fixes the problem's shape; the preview arrives as its parameter each step.
         default = DesiredPath("preview", t, None, modulus=np.zeros(len(t)))
         placeholder = DesiredPath("preview", t, None if model.config.modulus_cost else np.zeros((len(t), 6)),
@@ -145,7 +166,8 @@ class MPC:
             h_u=options.step, substeps=options.substeps, initial="given",
             initial_state=(np.zeros(model.n), np.zeros(model.n)), regularisation=options.regularisation,
             margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6,
-            stoppable=True, braking=options.braking, perception=options.perception, initial_filter="given")
+            stoppable=True, braking=options.braking, perception=options.perception, initial_filter="given",
+            steps=None if np.all(steps == options.step) else tuple(steps), jerk_weight=options.jerk_weight)
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         self.limits = model.limits
         self._limit_use = model.step_limit_use(options.step)
@@ -199,7 +221,7 @@ class MPC:
     def _advance_filters(self, q, qd, command) -> None:
         """Carry the felt filter state over the cycle just commanded, and the desired one with it."""
         prob = self.problem
-        s = prob.tau_sub[:-1, None]
+        s = prob.fractions[:-1, None] * self.options.step
         for qdd, jerk in zip(command.sequence, command.jerks):
             S = self.model.S(*advance(q, qd, qdd, s, jerk), qdd + jerk * s)
             for row in S:
@@ -235,17 +257,17 @@ class MPC:
         prob = self.problem
         times = prob.sub_times()  # relative to now: the placeholder starts at 0
         if self.model.config.modulus_cost:
-            return np.interp(times, t, values).T
+            return prob.with_steps(np.interp(times, t, values).T)
         S_d = np.column_stack([np.interp(times.ravel(), t, values[:, i]) for i in range(6)])
         if prob.nz == 0:
-            return S_d.reshape(prob.N, -1).T
+            return prob.with_steps(S_d.reshape(prob.N, -1).T)
         # perceived desired path over the horizon, from the desired filter state carried so far
-        held = S_d.reshape(prob.N, prob.m + 1, 6)[:, :-1, :].reshape(-1, 6)
+        held = S_d.reshape(prob.N, len(prob.fractions), 6)[:, :prob.m, :].reshape(-1, 6)
         if self.z_d is None:
             self.z_d = prob.filter.steady_state(held[0])
         y_d, states = prob.filter.simulate(held, self.z_d)
         self._z_d_next = states[prob.m * self.options.replan_steps]  # after this cycle's sub-steps
-        return y_d.reshape(prob.N, -1).T
+        return prob.with_steps(y_d.reshape(prob.N, -1).T)
 
     def _real_time_iteration(self, qp_solver: str):
         """The Gauss-Newton QP of one real-time iteration, as a data Function and a conic solver.
@@ -295,9 +317,7 @@ class MPC:
         prob = self.problem
         n = self.model.n
         if self.plan is not None:
-            previous, _ = self.plan
-            shift = min(self.plan_age + self.options.replan_steps, len(previous) - 1)
-            u = np.vstack([previous[shift:], np.repeat(previous[-1:], shift, axis=0)])
+            u = self._shifted_plan(prob)
         else:
             u = np.zeros((prob.N, n))
         u = self._leave_rest(qd, u)
@@ -330,6 +350,17 @@ class MPC:
             return (x[:-1, 2 * n:3 * n], controls), success, elapsed
         return (controls, np.zeros_like(controls)), success, elapsed
 
+    def _shifted_plan(self, prob: CueingProblem) -> np.ndarray:
+        """(N, n) the previous plan's accelerations from now on, on the problem's grid: at each
+        interval's end with jerk limits (what the ramp of :meth:`CueingProblem.guess` aims at), at its
+        start without; held at the last value past the plan's end, within the limits."""
+        accelerations, jerks = self.plan
+        previous = Plan(prob.t_nodes, np.zeros(self.model.n), np.zeros(self.model.n), accelerations, jerks)
+        now = (self.plan_age + self.options.replan_steps) * self.options.step
+        times = now + (prob.t_nodes[1:] if self.smooth else prob.t_nodes[:-1])
+        at = previous.at(np.minimum(times, prob.t_nodes[-1]))[2]
+        return np.clip(at, -self.limits.acceleration, self.limits.acceleration)
+
     def _leave_rest(self, qd, u) -> np.ndarray:
         """The seed ``u`` (N, n), with a spin-up of the yaw where it would otherwise stay still.
 
@@ -345,7 +376,7 @@ class MPC:
         if 0 not in self.model.config.free or self.options.spin_up == 0.0:
             return u
         k = self.model.config.free.index(0)
-        rates = qd[k] + np.cumsum(u[:, k]) * self.options.step
+        rates = qd[k] + np.cumsum(u[:, k] * self.problem.steps)
         if np.any(np.abs(rates) >= REST_RATE):
             return u
         u = u.copy()
@@ -483,7 +514,7 @@ class OnlineResult:
         """The trajectory as a pandas DataFrame indexed by time (needs pandas)."""
         from desdemona.report import trajectory_dataframe
 
-        return trajectory_dataframe(self.trajectory, self.model.config.joint_names)
+        return trajectory_dataframe(self.trajectory, self.model.config)
 
 
 def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions()) -> OnlineResult:

@@ -54,15 +54,16 @@ def ramp(accelerations, h, a0=None, jerk_max=None) -> tuple[np.ndarray, np.ndarr
     [s]: each interval ramps from where the last one ended towards its target at a jerk of at most
     ``jerk_max`` (n,) (exactly onto it where the limit allows). Returns the interval-start
     accelerations (N, n) and jerks (N, n) of a :class:`Plan`; a0 : (n,) the acceleration at the start
-    (default the first target, reached at once)."""
+    (default the first target, reached at once); h may also be (N,) or (N, 1) steps."""
     targets = np.asarray(accelerations, dtype=float)
+    steps = np.broadcast_to(np.asarray(h, dtype=float).reshape(-1, 1), (len(targets), 1))
     a = targets[0].copy() if a0 is None else np.asarray(a0, dtype=float).copy()
     limit = np.inf if jerk_max is None else np.asarray(jerk_max, dtype=float)
     starts, jerks = np.empty_like(targets), np.empty_like(targets)
     for k, target in enumerate(targets):
         starts[k] = a
-        jerks[k] = np.clip((target - a) / h, -limit, limit)
-        a = a + jerks[k] * h
+        jerks[k] = np.clip((target - a) / steps[k], -limit, limit)
+        a = a + jerks[k] * steps[k]
     return starts, jerks
 
 

@@ -26,6 +26,7 @@ import numpy as np
 
 from desdemona import figures, guard
 from desdemona._version import __version__
+from desdemona.params import JOINT_NAMES
 from desdemona.simulate import Trajectory
 
 CHANNELS = ("wx", "wy", "wz", "fx", "fy", "fz")
@@ -78,12 +79,20 @@ def versions() -> dict[str, str]:
             "scipy": scipy.__version__, "casadi": casadi.__version__}
 
 
-def trajectory_table(traj: Trajectory, joint_names) -> tuple[list[str], np.ndarray]:
-    """Column names and values (K, columns) of trajectory.csv."""
+def trajectory_table(traj: Trajectory, config) -> tuple[list[str], np.ndarray]:
+    """Column names and values (K, columns) of trajectory.csv.
+
+    config : the result's :class:`~desdemona.configs.Configuration`. Positions, rates and accelerations
+    are given for all six joints, the held ones at their fixed positions and at rest, so that the file
+    drives the whole machine; torques and power for the free joints (a held joint's brake is not a
+    motor limit, section 5.5).
+    """
     names, columns = ["t"], [traj.t[:, None]]
-    for label, values in (("q", traj.q), ("qd", traj.qd), ("qdd", traj.qdd), ("tau", traj.tau),
-                          ("power", traj.power)):
-        names += [f"{label}_{j}" for j in joint_names]
+    for label, values, held in (("q", traj.q, "position"), ("qd", traj.qd, "zero"), ("qdd", traj.qdd, "zero")):
+        names += [f"{label}_{j}" for j in JOINT_NAMES]
+        columns.append(config.expand(values, held))
+    for label, values in (("tau", traj.tau), ("power", traj.power)):
+        names += [f"{label}_{j}" for j in config.joint_names]
         columns.append(values)
     names += list(CHANNELS)
     columns.append(traj.S)
@@ -143,11 +152,11 @@ def write(result, out_dir: str | Path, command: str | None = None, overwrite: bo
         "parameters": result.model.params.to_dict(),
         "versions": versions(),
     }
-    return write_folder(result.trajectory, summary, result.model.config.joint_names, out_dir, overwrite,
+    return write_folder(result.trajectory, summary, result.model.config, out_dir, overwrite,
                         protect=protect)
 
 
-def write_folder(traj: Trajectory, summary: dict, joint_names, out_dir: str | Path, overwrite: bool = False,
+def write_folder(traj: Trajectory, summary: dict, config, out_dir: str | Path, overwrite: bool = False,
                  extra=None, protect=()) -> Path:
     """Write trajectory.csv, summary.json, trajectory.mat and the figures into ``out_dir`` atomically.
 
@@ -173,7 +182,7 @@ def write_folder(traj: Trajectory, summary: dict, joint_names, out_dir: str | Pa
         umask = os.umask(0)
         os.umask(umask)
         os.chmod(tmp, 0o777 & ~umask)  # mkdtemp makes it private (0700); a result is an ordinary folder
-        names, table = trajectory_table(traj, joint_names)
+        names, table = trajectory_table(traj, config)
         with open(tmp / "trajectory.csv", "w") as fh:
             fh.write(f"# {UNITS}\n{','.join(names)}\n")
             np.savetxt(fh, table, delimiter=",", fmt="%.10g")
@@ -250,7 +259,7 @@ def command_line() -> str:
 
 
 
-def trajectory_dataframe(traj: Trajectory, joint_names):
+def trajectory_dataframe(traj: Trajectory, config):
     """A pandas DataFrame of a trajectory with the columns of trajectory.csv, indexed by t [s].
 
     pandas is an optional extra (``pip install 'desdemona[dataframe]'``), not a dependency.
@@ -259,7 +268,7 @@ def trajectory_dataframe(traj: Trajectory, joint_names):
         import pandas
     except ImportError:
         raise ImportError("a DataFrame needs pandas: pip install 'desdemona[dataframe]'") from None
-    names, table = trajectory_table(traj, joint_names)
+    names, table = trajectory_table(traj, config)
     return pandas.DataFrame(table[:, 1:], index=pandas.Index(table[:, 0], name="t"), columns=names[1:])
 
 
@@ -310,5 +319,5 @@ def write_online(result, out_dir: str | Path, command: str | None = None, overwr
                 fh.write(f"{t:.6g},{c:.6g},{s},\"{r}\"\n")
         figures.draw_online(result, folder)
 
-    return write_folder(result.trajectory, summary, result.model.config.joint_names, out_dir, overwrite, extra,
+    return write_folder(result.trajectory, summary, result.model.config, out_dir, overwrite, extra,
                         protect=protect)

@@ -75,20 +75,23 @@ def _per_interval(n: int, options: ProblemOptions) -> float:
     return per * (PERCEPTION_FACTOR if options.perception else 1.0)
 
 
-def estimate(path: DesiredPath, config: Configuration, options: ProblemOptions, workers: int = 1) -> Size:
+def estimate(path: DesiredPath, config: Configuration, options: ProblemOptions, workers: int = 1,
+             smooth: bool = True) -> Size:
     """The size of the off-line problem of ``path`` on ``config`` solved with ``options`` by ``workers``
-    processes (each holds its own solver)."""
+    processes (each holds its own solver); ``smooth``: the machine limits jerk (the accelerations are
+    states too)."""
     intervals = max(1, int(round(path.duration / options.h_u)))
     n = config.n
-    nx = 2 * n + (9 if options.perception else 0)  # perception filters: at most 9 states (canals, otoliths)
+    nx = (3 if smooth else 2) * n + (9 if options.perception else 0)  # perception filters: at most 9 states (canals, otoliths)
     variables = intervals * (nx + n) + nx
     memory = BASE_BYTES + SAFETY * intervals * _per_interval(n, options) * max(1, workers)
     return Size(intervals, variables, memory, available_memory())
 
 
-def check_fits(path: DesiredPath, config: Configuration, options: ProblemOptions, workers: int = 1) -> Size:
+def check_fits(path: DesiredPath, config: Configuration, options: ProblemOptions, workers: int = 1,
+               smooth: bool = True) -> Size:
     """:func:`estimate`, raising :class:`TooLarge` when the problem would not fit in memory."""
-    size = estimate(path, config, options, workers)
+    size = estimate(path, config, options, workers, smooth)
     if size.fits:
         return size
     per_interval = (size.memory - BASE_BYTES) / size.intervals
@@ -146,15 +149,15 @@ def unreachable(path: DesiredPath, model: Model) -> dict:
     """Parts of the desired path no trajectory of ``model``'s configuration can give, by construction.
 
     Returns {"below_g": ..., "above_steady_limit": ...}, each None or {"share_of_time": fraction of the
-    path's duration, "worst_m_s2": the most extreme desired modulus, "limit_m_s2": the bound}. On
-    ``dfs`` every sample below g counts; elsewhere (the heave can drop for a moment) and for the upper
+    path's duration, "worst_m_s2": the most extreme desired modulus, "limit_m_s2": the bound}. Where the
+    heave is held (``dfs``) every sample below g counts; elsewhere (the heave can drop for a moment) and for the upper
     bound, the desired modulus averaged over :data:`STEADY_WINDOW` seconds.
     """
     g = float(model.params.gravity)
     t = path.t
     M = path.M_d
     steady = _moving_mean(t, M, STEADY_WINDOW)
-    low = (M if model.config.modulus_cost else steady) < g * (1.0 - 1e-6)
+    low = (M if 2 not in model.config.free else steady) < g * (1.0 - 1e-6)  # without the heave: always
     limit = steady_modulus_limit(model)
     high = steady > limit * (1.0 + 1e-6)
     return {"below_g": _share(t, M, low, g, np.min), "above_steady_limit": _share(t, M, high, limit, np.max)}
