@@ -147,12 +147,16 @@ def jerk_use(model: Model, plan: Plan, step: float) -> np.ndarray:
 
     Inside an interval the jerk is the plan's own, constant; a step of the acceleration at a node is a
     jerk without bound, counted as the jerk that would make that step within one ``step`` of the check's
-    grid. Zero where the machine has no jerk limit.
+    grid; so is the first acceleration of a plan that starts at rest (a machine at rest does not
+    accelerate). Zero where the machine has no jerk limit.
     """
     limit = model.limits.jerk
     if not np.any(np.isfinite(limit)):
         return np.zeros(plan.n)
-    jumps = np.abs(plan.acceleration_jumps()) / step
+    jumps = plan.acceleration_jumps()
+    if not np.any(plan.qd0):
+        jumps = np.vstack([plan.u[:1], jumps])
+    jumps = np.abs(jumps) / step
     worst = np.max(np.abs(plan.jerk), axis=0, initial=0.0)
     worst = np.maximum(worst, np.max(jumps, axis=0, initial=0.0))
     return np.where(np.isfinite(limit), worst / limit, 0.0)

@@ -1,0 +1,100 @@
+"""Jerk limits (issue 14): parameters, continuous plans, the check, the off-line and on-line optimisers."""
+
+import math
+
+import numpy as np
+import pytest
+
+from desdemona import profiles
+from desdemona.model import Model
+from desdemona.online import MPC, MPCOptions
+from desdemona.params import ParameterError, load_params
+from desdemona.plan import Plan, advance, ramp
+from desdemona.problem import CueingProblem, ProblemOptions
+from desdemona.simulate import check
+
+
+def test_jerk_limits_load_with_units_and_must_be_all_or_none(params, toy, tmp_path):
+    assert params.jerk_max[0] == pytest.approx(math.radians(180.0))
+    assert params.jerk_max[1] == 20.0
+    assert np.all(np.isinf(toy.jerk_max))
+    good = tmp_path / "j.toml"
+    good.write_text("[joints.track]\njerk_m_s3 = 12.5\n")
+    assert load_params(good).jerk_max[1] == 12.5
+    wrong_unit = tmp_path / "w.toml"
+    wrong_unit.write_text("[joints.track]\njerk_deg_s3 = 10\n")
+    with pytest.raises(ParameterError, match="jerk"):
+        load_params(wrong_unit)
+    partial = tmp_path / "p.toml"
+    partial.write_text('[joints.yaw]\njerk = "unbounded"\n')
+    with pytest.raises(ParameterError, match="give every joint a jerk limit"):
+        load_params(partial)
+
+
+def test_cubic_advance_and_plan_match_the_closed_form():
+    """Constant jerk j from (q0, qd0, a0): q = q0 + qd0 t + a0 t^2/2 + j t^3/6."""
+    q, qd = advance(1.0, 2.0, 3.0, 0.5, 4.0)
+    assert q == pytest.approx(1.0 + 1.0 + 0.375 + 4.0 * 0.125 / 6.0)
+    assert qd == pytest.approx(2.0 + 1.5 + 0.5)
+    u, jerk = ramp(np.array([[1.0], [1.0], [0.0], [0.0]]), 0.1, a0=[0.0], jerk_max=[5.0])
+    np.testing.assert_allclose(jerk.ravel(), [5.0, 5.0, -5.0, -5.0])
+    plan = Plan(np.arange(5) * 0.1, [0.0], [0.0], u, jerk)
+    np.testing.assert_allclose(plan.acceleration_jumps(), 0.0, atol=1e-15)
+    # the rate is the integral of a piecewise-linear acceleration: 0.5 * (sum of trapezoids)
+    _, qd_end, a_end = plan.at([0.4])
+    assert a_end[0, 0] == pytest.approx(0.0, abs=1e-12)
+    assert qd_end[0, 0] == pytest.approx(0.1 * (0.25 + 0.75 + 0.75 + 0.25))
+
+
+def test_check_reports_a_step_of_acceleration_as_a_jerk_violation(params):
+    model = Model(params, "dfs-yaw")
+    path = profiles.dfs_catapult(duration=1.0)
+    t = np.arange(51) * 0.02
+    from_rest = Plan(t, [0.0], [0.0], np.full((50, 1), 0.2))  # 0.2 rad/s^2 from the first instant
+    result, _ = check(model, path, from_rest, step=0.02)
+    assert result.worst["jerk"] > 1.0 and not result.passed
+    u = np.full((50, 1), 0.2)
+    u[25:] = 0.1  # a step half-way
+    result, _ = check(model, path, Plan(t, [0.0], [1.0], u), step=0.02)
+    assert result.worst["jerk"] > 1.0 and not result.passed
+    u, jerk = ramp(np.full((50, 1), 0.2), 0.02, a0=[0.0], jerk_max=model.limits.jerk)
+    result, _ = check(model, path, Plan(t, [0.0], [1.0], u, jerk), step=0.02)
+    assert result.worst["jerk"] == pytest.approx(1.0) and result.passed
+    toy = Model(load_params(base="thesis-toy"), "yaw-track")  # no jerk limits: steps are allowed
+    result, _ = check(toy, profiles.cosine(duration=1.0), Plan(t, [0.0, 0.0], [0.0, 0.0], np.full((50, 2), 0.1)), step=0.02)
+    assert result.worst["jerk"] == 0.0
+
+
+def test_offline_plan_from_rest_is_continuous_and_within_the_jerk_limit(params):
+    model = Model(params, "dfs-yaw")
+    problem = CueingProblem(model, profiles.dfs_catapult(duration=4.0), ProblemOptions(h_u=0.05, initial="rest"))
+    assert problem.smooth and problem.nx == 3
+    x, u = problem.guess(np.zeros(1), np.zeros(1), np.full((problem.N, 1), 0.5), np.zeros(1))
+    sol = problem.solve(x, u)
+    assert sol.success
+    plan = sol.plan
+    assert plan.u[0, 0] == 0.0  # from rest: no acceleration at t = 0 either
+    np.testing.assert_allclose(plan.acceleration_jumps(), 0.0, atol=1e-9)
+    assert np.max(np.abs(plan.jerk)) <= model.limits.jerk[0] * (1 + 1e-6)
+    result, _ = check(model, problem.path, plan, problem.h_sub)
+    assert result.passed
+
+
+def test_mpc_commands_continue_the_acceleration_and_the_brake_ramps(params):
+    model = Model(params, "dfs-yaw")
+    mpc = MPC(model, MPCOptions(horizon=1.0))
+    preview = profiles.dfs_catapult(duration=2.0)
+    a = np.array([0.3])
+    command = mpc.step((np.zeros(1), np.array([1.0]), a), preview)
+    assert command.source == "mpc"
+    assert command.sequence[0, 0] == pytest.approx(a[0])  # starts where the machine's acceleration is
+    assert abs(command.jerks[0, 0]) <= model.limits.jerk[0] * (1 + 1e-9)
+    qdd, jerk = mpc.brake(np.zeros(1), np.array([2.0]), np.array([0.5]))
+    assert qdd[0] == 0.5 and jerk[0] == pytest.approx(-model.limits.jerk[0])  # turns towards braking at the limit
+
+
+def test_mpc_grid_is_fine_near_now_and_coarse_beyond():
+    grid = MPCOptions(horizon=2.0, step=0.02, tail_step=0.1, fine=0.4).grid()
+    assert grid.sum() == pytest.approx(2.0)
+    assert np.all(grid[:20] == 0.02) and np.allclose(grid[20:], 0.1) and len(grid) == 36
+    assert np.all(MPCOptions(horizon=2.0, step=0.02, tail_step=None).grid() == 0.02)
