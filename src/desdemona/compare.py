@@ -74,7 +74,7 @@ def rows(entries) -> list[tuple[str, str, list]]:
     """
     table = [(name, "", [_info(e.summary, keys) for e in entries]) for name, keys in INFO_ROWS]
     per_entry = [{name: (unit, value) for name, unit, value in e.metrics.rows()} for e in entries]
-    groups = (*metrics.Metrics.CHANNEL_FIELDS, *metrics.Metrics.JOINT_FIELDS, "modulus")
+    groups = metrics.Metrics.ROW_GROUPS
     order = sorted(dict.fromkeys(name for values in per_entry for name in values),
                    key=lambda name: groups.index(name.split()[0]))  # stable: joints in their order
     for name in order:

@@ -4,9 +4,13 @@
   figures 5.7-5.16 (a)); ``joints.png`` joint positions and rates ((b), (c)); ``limits.png``
   normalised force/torque and power with the +-1 limit lines ((d), (e)); for a modulus path
   ``modulus.png``, M_d against M and their difference (figure 7.3 (a), (b)); with perception
-  ``perceived.png``.
-- :func:`draw_online`: ``online.png`` (like thesis figures 7.5/7.6, with the classical loop) and
-  ``compute_time.png`` (compute time per cycle against the deadline).
+  ``perceived.png``; ``felt.png`` (:func:`draw_felt`).
+- :func:`draw_online`: ``online.png`` (like thesis figures 7.5/7.6, with the classical loop),
+  ``online_felt.png`` (:func:`draw_felt` of the MPC beside the classical loop) and ``compute_time.png``
+  (compute time per cycle against the deadline).
+- :func:`draw_felt`: what the occupant feels beyond the path (issue 14): the felt-direction error [deg]
+  and the felt rotation per canal channel [deg/s] over time, with their thresholds
+  (:mod:`desdemona.metrics` defines both), one column per trajectory.
 - :func:`draw_comparison`: overlays of several result folders (``desdemona compare``).
 - :func:`plot_bode`: Bode diagrams of a vestibular model (thesis figures 6.4, 6.6).
 
@@ -19,8 +23,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import math
+
 import numpy as np
 
+from desdemona import perception
 from desdemona.perception import THRESHOLDS
 
 CHANNEL_LABELS = ("omega_x [rad/s]", "omega_y [rad/s]", "omega_z [rad/s]",
@@ -126,7 +133,53 @@ def draw_result(traj, summary: dict, out_dir: str | Path) -> list[Path]:
     if traj.S_perc is not None:
         paths.append(_save(channels(traj.S_d_perc, traj.S_perc, ("perceived S_d", "perceived S"), "C1--",
                                     bands=THRESHOLDS), out / "perceived.png", title))
+    paths.append(draw_felt([traj], [None], out / "felt.png",
+                           _vestibular((summary.get("quality") or {}).get("vestibular_model")), title))
     return paths
+
+
+def _vestibular(name) -> perception.VestibularModel:
+    """The perception model a result's metrics used, by its name; the thesis' where unknown (None, or a
+    summary written before the name was kept)."""
+    return perception.get_model(name) if name in perception.MODELS else perception.thesis_model()
+
+
+def draw_felt(trajectories, labels, path: str | Path, vestibular: perception.VestibularModel | None = None,
+              title: str | None = None) -> Path:
+    """What the occupant feels beyond the path, one column per trajectory, to a PNG; returns its path.
+
+    Top: the felt-direction error [deg] (:func:`desdemona.metrics.direction_error`: the angle of f to
+    the desired force, or to cabin +z where the path gives only the modulus) with its assumed threshold.
+    Bottom: |felt rotation| [deg/s] per canal channel (:func:`desdemona.metrics.felt_rotation`) with
+    each channel's threshold in its colour. trajectories : :class:`desdemona.simulate.Trajectory`
+    (several, e.g. the MPC and the classical loop, share their axes' scales); labels : a title per
+    column (None: none); vestibular : default the thesis' model.
+    """
+    from desdemona import metrics
+
+    vestibular = perception.thesis_model() if vestibular is None else vestibular
+    thresholds = np.degrees(np.asarray(vestibular.thresholds, float))
+    tilt = math.degrees(metrics.direction_threshold(vestibular.thresholds))
+    fig = _figure(figsize=(5.5 * len(trajectories) + 1.5, 6.5))
+    axes = fig.subplots(2, len(trajectories), sharex=True, sharey="row", squeeze=False)
+    for (top, bottom), traj, label in zip(axes.T, trajectories, labels):
+        f_d = None if traj.S_d is None else traj.S_d[:, 3:]
+        direction = np.degrees(metrics.direction_error(traj.S[:, 3:], f_d))
+        rotation = np.degrees(metrics.felt_rotation(traj.S, traj.S_d, metrics.step_of(traj.t), vestibular))
+        top.plot(traj.t, direction, "C0", lw=1.2, label="angle of f to " + ("cabin +z" if f_d is None else "f_d"))
+        top.axhline(tilt, color="r", lw=0.8, ls=":", label=f"threshold {tilt:.2g} deg (assumed)")
+        if label:
+            top.set_title(label)
+        for i in range(3):
+            bottom.plot(traj.t, np.abs(rotation[:, i]), f"C{i}", lw=1.1, label=f"|felt {CHANNEL_LABELS[i][:7]}|")
+            bottom.axhline(thresholds[i], color=f"C{i}", lw=0.8, ls=":", label=f"threshold {thresholds[i]:.2g} deg/s")
+        bottom.set_xlabel("t [s]")
+        for ax in (top, bottom):
+            ax.grid(alpha=0.3)
+            ax.legend(fontsize=8, loc="upper right")
+    axes[0, 0].set_ylabel("felt direction error [deg]")
+    axes[1, 0].set_ylabel(f"felt rotation [deg/s]\n({vestibular.name} canals)")
+    return _save(fig, Path(path), title)
 
 
 def _weights(summary: dict):
@@ -165,7 +218,11 @@ def draw_online(result, out_dir: str | Path) -> list[Path]:
     for ax in axes[2]:
         _limit_lines(ax)
         ax.set_xlabel("t [s]")
-    paths = [_save(fig, out / "online.png", f"{result.path.name} on-line, {result.model.config.name}")]
+    title = f"{result.path.name} on-line, {result.model.config.name}"
+    paths = [_save(fig, out / "online.png", title)]
+    runs = [traj] if classical is None else [traj, classical]
+    paths.append(draw_felt(runs, ["MPC", "classical loop"][:len(runs)], out / "online_felt.png",
+                           _vestibular(result.quality.vestibular), title))
     fig = _figure(figsize=(8, 4))
     ax = fig.subplots()
     ax.hist(result.loop.compute_times * 1e3, bins=50)

@@ -37,6 +37,25 @@ Definitions (S, S_d : (K, 6) on a time grid t : (K,) [s]; channels wx, wy, wz [r
   1e-6 around zero is: both matter little beside the chatter this is meant to show.
 - Joint rates at t[0] (a session starts at rest: all zero).
 - Modulus ``M = |f|`` against ``M_d`` (the dfs configuration, eq. 7.1, 7.2): RMS, correlation, lag.
+- Felt-direction error (issue 14): per sample the angle [rad; deg where reported] between the felt
+  specific force f = S[:, 3:6] and the desired direction, that of f_d = S_d[:, 3:6] on a full path,
+  else (a modulus-only path, S_d None: the dfs configuration) the occupant's vertical, cabin +z, along
+  which a level cabin at rest feels f = (0, 0, +g). Computed as ``atan2(|f x d|, f . d)`` (accurate
+  near 0 and 180 deg); undefined (NaN) where |f| or |d| is below :data:`NO_FORCE`, and left out of
+  the statistics there. Its RMS and peak over the defined samples, and the share of them [%] at or
+  above :func:`direction_threshold`. That threshold is our assumption, not a published tilt threshold:
+  a tilt of f by an angle a puts ``|f| sin a`` on a lateral otolith axis, so we take the angle at
+  which that reaches the lateral otolith threshold at 1 g, ``asin(0.17 / 9.81)`` = 0.99 deg with
+  Reid & Nahon's thresholds (the vestibular model's own thresholds are used).
+- Felt rotation (issue 14): the cabin's angular velocity S[:, :3] minus the desired S_d[:, :3] (zero
+  where S_d is None: no rotation is wanted from a modulus path) through the semicircular-canal channels
+  of the vestibular model, i.e. the canal part of the perceived error above, also for modulus paths.
+  Per channel (wx, wy, wz) its RMS and peak ``max |.|`` [rad/s; deg/s where reported] and the share of
+  time [%] at or above the channel's threshold (:data:`perception.THRESHOLDS`). The thesis' canals
+  (eq. 6.3) are a high-pass with a lead: a step of angular velocity W is felt as a spike of up to 12 W
+  within a few ms (the zero at tau_L = 0.11 s against the poles at 5 and 2 ms), then as about
+  0.98 W exp(-t / 5.9 s). The cabin's own angular velocity is continuous (joint rates are), so the
+  spike shows only where S_d steps.
 """
 
 from __future__ import annotations
@@ -49,7 +68,7 @@ import scipy.signal
 
 from desdemona import perception
 from desdemona.params import default_params
-from desdemona.profiles import PATH_COLUMNS
+from desdemona.profiles import G, PATH_COLUMNS
 
 #: Names of S's channels, as in a path CSV's header (and trajectory.csv). Not imported from report, which
 #: sits above this module in the data flow and may import it.
@@ -60,6 +79,8 @@ LAG_WINDOW = 2.0
 #: |qdd| below this [rad/s^2 | m/s^2] counts as zero for sign changes (as in felt_check.py).
 DEADBAND = 1e-6
 CHANNEL_UNITS = ("rad/s",) * 3 + ("m/s^2",) * 3
+#: |f| below this [m/s^2] has no direction (free fall): the felt-direction error is undefined there.
+NO_FORCE = 1e-6
 
 
 def rms(x) -> np.ndarray:
@@ -157,7 +178,7 @@ def perceived_difference(S, S_d, dt: float, vestibular: perception.VestibularMod
 
 
 def time_above_threshold(difference, thresholds=perception.THRESHOLDS) -> np.ndarray:
-    """Share of samples [%] per channel in which |difference| (K, 6) is at or above its threshold (6,)."""
+    """Share of samples [%] per channel in which |difference| (K, m) is at or above its threshold (m,)."""
     return 100.0 * (1.0 - np.mean(perception.below_threshold(difference, thresholds), axis=0))
 
 
@@ -168,6 +189,49 @@ def peak_false_cue(S, S_d, thresholds=perception.THRESHOLDS) -> np.ndarray:
     quiet = perception.below_threshold(S_d, thresholds)
     error = np.where(quiet, np.abs(S - S_d), -np.inf).max(axis=0)
     return np.where(quiet.any(axis=0), error, np.nan)
+
+
+def direction_error(f, f_d=None) -> np.ndarray:
+    """Angle [rad] (K,) between the felt specific force f (K, 3) and the desired direction.
+
+    f_d : (K, 3) the desired specific force, whose direction is wanted; None for the occupant's
+    vertical, cabin +z (modulus-only paths). In [0, pi]; NaN where |f| or |f_d| < :data:`NO_FORCE`.
+    """
+    f = np.asarray(f, float).reshape(-1, 3)
+    d = np.broadcast_to(np.array([0.0, 0.0, 1.0]), f.shape) if f_d is None else np.asarray(f_d, float).reshape(-1, 3)
+    angle = np.arctan2(np.linalg.norm(np.cross(f, d), axis=1), np.sum(f * d, axis=1))
+    defined = (np.linalg.norm(f, axis=1) >= NO_FORCE) & (np.linalg.norm(d, axis=1) >= NO_FORCE)
+    return np.where(defined, angle, np.nan)
+
+
+def direction_threshold(thresholds=perception.THRESHOLDS) -> float:
+    """Felt-direction error [rad] taken as noticeable: asin(lateral otolith threshold / g), the tilt at
+    which a 1 g specific force puts the smaller of the x and y thresholds of ``thresholds`` (6,) on a
+    lateral axis; 0.99 deg for Reid & Nahon's 0.17 m/s^2. An assumption (see the module's notes)."""
+    return math.asin(min(1.0, min(thresholds[3], thresholds[4]) / G))
+
+
+def direction_statistics(error, threshold: float) -> tuple[float, float, float]:
+    """(RMS [rad], peak [rad], share at or above ``threshold`` [%]) of a felt-direction error (K,)
+    over its defined samples; NaN for all three where none is defined."""
+    error = np.asarray(error, float)
+    error = error[np.isfinite(error)]
+    if not len(error):
+        return math.nan, math.nan, math.nan
+    return float(rms(error)), float(error.max()), float(100.0 * np.mean(error >= threshold))
+
+
+def felt_rotation(S, S_d, dt: float, vestibular: perception.VestibularModel | None = None) -> np.ndarray:
+    """Perceived rotation (K, 3) [rad/s]: S[:, :3] - S_d[:, :3] through the model's canal channels.
+
+    S : (K, 6); S_d : (K, 6), or None where no rotation is wanted (a modulus-only path); dt : step [s];
+    vestibular : default :func:`perception.thesis_model`. The canal part of :func:`perceived_difference`,
+    whose force channels see no difference here.
+    """
+    S = np.asarray(S, float)
+    reference = S.copy()
+    reference[:, :3] = 0.0 if S_d is None else np.asarray(S_d, float)[:, :3]
+    return perceived_difference(S, reference, dt, vestibular)[:, :3]
 
 
 def jerk(t, qdd) -> np.ndarray:
@@ -213,6 +277,11 @@ class Metrics:
     Per joint (n,) in the order of ``joints``: jerk_peak, jerk_rms, qdd_variation_per_s,
     sign_changes_per_s, qd_start (joint rate at t[0]). Modulus M against M_d: modulus_rms [m/s^2],
     modulus_correlation, modulus_lag_s.
+    Felt direction (full and modulus paths), against ``direction_reference`` ("S_d" or "cabin +z"):
+    direction_rms, direction_peak, direction_threshold [rad] and direction_above_pct [%].
+    Felt rotation (3,) per canal channel wx, wy, wz (full and modulus paths): rotation_rms,
+    rotation_peak [rad/s] and rotation_above_pct [%]. NaN where undefined; ``to_dict`` and ``rows``
+    give these in degrees, the keys naming the unit.
     """
 
     joints: tuple[str, ...]
@@ -233,9 +302,33 @@ class Metrics:
     modulus_rms: float | None
     modulus_correlation: float | None
     modulus_lag_s: float | None
+    direction_reference: str
+    direction_rms: float
+    direction_peak: float
+    direction_threshold: float
+    direction_above_pct: float
+    rotation_rms: np.ndarray
+    rotation_peak: np.ndarray
+    rotation_above_pct: np.ndarray
 
     CHANNEL_FIELDS = ("rms", "correlation", "lag_s", "perceived_rms", "above_threshold_pct", "peak_false_cue")
     JOINT_FIELDS = ("jerk_peak", "jerk_rms", "qdd_variation_per_s", "sign_changes_per_s", "qd_start")
+    #: The first word of every name in :meth:`rows`, in the order the rows come.
+    ROW_GROUPS = (*CHANNEL_FIELDS, "felt_direction", "felt_rotation", *JOINT_FIELDS, "modulus")
+
+    def felt_direction(self) -> dict[str, float | None]:
+        """The felt-direction error's statistics in degrees, JSON-safe: rms_deg, peak_deg,
+        above_threshold_pct, threshold_deg."""
+        return {"rms_deg": _degrees(self.direction_rms), "peak_deg": _degrees(self.direction_peak),
+                "above_threshold_pct": _plain(self.direction_above_pct),
+                "threshold_deg": _degrees(self.direction_threshold)}
+
+    def felt_rotation(self) -> dict[str, dict[str, float | None]]:
+        """The felt rotation's statistics per canal channel (wx, wy, wz), JSON-safe: rms_deg_s,
+        peak_deg_s, above_threshold_pct."""
+        return {"rms_deg_s": dict(zip(CHANNELS[:3], map(_degrees, self.rotation_rms))),
+                "peak_deg_s": dict(zip(CHANNELS[:3], map(_degrees, self.rotation_peak))),
+                "above_threshold_pct": dict(zip(CHANNELS[:3], map(_plain, self.rotation_above_pct)))}
 
     def to_dict(self) -> dict:
         """JSON-safe nested dict: floats or None (for NaN), channel and joint names as keys."""
@@ -245,7 +338,9 @@ class Metrics:
         return {"vestibular_model": self.vestibular, "lag_window_s": self.lag_window_s,
                 "duration_s": self.duration_s, "channels": channels, "joints": joints,
                 "modulus": {"rms": _plain(self.modulus_rms), "correlation": _plain(self.modulus_correlation),
-                            "lag_s": _plain(self.modulus_lag_s)}}
+                            "lag_s": _plain(self.modulus_lag_s)},
+                "felt_direction": {"reference": self.direction_reference, **self.felt_direction()},
+                "felt_rotation": self.felt_rotation()}
 
     def rows(self) -> list[tuple[str, str, float | None]]:
         """The metrics flattened for a table: (name, unit, value) per channel, joint and modulus."""
@@ -261,6 +356,10 @@ class Metrics:
             values = getattr(self, name)
             for i, channel in enumerate(CHANNELS):
                 rows.append((f"{name} {channel}", units[name][i], None if values is None else _plain(values[i])))
+        rows += [(f"felt_direction {name.removesuffix('_deg')}", "%" if name.endswith("pct") else "deg", value)
+                 for name, value in self.felt_direction().items()]
+        rows += [(f"felt_rotation {name.removesuffix('_deg_s')} {channel}", "%" if name.endswith("pct") else "deg/s",
+                  value) for name, values in self.felt_rotation().items() for channel, value in values.items()]
         for name in self.JOINT_FIELDS:
             for k, joint in enumerate(self.joints):
                 rows.append((f"{name} {joint}", units[name][k], _plain(getattr(self, name)[k])))
@@ -272,7 +371,8 @@ class Metrics:
     def key_figures(self) -> dict[str, float | None]:
         """The few numbers a table of many runs shows (the batch table): peak false rotation [deg/s],
         the worst felt force error RMS [m/s^2] (full paths), RMS(M - M_d) [m/s^2] (modulus paths), the
-        most acceleration sign changes per second of any joint [1/s]."""
+        most acceleration sign changes per second of any joint [1/s]; for every path the felt-direction
+        error's RMS and peak [deg] and the largest felt rotation of any canal channel [deg/s]."""
         rotation = None if self.peak_false_cue is None else self.peak_false_cue[:3]
         return {
             "peak_false_rotation_deg_s": None if rotation is None or not np.isfinite(rotation).any()
@@ -280,6 +380,9 @@ class Metrics:
             "felt_force_rms_max": None if self.perceived_rms is None else float(np.max(self.perceived_rms[3:])),
             "rms_modulus": _plain(self.modulus_rms),
             "sign_changes_per_s_max": float(np.max(self.sign_changes_per_s)) if len(self.joints) else None,
+            "felt_direction_rms_deg": _degrees(self.direction_rms),
+            "felt_direction_peak_deg": _degrees(self.direction_peak),
+            "felt_rotation_peak_deg_s": _degrees(np.max(self.rotation_peak)),
         }
 
     def headline(self) -> str:
@@ -300,6 +403,11 @@ class Metrics:
             parts.append(f"RMS(M - M_d) {self.modulus_rms:.3g} m/s^2")
             if self.modulus_correlation is not None and np.isfinite(self.modulus_correlation):
                 parts.append(f"correlation {self.modulus_correlation:.2f}, lag {self.modulus_lag_s:.2f} s")
+            i = int(np.argmax(self.rotation_peak))
+            parts.append(f"peak felt rotation {math.degrees(self.rotation_peak[i]):.3g} deg/s ({CHANNELS[i]})")
+        if np.isfinite(self.direction_rms):
+            parts.append(f"felt direction off by {math.degrees(self.direction_rms):.3g} deg RMS, "
+                         f"{math.degrees(self.direction_peak):.3g} deg peak (against {self.direction_reference})")
         if len(self.joints):
             k = int(np.argmax(self.sign_changes_per_s))
             parts.append(f"max {self.sign_changes_per_s[k]:.3g} acceleration sign changes/s ({self.joints[k]})")
@@ -320,13 +428,20 @@ def of_arrays(t, S, S_d, qdd, qd, joint_names, M=None, M_d=None,
     dt = step_of(t)
     vestibular = perception.thesis_model() if vestibular is None else vestibular
     qdd, qd = np.asarray(qdd, float).reshape(len(t), -1), np.asarray(qd, float).reshape(len(t), -1)
+    S = np.asarray(S, float)
     channel = dict.fromkeys(Metrics.CHANNEL_FIELDS)
     if S_d is not None:
+        S_d = np.asarray(S_d, float)
         felt = perceived_difference(S, S_d, dt, vestibular)
+        rotation = felt[:, :3]  # = felt_rotation(S, S_d, dt, vestibular), already at hand
         channel = {"rms": rms(np.asarray(S) - S_d), "correlation": correlation(S, S_d),
                    "lag_s": lag(t, S, S_d, lag_window), "perceived_rms": rms(felt),
                    "above_threshold_pct": time_above_threshold(felt, vestibular.thresholds),
                    "peak_false_cue": peak_false_cue(S, S_d, vestibular.thresholds)}
+    else:
+        rotation = felt_rotation(S, None, dt, vestibular)
+    threshold = direction_threshold(vestibular.thresholds)
+    direction = direction_statistics(direction_error(S[:, 3:], None if S_d is None else S_d[:, 3:]), threshold)
     modulus = (None, None, None)
     if M is not None and M_d is not None:
         modulus = (float(rms(np.asarray(M) - M_d)), float(correlation(M, M_d)[0]),
@@ -336,7 +451,11 @@ def of_arrays(t, S, S_d, qdd, qd, joint_names, M=None, M_d=None,
                    jerk_peak=np.abs(jerk(t, qdd)).max(axis=0, initial=0.0), jerk_rms=jerk_rms(t, qdd),
                    qdd_variation_per_s=variation_per_second(t, qdd),
                    sign_changes_per_s=sign_changes_per_second(t, qdd), qd_start=qd[0].copy(),
-                   modulus_rms=modulus[0], modulus_correlation=modulus[1], modulus_lag_s=modulus[2])
+                   modulus_rms=modulus[0], modulus_correlation=modulus[1], modulus_lag_s=modulus[2],
+                   direction_reference="cabin +z" if S_d is None else "S_d", direction_rms=direction[0],
+                   direction_peak=direction[1], direction_threshold=threshold, direction_above_pct=direction[2],
+                   rotation_rms=rms(rotation), rotation_peak=np.abs(rotation).max(axis=0),
+                   rotation_above_pct=time_above_threshold(rotation, vestibular.thresholds[:3]))
 
 
 def of_trajectory(traj, joint_names, vestibular: perception.VestibularModel | None = None,
@@ -349,6 +468,12 @@ def of_trajectory(traj, joint_names, vestibular: perception.VestibularModel | No
 def _plain(value) -> float | None:
     """A JSON-safe float, or None for NaN and None."""
     return None if value is None or not math.isfinite(value) else float(value)
+
+
+def _degrees(value) -> float | None:
+    """An angle [rad] (or angular velocity [rad/s]) in degrees (per second), JSON-safe as :func:`_plain`."""
+    value = _plain(value)
+    return None if value is None else math.degrees(value)
 
 
 def joint_units(joints) -> list[str]:
