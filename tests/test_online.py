@@ -52,8 +52,8 @@ class Faulty(MPC):
         super().__init__(*args, **kw)
         self.fail, self.late, self.count = set(fail), set(late), 0
 
-    def _solve(self, q, qd, data):
-        plan, success, elapsed = super()._solve(q, qd, data)
+    def _solve(self, q, qd, a, data):
+        plan, success, elapsed = super()._solve(q, qd, a, data)
         self.count += 1
         if self.count - 1 in self.fail:
             return plan, False, elapsed
@@ -102,8 +102,11 @@ def test_brake_command_keeps_every_limit(params):
     lim = model.limits
     q = np.array([0.0, 0.5, 0.0])  # a stoppable state: 0.83 m to brake the track from 2.9 m/s
     qd = np.array([0.95, 0.9, 1.0]) * lim.velocity
-    qdd = mpc.brake(q, qd)
-    assert np.all(np.sign(qdd) == -np.sign(qd)) and mpc._safe(q, qd, qdd)
+    a = np.zeros(3)
+    qdd, jerk = mpc.brake(q, qd, a)
+    # the acceleration starts where it is and turns towards braking, within the jerk limit
+    assert np.all(qdd == a) and np.all(np.sign(jerk) == -np.sign(qd)) and mpc._safe(q, qd, qdd, jerk)
+    assert np.all(np.abs(jerk) <= lim.jerk)
 
 
 def test_predictors():
@@ -112,7 +115,9 @@ def test_predictors():
     perfect = predict_perfect(path, now, horizon)
     np.testing.assert_allclose(perfect.S_d[:, 4], path.sample(now + perfect.t)[:, 4])
     hold = predict_hold(path, now, horizon)
-    np.testing.assert_allclose(hold.S_d[:, 4], path.sample([now])[0, 4])
+    recent = (path.t > now - 0.1) & (path.t <= now)
+    np.testing.assert_allclose(hold.S_d[:, 4], path.S_d[recent, 4].mean())
+    np.testing.assert_allclose(predict_hold(path, now, horizon, window=1e-9).S_d[:, 4], path.sample([now])[0, 4])
     linear = predict_linear(path, now, horizon)
     k = np.searchsorted(path.t, now, side="right") - 1
     slope = (path.S_d[k, 4] - path.S_d[k - 1, 4]) / (path.t[k] - path.t[k - 1])

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import sys
 import time
@@ -137,7 +138,11 @@ def _parser() -> argparse.ArgumentParser:
     online.add_argument("--out", required=True, metavar="DIR")
     online.add_argument("--horizon", type=float, default=2.0, metavar="SECONDS", help="T_h (default: 2)")
     online.add_argument("--step", type=float, default=0.02, metavar="SECONDS",
-                        help="h: the plan's grid, each acceleration is held this long (default: 0.02)")
+                        help="h: the plan's grid over the first 0.4 s of the horizon, and the period of the "
+                             "commands (default: 0.02)")
+    online.add_argument("--tail-step", type=float, default=0.1, metavar="SECONDS",
+                        help="the plan's grid beyond the first 0.4 s of the horizon, 0 for --step throughout "
+                             "(default: 0.1)")
     online.add_argument("--replan", type=float, default=None, metavar="SECONDS",
                         help="T_c: a new plan every T_c, a whole number of steps (default: every step)")
     online.add_argument("--delay", action="store_true",
@@ -346,6 +351,8 @@ def _run_optimize(args) -> int:
                  protect=_inputs(args))
     c = result.check
     perceived = f" (perceived {c.rms_perceived:.4g})" if c.rms_perceived is not None else ""
+    if model.config.aligned:
+        perceived += f", RMS(M - M_d) = {c.rms_modulus:.4g}"
     solver = f"solver {result.solution.status}" + ("" if result.converged else " (NOT CONVERGED)")
     print(f"{path.name} on {model.config.name}: RMS = {c.rms:.4g}{perceived}, worst limit use "
           f"{c.worst_use:.4f}, {solver}, {result.timings['wall']:.2f} s{sizing.describe(unreachable)}; "
@@ -424,11 +431,13 @@ def _run_online(args) -> int:
     model, path, out = _run_inputs(args)
     if not (0 < args.step and 2 * args.step <= args.horizon <= path.duration):
         raise UserError(f"need 0 < --step, 2 steps <= --horizon <= the path's {path.duration:g} s")
+    if not (args.tail_step >= 0 and math.isfinite(args.tail_step)):
+        raise UserError(f"--tail-step {args.tail_step:g}: must be a number of seconds >= 0")
     if args.deadline is not None and not args.deadline > 0:
         raise UserError(f"--deadline {args.deadline:g}: must be a positive number of seconds")
     try:
         mpc = online.MPCOptions(horizon=args.horizon, step=args.step, replan=args.replan, delay=args.delay,
-                                deadline=args.deadline, method=args.method)
+                                deadline=args.deadline, method=args.method, tail_step=args.tail_step or None)
     except ValueError as exc:
         raise UserError(f"--replan: {exc}") from None
     reference = None
@@ -448,7 +457,12 @@ def _run_online(args) -> int:
                         protect=_inputs(args))
     c, times, sources = result.check, result.loop.compute_times, result.loop.sources
     classical = "" if result.baseline_check is None else f" (classical loop {result.baseline_check.rms:.4g})"
-    print(f"{path.name} on-line on {model.config.name}: RMS = {c.rms:.4g}{classical}, worst limit use "
+    modulus = ""
+    if model.config.aligned:
+        modulus = f", RMS(M - M_d) = {c.rms_modulus:.4g}"
+        if result.baseline_check is not None:
+            modulus += f" (classical loop {result.baseline_check.rms_modulus:.4g})"
+    print(f"{path.name} on-line on {model.config.name}: RMS = {c.rms:.4g}{classical}{modulus}, worst limit use "
           f"{c.worst_use:.4f}, compute per cycle median {1e3 * np.median(times):.2f} ms, "
           f"p99 {1e3 * np.percentile(times, 99):.2f} ms, fallbacks {len(sources) - sources.count('mpc')}"
           f"{sizing.describe(unreachable)}; written to {out}")
@@ -462,7 +476,7 @@ def _run_profiles(args) -> int:
     for name in profiles.PROFILES:
         path = profiles.get_profile(name)
         kind = "modulus only (dfs)" if path.S_d is None else "full path"
-        print(f"{name:<16} {path.duration:5.1f} s  {kind:<18}  {path.description}")
+        print(f"{name:<22} {path.duration:5.1f} s  {kind:<18}  {path.description}")
     return 0
 
 

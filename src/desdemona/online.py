@@ -86,7 +86,7 @@ class MPCOptions:
     spin_up: float = 0.2
     tail_step: float | None = 0.1
     fine: float = 0.4
-    jerk_weight: float = 1.0
+    jerk_weight: float = 3.0
 
     def __post_init__(self):
         if not (self.step > 0 and self.horizon >= 2 * self.step):
