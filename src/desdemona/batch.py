@@ -58,14 +58,17 @@ def run_job(job: Job, params: MachineParams, options: OptimizeOptions, out_dir: 
     """Optimise one job and write its folder; failures become a table line, not an exception.
 
     weights : a spec of :func:`profiles.weights_for`, resolved for the job's path (after its ``gain``),
-    or None for ``options.problem.weights``.
+    "auto" for the configuration's default (:attr:`Configuration.default_weights`), or None for
+    ``options.problem.weights``.
     """
     start = time.perf_counter()
     folder = Path(out_dir) / job.folder_name
     try:
-        path = profiles.load(job.profile).with_gain(gain)
+        config = get_configuration(job.config)
+        path = config.cue_path(profiles.load(job.profile).with_gain(gain))
         if weights is not None:
-            problem = dataclasses.replace(options.problem, weights=tuple(profiles.weights_for(weights, path)))
+            spec = config.default_weights if weights == "auto" else weights
+            problem = dataclasses.replace(options.problem, weights=tuple(profiles.weights_for(spec, path)))
             options = dataclasses.replace(options, problem=problem)
         result = optimize(path, Model(params, job.config), options)
         report.write(result, folder, command=f"desdemona batch ({job.profile} on {job.config})", overwrite=True)

@@ -230,12 +230,14 @@ def _add_session_options(parser: argparse.ArgumentParser, given: bool = True) ->
     parser.add_argument("--final", choices=("centre", "rest", "none"), default="centre",
                         help="centre: at rest with the track and heave centred at the end (default); "
                              "rest: every joint still; none: free (thesis)")
-    parser.add_argument("--weights", default=profiles.WEIGHT_CHOICES[0], metavar="SPEC",
+    parser.add_argument("--weights", default=None, metavar="SPEC",
                         help="the cost's weight per channel of S (diagonal of Q): felt (default): the path's "
                              "force weights, and rotation weighted by the perception thresholds so that one "
                              "threshold of false rotation costs as much as one of force error; path: the "
-                             "path's own (the thesis'; a CSV's '# weights:' line or 1 each); thresholds: "
-                             "every channel by 1/threshold^2; or six numbers wx,wy,wz,fx,fy,fz")
+                             "path's own (the thesis'; a CSV's '# weights:' line or 1 each; the default on "
+                             "dfs, whose arm turns to make the force: a modulus path weighs its rotation "
+                             "at 0.1); thresholds: every channel by 1/threshold^2; or six numbers "
+                             "wx,wy,wz,fx,fy,fz")
     parser.add_argument("--gain", type=float, default=1.0, metavar="G",
                         help="motion gain around 1 g: f_d -> (0,0,g) + G (f_d - (0,0,g)), omega_d -> G "
                              "omega_d (default: 1)")
@@ -244,8 +246,11 @@ def _add_session_options(parser: argparse.ArgumentParser, given: bool = True) ->
 def _session(args, model: Model, path: profiles.DesiredPath) -> tuple[profiles.DesiredPath, dict]:
     """The path with its gain, and the ProblemOptions fields of the session options, checked."""
     path = path.with_gain(args.gain)
+    if model is not None:
+        path = model.config.cue_path(path)
+    spec = args.weights or (model.config.default_weights if model is not None else profiles.WEIGHT_CHOICES[0])
     fields = {"initial": args.initial or "rest", "final": args.final,
-              "weights": tuple(profiles.weights_for(args.weights, path))}
+              "weights": tuple(profiles.weights_for(spec, path))}
     state = getattr(args, "initial_state", None)
     if (state is not None) != (fields["initial"] == "given"):
         raise UserError("--initial given and --initial-state go together")
@@ -328,7 +333,7 @@ def _run_optimize(args) -> int:
     if model.config.modulus_cost and args.perception:
         raise UserError("--perception applies to the full path S, not to the dfs modulus")
     if args.method == "thesis":
-        if (args.initial, args.initial_state, args.final, args.weights) != (None, None, "centre", profiles.WEIGHT_CHOICES[0]):
+        if (args.initial, args.initial_state, args.final, args.weights) != (None, None, "centre", None):
             raise UserError("--method thesis reproduces the thesis: its weights are the path's and its start "
                             "free; drop --initial, --initial-state, --final and --weights")
         path = path.with_gain(args.gain)
@@ -418,7 +423,8 @@ def _run_batch(args) -> int:
               f"{job.config}: {job.status}", file=sys.stderr, flush=True)
 
     results = batch.run_batch(jobs, params, options, args.out, args.processes, args.dask,
-                              weights=args.weights, gain=args.gain, progress=None if args.quiet else progress)
+                              weights=args.weights or "auto", gain=args.gain,
+                              progress=None if args.quiet else progress)
     print(batch.table(results))
     if any(r.status not in ("ok", "not converged") for r in results):
         return EXIT_UNSAFE

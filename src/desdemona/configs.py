@@ -46,6 +46,14 @@ class Configuration:
     aligned: bool = False
 
     @property
+    def default_weights(self) -> str:
+        """The weights spec (:func:`desdemona.profiles.weights_for`) a session uses unless told:
+        "felt" (false rotation weighted by its perception threshold), or the path's own on an aligned
+        configuration, whose arm must turn to make the force: the rotation that comes with it cannot be
+        removed, only kept small (the 0.1 of :func:`desdemona.profiles.along_vertical`)."""
+        return "path" if self.aligned else "felt"
+
+    @property
     def takes_modulus(self) -> bool:
         """A path that gives only the modulus M_d can be followed (``dfs``, ``dfs-yaw``)."""
         return self.modulus_cost or self.aligned

@@ -78,7 +78,8 @@ class ProblemOptions:
     substeps : sub-steps per control interval for cost and limits. Two are enough where S_d is smooth
         on the scale of h_u: the fine-grid RMS of the 4.7 cosine is 0.02465 with 2, 0.02459 with 4
         and 0.02457 with 10 sub-steps, at a fifth of the cost of 10.
-    initial : "free" (optimised, section 5.2), "rest" (at rest, position free) or "given" (``initial_state``).
+    initial : "free" (optimised, section 5.2), "rest" (at rest, position free; on ``dfs`` at home, the
+        cabin level) or "given" (``initial_state``).
     initial_state : (q0, qd0) of the free joints when initial == "given".
     final : "none", "rest" (qd = 0 at the end) or "centre" (at rest with the track and heave centred).
     perception : None, or the vestibular model (:mod:`desdemona.perception`) through which the
@@ -100,11 +101,12 @@ class ProblemOptions:
         configurations of more than three joints. Every other term (cost, gaps, positions,
         braking) stays exact.
     jerk_weight : the rho of the jerk, against j_max (with jerk limits): a plan that used the whole
-        jerk limit all the time would pay as much as sqrt(3) m/s^2 of RMS error. Measured from rest:
-        the catapult on yaw-track-cabin has RMS 3.808 with 1e-4, 3.813 with 1 and 3.827 with 3, its
-        joints' accelerations reversing at most 0.88, 0.38 and 0.38 times a second; dfs-catapult on
-        dfs reverses at most 1.25, 1.0 and 0.92 times a second (modulus RMS 1.865, 1.878, 1.906), the
-        roller coaster 1.2 (0.1), 0.85 (1) and 0.8 (3).
+        jerk limit all the time would pay as much as sqrt(5) m/s^2 of RMS error. It keeps the joints
+        from reversing their accelerations where the cue gains little from it. Measured from rest: the
+        catapult on yaw-track-cabin has RMS 3.808 with 1e-4 and 3.827 with 3, its joints reversing at
+        most 0.88 and 0.38 times a second; on dfs, ending at rest (the command line's default),
+        dfs-catapult reverses at most 1.08 times a second with 3 and 0.92 with 5 (modulus RMS 2.507,
+        2.531), the roller coaster 0.83 and 0.73 (2.903, 2.921).
     unweighted : weight of the channels of S that Q leaves at zero, in the cost only (RMS figures keep
         Q). With it, joints that move only unweighted channels (on ``full``, the gimbals turning the
         cabin about the felt force) stop being flat directions of the cost. None: 0.01 on
@@ -129,7 +131,7 @@ class ProblemOptions:
     initial_filter: Literal["steady", "given"] = "steady"
     limit_curvature: bool | None = None
     unweighted: float | None = None
-    jerk_weight: float = 3.0
+    jerk_weight: float = 5.0
     steps: tuple[float, ...] | None = None
 
     def __post_init__(self):
@@ -514,6 +516,10 @@ class CueingProblem:
         moving = slice(n, self.n_motion)  # rates (and accelerations): zero at rest
         if o.initial in ("rest", "given"):
             lbx[moving] = ubx[moving] = 0.0
+        if o.initial == "rest" and self.model.config.aligned:
+            # the cabin follows the force from home, level: the gimbals' start is not free (three
+            # angles give the same level cabin, some near gimbal lock), and so is the arm's, by symmetry
+            lbx[:n] = ubx[:n] = 0.0
         if o.initial == "given":
             q0, qd0 = start_state(o.initial_state, n)
             lbx[:n] = ubx[:n] = q0
