@@ -2,6 +2,7 @@
 
     python benchmarks/online.py            # every table
     python benchmarks/online.py --quick    # the first table only
+    python benchmarks/online.py --dfs      # the whole-machine dfs table only
 
 Every run starts from rest, as a real session does. Tables (markdown, on stdout):
 
@@ -14,6 +15,10 @@ Every run starts from rest, as a real session does. Tables (markdown, on stdout)
    dfs, f_y elsewhere), p99 compute.
 3. The route predictor on a ride replayed 10 % faster or slower with sensor noise, against perfect
    preview and holding the present value.
+4. The whole-machine dfs (yaw and gimbals planned together) at 50 Hz with a 2 s horizon, and the
+   thesis' yaw-only formulation (dfs-yaw) beside it: compute per cycle, the modulus RMS, the felt
+   direction error and felt rotation, and the joints' acceleration reversals, of the MPC and of the
+   classical loop side by side.
 """
 
 from __future__ import annotations
@@ -38,7 +43,7 @@ def timings(result) -> np.ndarray:
 def felt(result) -> tuple[float, float]:
     """Correlation and lag [s] of what is felt against what is desired: the modulus on dfs, f_y else."""
     q = result.quality
-    if result.model.config.modulus_cost:
+    if result.model.config.takes_modulus:
         return q.modulus_correlation, q.modulus_lag_s
     return q.correlation[4], q.lag_s[4]
 
@@ -52,15 +57,32 @@ def tracking_row(path, config, horizon, step, method, params, replan=None, delay
     fallbacks = sum(v for k, v in Counter(result.loop.sources).items() if k != "mpc")
     timing = f"{horizon:g} | {step:g} | {mpc.period:g}{' delayed' if delay else ''}"
     return (f"| {path.name} | {config} | {timing} | {method} | {t[0]:.2f} | {t[1]:.2f} | {t[2]:.2f} "
-            f"| {result.check.rms:.4f} | {result.baseline_check.rms:.4f} | {offline.rms:.4f} "
-            f"| {result.check.rms / offline.rms:.3f} | {result.check.rms / result.baseline_check.rms:.3f} "
+            f"| {rms(result.check, config):.4f} | {rms(result.baseline_check, config):.4f} | {rms(offline, config):.4f} "
+            f"| {rms(result.check, config) / rms(offline, config):.3f} "
+            f"| {rms(result.check, config) / rms(result.baseline_check, config):.3f} "
             f"| {fallbacks} | {'yes' if result.check.passed else 'NO'} |")
+
+
+def rms(check, config) -> float:
+    """The RMS a row shows: of the modulus on the dfs configurations, weighted S elsewhere."""
+    return check.rms_modulus if config.startswith("dfs") else check.rms
+
+
+def whole_machine_row(path, config, predictor, params) -> str:
+    result = run(path, Model(params, config), OnlineOptions(MPCOptions(horizon=2.0, step=0.02), predictor=predictor))
+    t = timings(result)
+    cells = [f"{t[0]:.2f} | {t[1]:.2f} | {t[2]:.2f}"]
+    for check, q in ((result.check, result.quality), (result.baseline_check, result.baseline_quality)):
+        cells.append(f"{check.rms_modulus:.3f} | {np.degrees(q.direction_rms):.2f} | {np.degrees(q.direction_peak):.1f} "
+                      f"| {np.degrees(np.nanmax(q.rotation_peak)):.0f} | {np.max(q.sign_changes_per_s):.2f} "
+                      f"| {'yes' if check.passed else 'NO'}")
+    return f"| {path.name} | {config} | {predictor} | {' | '.join(cells)} |"
 
 
 def predictor_row(path, config, predictor, step, params) -> str:
     result = run(path, Model(params, config), OnlineOptions(MPCOptions(horizon=2.0, step=step), predictor=predictor))
     correlation, lag = felt(result)
-    return (f"| {path.name} | {config} | {predictor} | {result.check.rms:.4f} | {correlation:.3f} | {lag:.3f} "
+    return (f"| {path.name} | {config} | {predictor} | {rms(result.check, config):.4f} | {correlation:.3f} | {lag:.3f} "
             f"| {timings(result)[1]:.2f} |")
 
 
@@ -75,8 +97,11 @@ def replay(reference: DesiredPath, speed: float, seed: int = 7) -> DesiredPath:
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="the first table only")
+    parser.add_argument("--dfs", action="store_true", help="the whole-machine dfs table only")
     args = parser.parse_args(argv)
     params = default_params()
+    if args.dfs:
+        return whole_machine_table(params)
     print("| path | configuration | T_h [s] | h [s] | T_c [s] | method | median [ms] | p99 [ms] | max [ms] "
           "| RMS MPC | RMS classical | RMS off-line from rest | MPC / off-line | MPC / classical | fallbacks "
           "| limits kept |")
@@ -102,12 +127,26 @@ def main(argv=None) -> int:
     for reference in (profiles.roller_coaster(), profiles.dfs_catapult()):
         for speed in (1.1, 0.9):
             live = replay(reference, speed)
-            rms = {p: run(live, model, OnlineOptions(MPCOptions(horizon=2.0, step=0.02), predictor=p,
-                                                     reference=reference)).check.rms
-                   for p in ("perfect", "hold", "route")}
-            print(f"| {reference.name} | {speed:g}x speed, noise 0.3 m/s^2 | {rms['perfect']:.4f} | {rms['hold']:.4f} "
-                  f"| {rms['route']:.4f} | {rms['route'] / rms['perfect']:.3f} | {rms['route'] / rms['hold']:.3f} |",
+            r = {p: run(live, model, OnlineOptions(MPCOptions(horizon=2.0, step=0.02), predictor=p,
+                                                   reference=reference)).check.rms_modulus
+                 for p in ("perfect", "hold", "route")}
+            print(f"| {reference.name} | {speed:g}x speed, noise 0.3 m/s^2 | {r['perfect']:.4f} | {r['hold']:.4f} "
+                  f"| {r['route']:.4f} | {r['route'] / r['perfect']:.3f} | {r['route'] / r['hold']:.3f} |",
                   flush=True)
+    return whole_machine_table(params)
+
+
+def whole_machine_table(params) -> int:
+    print("\n| path | configuration | predictor | median [ms] | p99 [ms] | max [ms] "
+          "| MPC: RMS(M - M_d) | direction RMS [deg] | direction peak [deg] | felt rotation peak [deg/s] "
+          "| reversals/s (max joint) | limits kept "
+          "| classical: RMS(M - M_d) | direction RMS [deg] | direction peak [deg] | felt rotation peak [deg/s] "
+          "| reversals/s (max joint) | limits kept |")
+    print("|" + " --- |" * 18)
+    for path, predictor in ((profiles.dfs_catapult(), "perfect"), (profiles.roller_coaster(), "perfect"),
+                            (profiles.get_profile("dfs-catapult-recorded"), "hold")):
+        for config in ("dfs", "dfs-yaw"):
+            print(whole_machine_row(path, config, predictor, params), flush=True)
     return 0
 
 

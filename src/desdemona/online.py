@@ -532,9 +532,10 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
     """
     step = options.mpc.step
     path = model.config.cue_path(path)
+    reference = None if options.reference is None else model.config.cue_path(options.reference)
     q0, qd0 = options.start(model.n)
     controller = MPC(model, options.mpc, weights=path.weights)
-    loop = closed_loop(controller, path, predictor(options.predictor, options.reference), q0=q0, qd0=qd0)
+    loop = closed_loop(controller, path, predictor(options.predictor, reference), q0=q0, qd0=qd0)
     result, _ = check(model, path, loop.plan, step=step)
     if not result.passed:
         raise LimitViolation(result, "the closed-loop trajectory")
