@@ -98,13 +98,17 @@ def _peaks(q, v, u, j, h, J, B):
         s = np.where(j < 0.0, -u / j, -1.0)  # where the rate peaks inside the step
         rate = np.maximum(v, v1)
         rate = np.where((s > 0.0) & (s < h), np.maximum(rate, v - u * u / (2.0 * j)), rate)
-        rate = np.maximum(rate, v1 + np.maximum(a1, 0.0) ** 2 / (2.0 * J))
+        # after the step the acceleration returns to zero in whole steps of constant jerk: at J, and
+        # up to one step more (h a / 2 of rate, h v of way), room that lets a follower on the edge
+        # stay on it smoothly instead of jerking across zero
+        late = np.where(np.isfinite(J), h, 0.0)
+        rate = np.maximum(rate, v1 + np.maximum(a1, 0.0) ** 2 / (2.0 * J) + 0.5 * late * np.maximum(a1, 0.0))
         position = np.maximum(q, q1)
         for s in _rate_zeros(v, u, j):
             inside = (s > 0.0) & (s < h)
             position = np.where(inside, np.maximum(position, advance(q, v, u, np.where(inside, s, 0.0), j)[0]),
                                 position)
-        position = np.maximum(position, _braking_peak(q1, v1, a1, J, B))
+        position = np.maximum(position, _braking_peak(q1, v1, a1, J, B) + late * np.maximum(v1, 0.0))
     return rate, position
 
 
@@ -179,10 +183,23 @@ class _Follower:
             rate, position = _peaks(-q, -qd, -u, -j, h, J, B)
             return (rate > V) | (position > -self.qmin)
 
-        high = over(x)
+        # a joint without position limits whose rate cannot reach its limit with any x: nothing to do
+        reach = np.abs(a) + np.where(np.isfinite(J), J * h, np.abs(x))
+        with np.errstate(invalid="ignore"):
+            far = np.abs(qd) + h * reach + np.nan_to_num(reach**2 / (2.0 * J)) + 0.5 * h * reach
+        if np.all(far < V) and not np.any(np.isfinite(self.qmax) | np.isfinite(self.qmin)):
+            return self.motion(a, x)
+        # both edges at once (the usual case: neither is reached)
+        u, j = self.motion(a, x)
+        rate, position = _peaks(np.r_[q, -q], np.r_[qd, -qd], np.r_[u, -u], np.r_[j, -j], h, np.r_[J, J],
+                                np.r_[B, B])
+        n = len(q)
+        high = (rate[:n] > V) | (position[:n] > self.qmax)
         if high.any():
             x = np.where(high, _largest(over, np.minimum(lo, x), x), x)
-        low = under(x)
+        low = (rate[n:] > V) | (position[n:] > -self.qmin)
+        if high.any() or low.any():
+            low = under(x)
         if low.any():
             x = np.where(low, -_largest(lambda y: under(-y), -np.maximum(hi, x), -x), x)
         return self.motion(a, x)
@@ -219,23 +236,17 @@ class _Guard:
 
 
 def _rate_command(error, gain, J):
-    """The acceleration that closes a rate error at ``gain`` [1/s], but no more than the jerk limit J
-    can bring back to zero by the time the error is closed (|a| <= sqrt(2 J |error|)), so that a
-    jerk-limited follower does not overshoot."""
-    a = gain * np.asarray(error, dtype=float)
-    with np.errstate(invalid="ignore"):
-        room = np.sqrt(2.0 * J * np.abs(error))
-    return np.where(np.isfinite(J), np.sign(a) * np.minimum(np.abs(a), room), a)
-
-
-def _angle_command(error, rate, qd, bandwidth, brake, J):
-    """The acceleration of a critically damped angle loop (double pole at ``bandwidth`` [rad/s]) as a
-    cascade: a rate reference ``rate`` (fed forward) + bandwidth / 2 x the angle error, no more than
-    braking at ``brake`` can stop by the target (sqrt(2 brake |error|)), followed by a rate loop of
-    gain 2 x bandwidth (:func:`_rate_command`). Saturated, it brakes in time instead of winding up."""
+    """The acceleration that closes a rate error at ``gain`` [1/s], shaped so that a follower limited
+    to the jerk J can keep to it and ends the error without overshoot: gain x error up to where
+    following that line would need more than J (|error| = J / gain^2), beyond it the curve along which
+    the acceleration falls at exactly J as the error closes, sqrt(2 J |error| - (J / gain)^2)
+    (tangent to the line there)."""
     error = np.asarray(error, dtype=float)
-    closing = np.sign(error) * np.minimum(0.5 * bandwidth * np.abs(error), np.sqrt(2.0 * brake * np.abs(error)))
-    return _rate_command(rate + closing - qd, 2.0 * bandwidth, J)
+    with np.errstate(invalid="ignore", over="ignore"):
+        corner = J / gain**2
+        curve = np.sqrt(np.maximum(2.0 * J * np.abs(error) - (J / gain) ** 2, 0.0))
+        size = np.where(np.isfinite(J) & (np.abs(error) > corner), curve, gain * np.abs(error))
+    return np.sign(error) * size
 
 
 # ---------------------------------------------------------------------------------------------------
