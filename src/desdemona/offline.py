@@ -126,10 +126,12 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
     free = model.config.free
     if problem.options.initial != "free":
         guesses += _guesses_from_start(problem)
-    elif model.config.modulus_cost:
+    elif model.config.takes_modulus:
         classical = baselines.classical_dfs(problem.path, model, times=problem.t_nodes)
         add("classical-loop", classical.q0, classical.qd0, classical.u)
-        add("spinning", [0.0], [0.5 * lim.velocity[0]])
+        spinning = np.zeros(n)
+        spinning[0] = 0.5 * lim.velocity[0]
+        add("spinning", np.zeros(n), spinning)
     else:
         # Thesis table 5.2: the yaw turning, the track out, or both; the track on the side where the
         # centripetal specific force points along the mean demanded f_y. The "not turning" row gets a

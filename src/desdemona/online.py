@@ -540,7 +540,7 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
     if not result.passed:
         raise LimitViolation(result, "the closed-loop trajectory")
     nodes = loop.plan.t_nodes
-    if model.config.modulus_cost:
+    if model.config.takes_modulus:
         classical = classical_dfs(path, model, times=nodes, state=(q0, qd0))
     else:
         classical = classical_washout(path, model, times=nodes, state=(q0, qd0))

@@ -29,26 +29,28 @@ def predict_perfect(path: DesiredPath, now: float, horizon: float) -> DesiredPat
     return _window(path, now, horizon, lambda t: t)
 
 
-#: The hold predictor's estimate of the present value averages the samples of the last this many
-#: seconds: one sample of a recorded signal carries all of its noise, and a plan that holds it for the
-#: horizon follows the noise (measured on dfs-catapult as a 100 Hz log with 0.5 m/s^2 of noise: the yaw's
-#: acceleration reversed 2.6 times a second holding the last sample, 0.4 with the mean of 0.1 s).
-HOLD_WINDOW = 0.1
+#: The hold predictor's estimate of the present value fits a straight line to the samples of the last
+#: this many seconds and takes its value at ``now``: one sample of a recorded signal carries all of its
+#: noise, and a plan that holds it for the horizon follows the noise; a mean would lag behind a ramp
+#: by half the window, the line's end does not.
+HOLD_WINDOW = 0.2
 
 
 def predict_hold(path: DesiredPath, now: float, horizon: float, window: float | None = None) -> DesiredPath:
-    """The present value held over the horizon: the mean of the samples in (now - window, now]
-    (default :data:`HOLD_WINDOW`), or the value at ``now`` where no sample falls in there."""
+    """The present value held over the horizon: the value at ``now`` of the least-squares line through
+    the samples in (now - window, now] (default :data:`HOLD_WINDOW`), or the value at ``now`` where
+    fewer than three samples fall in there."""
     window = HOLD_WINDOW if window is None else window
     t = now + _grid(path, horizon)
-    recent = (path.t > now - window) & (path.t <= now)
-    S = M = None
-    if path.S_d is not None:
-        value = path.S_d[recent].mean(axis=0) if recent.any() else path.sample([now])[0]
-        S = np.tile(value, (len(t), 1))
+    recent = np.flatnonzero((path.t > now - window) & (path.t <= now))
+    values = path.S_d if path.S_d is not None else path.M_d[:, None]
+    if len(recent) >= 3:
+        line = np.polyfit(path.t[recent] - now, values[recent], 1)  # (2, channels): slope, value at now
+        value = line[1]
     else:
-        value = path.M_d[recent].mean() if recent.any() else path.sample_modulus([now])[0]
-        M = np.full(len(t), value)
+        value = path.sample([now])[0] if path.S_d is not None else path.sample_modulus([now])
+    S = None if path.S_d is None else np.tile(value, (len(t), 1))
+    M = None if path.S_d is not None else np.full(len(t), max(float(value[0]), 0.0))
     return DesiredPath(path.name, t - now, S, path.weights, path.description, M)
 
 
