@@ -183,7 +183,7 @@ def test_thesis_timing_replans_every_T_c_and_applies_each_plan_one_period_later(
     """Thesis 7.5: T_h = 1 s, T_c = 0.4 s, h = 0.1 s; a plan computed from the state at t is applied
     from t + T_c (7.1, figure 7.2), so the first period holds the machine still."""
     path = profiles.catapult()
-    model = Model(params, "dfs")
+    model = Model(params, "dfs-yaw")
     timing = MPCOptions(horizon=1.0, step=0.1, replan=0.4, deadline=float("inf"))
     now = run(path, model, OnlineOptions(timing))
     late = run(path, model, OnlineOptions(dataclasses.replace(timing, delay=True)))
@@ -201,7 +201,7 @@ def test_online_command_thesis_timing(tmp_path, capsys):
     from desdemona.cli import main
 
     out = tmp_path / "thesis"
-    assert main(["online", "catapult", "--config", "dfs", "--horizon", "1", "--step", "0.1", "--replan", "0.4",
+    assert main(["online", "catapult", "--config", "dfs-yaw", "--horizon", "1", "--step", "0.1", "--replan", "0.4",
                  "--delay", "--out", str(out)]) == 0
     assert (out / "cycles.csv").read_text().count("\n") == 21  # 20 cycles of 0.4 s
     assert main(["online", "catapult", "--config", "dfs", "--step", "0.1", "--replan", "0.25",

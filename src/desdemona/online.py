@@ -111,18 +111,17 @@ class MPCOptions:
         return int(round(self.period / self.step))
 
     def grid(self) -> np.ndarray:
-        """The plan's interval lengths [s] over the horizon: ``step`` for the first ``fine`` seconds
-        (at least the re-plan period and one step more), then ``tail_step`` (evened out to end exactly
-        at the horizon); uniform with a perception model, whose filters are discretised for one step."""
+        """The plan's interval lengths [s] over the horizon, each a whole number of steps: ``step`` for
+        the first ``fine`` seconds (at least the re-plan period and one step more), then ``tail_step``
+        rounded to whole steps (the last one shorter where the horizon ends); uniform with a perception
+        model, whose filters are discretised for one step."""
         total = int(round(self.horizon / self.step))
-        if self.tail_step is None or self.tail_step <= self.step or self.perception is not None:
+        block = 1 if self.tail_step is None else int(round(self.tail_step / self.step))
+        if block <= 1 or self.perception is not None:
             return np.full(total, self.step)
         fine = min(total, max(int(round(self.fine / self.step)), self.replan_steps + 1))
-        rest = self.horizon - fine * self.step
-        if rest <= 1e-9:
-            return np.full(fine, self.step)
-        count = max(1, int(math.ceil(rest / self.tail_step - 1e-9)))
-        return np.r_[np.full(fine, self.step), np.full(count, rest / count)]
+        blocks, rest = divmod(total - fine, block)
+        return self.step * np.r_[np.ones(fine), np.full(blocks, block), [rest] if rest else []]
 
 
 @dataclass(frozen=True)
@@ -180,7 +179,8 @@ class MPC:
         if options.method == "rti":
             self._qp_data, self._qp = self._real_time_iteration(options.qp_solver)
         self.smooth = self.problem.smooth
-        self.plan: tuple[np.ndarray, np.ndarray] | None = None  # accelerations, jerks of the last plan
+        self.plan: tuple[np.ndarray, np.ndarray] | None = None  # the last plan per step: accelerations, jerks
+        self._counts = np.rint(self.problem.steps / options.step).astype(int)  # steps per interval
         self.plan_age = 0
 
     # ------------------------------------------------------------------------------------------
@@ -207,6 +207,7 @@ class MPC:
         plan = None
         if not reason:
             plan, success, elapsed = self._solve(q, qd, a, self._data(t, values))
+            plan = self._per_step(*plan)
             if not success:
                 reason, plan = "solver failed", None
             elif elapsed > self.deadline:
@@ -354,12 +355,20 @@ class MPC:
             return (x[:-1, 2 * n:3 * n], controls), success, elapsed
         return (controls, np.zeros_like(controls)), success, elapsed
 
+    def _per_step(self, accelerations, jerks) -> tuple[np.ndarray, np.ndarray]:
+        """A plan's (accelerations, jerks) per interval as the same plan per step (the grid's intervals
+        are whole numbers of steps): each step starts where the ramp of its interval is."""
+        offsets = np.concatenate([np.arange(c) for c in self._counts]) * self.options.step
+        jerks = np.repeat(jerks, self._counts, axis=0)
+        return np.repeat(accelerations, self._counts, axis=0) + jerks * offsets[:, None], jerks
+
     def _shifted_plan(self, prob: CueingProblem) -> np.ndarray:
         """(N, n) the previous plan's accelerations from now on, on the problem's grid: at each
         interval's end with jerk limits (what the ramp of :meth:`CueingProblem.guess` aims at), at its
         start without; held at the last value past the plan's end, within the limits."""
         accelerations, jerks = self.plan
-        previous = Plan(prob.t_nodes, np.zeros(self.model.n), np.zeros(self.model.n), accelerations, jerks)
+        times = np.arange(len(accelerations) + 1) * self.options.step
+        previous = Plan(times, np.zeros(self.model.n), np.zeros(self.model.n), accelerations, jerks)
         now = (self.plan_age + self.options.replan_steps) * self.options.step
         times = now + (prob.t_nodes[1:] if self.smooth else prob.t_nodes[:-1])
         at = previous.at(np.minimum(times, prob.t_nodes[-1]))[2]
