@@ -27,7 +27,6 @@ tests all call it.
 from __future__ import annotations
 
 import functools
-import math
 import time
 from dataclasses import dataclass
 from typing import Literal
@@ -42,7 +41,7 @@ from desdemona.perception import VestibularModel
 from desdemona.plan import Plan, advance, start_state
 from desdemona.predictors import PREDICTORS, predictor
 from desdemona.problem import CueingProblem, ProblemOptions
-from desdemona.profiles import DesiredPath, along_vertical, vertical_force
+from desdemona.profiles import ALIGNED_WEIGHTS, DesiredPath, vertical_force
 from desdemona.simulate import (TOLERANCE, ClosedLoop, LimitCheck, LimitViolation, Trajectory, check, closed_loop,
                                 evaluate_plan)
 
@@ -65,10 +64,10 @@ class MPCOptions:
     the person has felt and of what they should have felt from step to step; spin_up : fraction of
     the yaw's acceleration limit with which a still yaw is seeded (see :meth:`MPC._leave_rest`), 0 to
     switch it off; jerk_weight : as in :class:`desdemona.problem.ProblemOptions`, lower by default
-    because a controller that re-plans every step is slowed by it twice (measured on dfs with perfect
-    preview: the roller coaster's modulus RMS 2.04 with 3, 3.15 with 10; at 3 no joint reverses its
-    acceleration more than once a second on dfs-catapult, the roller coaster or dfs-catapult-recorded
-    with the hold predictor); tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon
+    than off-line: a controller that sees only its horizon pays for every hesitation (measured on dfs
+    with perfect preview: the roller coaster's modulus RMS 2.04 with 3, 3.15 with 10; at 3 no joint
+    reverses its acceleration more than once a second on dfs-catapult, the roller coaster or
+    dfs-catapult-recorded with the hold predictor); tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon
     (None: ``step`` throughout). A coarse tail keeps the horizon's reach at a fraction of the work:
     what the plan does in a second matters only through where it leaves the machine, and it is
     re-planned long before then."""
@@ -160,10 +159,8 @@ class MPC:
         steps = options.grid()
         t = np.r_[0.0, np.cumsum(steps)]
         # A placeholder path fixes the problem's shape; the preview arrives as its parameter each step.
-        default = DesiredPath("preview", t, None, modulus=np.zeros(len(t)))
         placeholder = DesiredPath("preview", t, None if model.config.modulus_cost else np.zeros((len(t), 6)),
-                                  weights=weights or (along_vertical(default).weights if model.config.aligned
-                                                      else (1, 1, 1, 1, 1, 1)),
+                                  weights=weights or (ALIGNED_WEIGHTS if model.config.aligned else (1.0,) * 6),
                                   modulus=np.zeros(len(t)) if model.config.modulus_cost else None)
         problem_options = ProblemOptions(
             h_u=options.step, substeps=options.substeps, initial="given",

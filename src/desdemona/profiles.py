@@ -198,6 +198,8 @@ def modulus_version(path: DesiredPath) -> DesiredPath:
 #: of force error. Low on purpose: in a centrifuge the arm's own turn is a rotation that cannot be
 #: removed, and the modulus comes first; the gimbals still turn the cabin to keep what remains small.
 ALIGNED_ROTATION_WEIGHT = 0.1
+#: The weights (diagonal of Q) of a path built by :func:`along_vertical`.
+ALIGNED_WEIGHTS = (ALIGNED_ROTATION_WEIGHT,) * 3 + (1.0,) * 3
 
 
 def along_vertical(path: DesiredPath, rotation_weight: float = ALIGNED_ROTATION_WEIGHT) -> DesiredPath:
