@@ -63,11 +63,11 @@ class MPCOptions:
     through this vestibular model (chapter 6): the controller then carries the filter states of what
     the person has felt and of what they should have felt from step to step; spin_up : fraction of
     the yaw's acceleration limit with which a still yaw is seeded (see :meth:`MPC._leave_rest`), 0 to
-    switch it off; jerk_weight : as in :class:`desdemona.problem.ProblemOptions`, lower by default
-    than off-line: a controller that sees only its horizon pays for every hesitation (measured on dfs
-    with perfect preview: the roller coaster's modulus RMS 2.04 with 3, 3.15 with 10; at 3 no joint
-    reverses its acceleration more than once a second on dfs-catapult, the roller coaster or
-    dfs-catapult-recorded with the hold predictor); tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon
+    switch it off; jerk_weight : as in :class:`desdemona.problem.ProblemOptions`; None: 3 on ``dfs``,
+    lower than off-line because a controller that sees only its horizon pays for every hesitation
+    (measured on dfs with perfect preview: the roller coaster's modulus RMS 2.04 with 3, 3.15 with 10;
+    at 3 no joint reverses its acceleration more than once a second on dfs-catapult, the roller
+    coaster or dfs-catapult-recorded with the hold predictor), 1 elsewhere; tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon
     (None: ``step`` throughout). A coarse tail keeps the horizon's reach at a fraction of the work:
     what the plan does in a second matters only through where it leaves the machine, and it is
     re-planned long before then."""
@@ -89,7 +89,7 @@ class MPCOptions:
     spin_up: float = 0.2
     tail_step: float | None = 0.1
     fine: float = 0.4
-    jerk_weight: float = 3.0
+    jerk_weight: float | None = None
 
     def __post_init__(self):
         if not (self.step > 0 and self.horizon >= 2 * self.step):
@@ -167,7 +167,9 @@ class MPC:
             initial_state=(np.zeros(model.n), np.zeros(model.n)), regularisation=options.regularisation,
             margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6,
             stoppable=True, braking=options.braking, perception=options.perception, initial_filter="given",
-            steps=None if np.all(steps == options.step) else tuple(steps), jerk_weight=options.jerk_weight)
+            steps=None if np.all(steps == options.step) else tuple(steps),
+            jerk_weight=options.jerk_weight if options.jerk_weight is not None else (
+                3.0 if model.config.aligned else 1.0))
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         self.limits = model.limits
         self._limit_use = model.step_limit_use(options.step)

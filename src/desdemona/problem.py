@@ -101,12 +101,13 @@ class ProblemOptions:
         configurations of more than three joints. Every other term (cost, gaps, positions,
         braking) stays exact.
     jerk_weight : the rho of the jerk, against j_max (with jerk limits): a plan that used the whole
-        jerk limit all the time would pay as much as sqrt(5) m/s^2 of RMS error. It keeps the joints
-        from reversing their accelerations where the cue gains little from it. Measured from rest: the
-        catapult on yaw-track-cabin has RMS 3.808 with 1e-4 and 3.827 with 3, its joints reversing at
-        most 0.88 and 0.38 times a second; on dfs, ending at rest (the command line's default),
+        jerk limit all the time would pay as much as sqrt(rho) m/s^2 of RMS error. It keeps the joints
+        from reversing their accelerations where the cue gains little from it. None: 5 on ``dfs``, 1
+        elsewhere. Measured from rest: on dfs, ending at rest (the command line's default),
         dfs-catapult reverses at most 1.08 times a second with 3 and 0.92 with 5 (modulus RMS 2.507,
-        2.531), the roller coaster 0.83 and 0.73 (2.903, 2.921).
+        2.531), the roller coaster 0.83 and 0.73 (2.903, 2.921); the catapult on full has RMS 1.254,
+        1.294, 1.370 and 1.568 with 1e-4, 0.1, 1 and 5 (reversals 1.13, 0.75, 0.63, 0.5 per second;
+        215, 116, 107 and 124 iterations); on yaw-track-cabin 3.808 with 1e-4 and 3.827 with 3.
     unweighted : weight of the channels of S that Q leaves at zero, in the cost only (RMS figures keep
         Q). With it, joints that move only unweighted channels (on ``full``, the gimbals turning the
         cabin about the felt force) stop being flat directions of the cost. None: 0.01 on
@@ -131,7 +132,7 @@ class ProblemOptions:
     initial_filter: Literal["steady", "given"] = "steady"
     limit_curvature: bool | None = None
     unweighted: float | None = None
-    jerk_weight: float = 5.0
+    jerk_weight: float | None = None
     steps: tuple[float, ...] | None = None
 
     def __post_init__(self):
@@ -244,6 +245,8 @@ class CueingProblem:
         floor = options.unweighted if options.unweighted is not None else (0.01 if large else 0.0)
         self.cost_weights = np.where(self.weights > 0, self.weights, floor)
         self.limit_curvature = options.limit_curvature if options.limit_curvature is not None else not large
+        self.jerk_weight = options.jerk_weight if options.jerk_weight is not None else (
+            5.0 if model.config.aligned else 1.0)
         self.vestibular = options.perception
         self.filter = self.vestibular.discretize(self.h_sub) if self.vestibular else None
         self.nz = self.vestibular.n_states if self.vestibular else 0
@@ -358,7 +361,7 @@ class CueingProblem:
         rho = o.regularisation * h_u / T
         residuals.append(ca.sqrt(rho) * a / ca.DM(lim.acceleration))
         if jerk is not None:
-            rho_j = o.jerk_weight * h_u / T
+            rho_j = self.jerk_weight * h_u / T
             residuals.append(ca.sqrt(rho_j) * jerk / ca.DM(lim.jerk))
         return residuals, z
 
