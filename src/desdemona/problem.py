@@ -35,8 +35,9 @@ Regularisation ``rho``: a full-scale joint acceleration held for the whole path 
 equivalent to an RMS error of sqrt(rho); the default 1e-4 (0.01 m/s^2, well below the 0.17 m/s^2
 perception threshold) never trades a felt cue for effort, but removes the flat directions of the
 cost (joints that do not change S in the weighted channels), which makes the Hessian regular and the
-optimum unique. With jerk limits the jerk gets the same weight against its own limit, so that a plan
-does not swing its accelerations where the cue gains nothing from it.
+optimum unique. With jerk limits the jerk has a weight of its own against its limit
+(``ProblemOptions.jerk_weight``), so that a plan does not swing its accelerations where the cue gains
+little from it.
 """
 
 from __future__ import annotations
