@@ -240,7 +240,8 @@ class CueingProblem:
         # end is the next one's start, with the same S, torques and power: an on-line problem, whose
         # last node is only where the horizon stops, leaves the end out and halves its work; an
         # off-line one keeps it, so that the last node is costed and within the limits too.
-        self.fractions = np.arange(self.m + (0 if self.smooth_points(model, parametric) else 1)) / self.m
+        self.smooth = model.limits.smooth
+        self.fractions = np.arange(self.m + (0 if parametric and self.smooth else 1)) / self.m
         self.weights = np.array(options.weights if options.weights is not None else path.weights, float)
         large = model.n > 3  # see ProblemOptions.limit_curvature and .unweighted
         floor = options.unweighted if options.unweighted is not None else (0.01 if large else 0.0)
@@ -252,7 +253,6 @@ class CueingProblem:
         self.filter = self.vestibular.discretize(self.h_sub) if self.vestibular else None
         self.nz = self.vestibular.n_states if self.vestibular else 0
         n = model.n
-        self.smooth = model.limits.smooth
         self.n_motion = (3 if self.smooth else 2) * n  # (q, qd[, qdd]) lead the state, filters follow
         self.nx, self.nu = self.n_motion + self.nz, n
         self.monitor = None  # the solver's guard.SolveMonitor, where it has one
@@ -261,11 +261,6 @@ class CueingProblem:
 
     # ------------------------------------------------------------------------------------------
     # data on the sub-step grid
-
-    @staticmethod
-    def smooth_points(model: Model, parametric: bool) -> bool:
-        """True where the interval's end point is left out (see ``fractions``)."""
-        return parametric and model.limits.smooth
 
     def sub_times(self) -> np.ndarray:
         """(N, P) absolute times of every interval's sub-step points (P = m + 1, or m without the end)."""
