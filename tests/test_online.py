@@ -8,6 +8,7 @@ import pytest
 from desdemona import Model, profiles
 from desdemona.offline import OptimizeOptions, optimize
 from desdemona.online import MPC, MPCOptions, OnlineOptions, run
+from desdemona.plan import advance
 from desdemona.predictors import PREDICTORS, predict_hold, predict_linear, predict_perfect
 from desdemona.perception import thesis_model
 from desdemona.problem import ProblemOptions
@@ -249,3 +250,22 @@ def test_every_profile_from_rest_beats_its_classical_baseline(params, name, conf
     assert result.check.passed and result.baseline_check.passed
     assert np.all(result.plan.qd0 == 0.0)
     assert result.check.rms < result.baseline_check.rms
+
+
+def test_the_felt_filters_follow_every_sub_step_of_a_cycle(params):
+    """With perception the MPC carries what the occupant has felt from one cycle to the next: the
+    filter state after a cycle is the filter run on S at each of the cycle's m sub-steps."""
+    model = Model(params, "yaw-track-cabin")
+    mpc = MPC(model, dataclasses.replace(OPTIONS, perception=thesis_model(), substeps=2))
+    path = profiles.catapult(level=10.0, push=1.0, quiet=0.2, duration=2.0)
+    state = (np.zeros(model.n), np.array([0.5, 0.2, 0.0]), np.array([0.3, 0.5, 0.1]))
+    mpc.step(state, path)
+    z0 = mpc.z
+    command = mpc.step(state, path)
+    assert np.abs(mpc.z - z0).max() > 1e-4
+    prob, m = mpc.problem, mpc.problem.m
+    s = np.arange(m)[:, None] / m * OPTIONS.step
+    qdd, jerk = command.sequence[0], command.jerks[0]
+    S = model.S(*advance(state[0], state[1], qdd, s, jerk), qdd + jerk * s)
+    _, states = prob.filter.simulate(S, z0)
+    np.testing.assert_allclose(mpc.z, states[m], rtol=1e-10, atol=1e-12)

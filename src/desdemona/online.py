@@ -225,7 +225,7 @@ class MPC:
     def _advance_filters(self, q, qd, command) -> None:
         """Carry the felt filter state over the cycle just commanded, and the desired one with it."""
         prob = self.problem
-        s = prob.fractions[:-1, None] * self.options.step
+        s = np.arange(prob.m)[:, None] / prob.m * self.options.step
         for qdd, jerk in zip(command.sequence, command.jerks):
             S = self.model.S(*advance(q, qd, qdd, s, jerk), qdd + jerk * s)
             for row in S:
