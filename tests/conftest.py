@@ -1,5 +1,7 @@
 """Shared fixtures."""
 
+import os
+
 import pytest
 
 from desdemona import default_params, thesis_toy_params
@@ -13,3 +15,15 @@ def params():
 @pytest.fixture(scope="session")
 def toy():
     return thesis_toy_params()
+
+
+@pytest.fixture(scope="session", autouse=True)
+def compiled_cache(tmp_path_factory):
+    """Libraries compiled during the tests go to a folder of their own, not the user's cache."""
+    before = os.environ.get("DESDEMONA_CACHE")
+    os.environ["DESDEMONA_CACHE"] = str(tmp_path_factory.mktemp("compiled"))
+    yield
+    if before is None:
+        os.environ.pop("DESDEMONA_CACHE", None)
+    else:
+        os.environ["DESDEMONA_CACHE"] = before

@@ -1,0 +1,134 @@
+"""Compiled stage functions (issue 17): the same numbers as interpreted, one library per machine and
+configuration for every path, a cache that is reused, and a quiet fallback without a compiler; and the
+off-line cost, now assembled from stages without their ends and a terminal stage, is still the
+trapezoid rule over the whole grid."""
+
+import os
+import warnings
+
+import casadi as ca
+import numpy as np
+import pytest
+
+from desdemona import Model, compiled, profiles
+from desdemona.offline import initial_guesses
+from desdemona.plan import Plan
+from desdemona.problem import CueingProblem, ProblemOptions
+from desdemona.simulate import evaluate_plan
+
+needs_compiler = pytest.mark.skipif(compiled.compiler() is None, reason="no C compiler")
+
+
+@pytest.fixture
+def cache(tmp_path, monkeypatch):
+    monkeypatch.setenv("DESDEMONA_CACHE", str(tmp_path / "cache"))
+    return tmp_path / "cache"
+
+
+def short(duration=1.0, **kw):
+    return profiles.catapult(level=15.0, push=0.5, quiet=0.2, duration=duration, **kw)
+
+
+def point(problem, seed=0):
+    x, u = initial_guesses(problem, 1, seed)[0][1:]
+    w = problem.pack(x, u)
+    return w + 0.01 * np.random.default_rng(seed).standard_normal(w.shape)
+
+
+@needs_compiler
+def test_compiled_stages_give_the_interpreted_numbers(params, cache):
+    model = Model(params, "full")
+    fast = CueingProblem(model, short(), ProblemOptions(h_u=0.1, compile=True))
+    slow = CueingProblem(model, short(), ProblemOptions(h_u=0.1, compile=False))
+    assert fast.compiled and not slow.compiled
+    w = point(slow)
+    lam = np.random.default_rng(1).standard_normal(slow.nlp["g"].numel())
+    for name, args in (("grad_f", [w, []]), ("jac_g", [w, []]), ("hess_lag", [w, [], 0.7, lam])):
+        for a, b in zip(fast.derivatives[name].call(args), slow.derivatives[name].call(args)):
+            a, b = ca.DM(a).full(), ca.DM(b).full()
+            np.testing.assert_allclose(a, b, rtol=1e-12, atol=1e-12 * max(1.0, np.abs(b).max()))
+
+
+@needs_compiler
+def test_one_library_serves_every_path_and_later_runs(params, cache):
+    model = Model(params, "full")
+    first = CueingProblem(model, short(), ProblemOptions(h_u=0.1, compile=True))
+    libraries = list(cache.glob("stages-*.so"))
+    assert first.compiled and len(libraries) == 1
+    stamp = libraries[0].stat().st_mtime_ns
+    # another duration and other weights: path data, not code; found in the cache and used even
+    # where compiling would not pay by itself
+    other = short(duration=1.5)
+    other = profiles.DesiredPath("other", other.t, other.S_d, weights=(0, 0, 0, 1, 2, 1))
+    second = CueingProblem(model, other, ProblemOptions(h_u=0.1))
+    assert second.N * second._stage_derivatives()["jac"].n_instructions() < 2_000_000
+    assert second.compiled
+    assert list(cache.glob("stages-*.so")) == libraries
+    assert libraries[0].stat().st_mtime_ns == stamp
+    assert not list(cache.glob(".compiling-*"))  # no work folder left behind
+    # another machine setting is other code
+    CueingProblem(Model(params.simplified(), "full"), short(), ProblemOptions(h_u=0.1, compile=True))
+    assert len(list(cache.glob("stages-*.so"))) == 2
+
+
+def test_small_problems_are_not_compiled(params, cache):
+    problem = CueingProblem(Model(params, "yaw-track-cabin"), short(), ProblemOptions(h_u=0.1))
+    assert not problem.compiled
+    assert not cache.exists()
+
+
+def test_without_a_compiler_the_stages_stay_interpreted(params, cache, monkeypatch):
+    monkeypatch.setenv("CC", "no-such-compiler-here")
+    with pytest.warns(RuntimeWarning, match="no C compiler"):
+        problem = CueingProblem(Model(params, "full"), short(), ProblemOptions(h_u=0.1, compile=True))
+    assert not problem.compiled
+    x, u = initial_guesses(problem, 1, 0)[0][1:]
+    assert np.isfinite(problem.solve(x, u).cost)
+
+
+@needs_compiler
+def test_a_failing_compiler_leaves_nothing_behind(params, cache, monkeypatch, tmp_path):
+    failing = tmp_path / "cc"
+    failing.write_text("#!/bin/sh\necho 'cc: broken toolchain' >&2\nexit 1\n")
+    failing.chmod(0o755)
+    monkeypatch.setenv("CC", str(failing))
+    with pytest.warns(RuntimeWarning, match="broken toolchain"):
+        problem = CueingProblem(Model(params, "full"), short(), ProblemOptions(h_u=0.1, compile=True))
+    assert not problem.compiled
+    assert os.listdir(cache) == []
+
+
+def test_the_offline_cost_is_the_trapezoid_rule_over_the_whole_grid(params):
+    """With continuous accelerations the stages leave their ends out and the last node has a stage
+    of its own: at a gap-free point the cost is the trapezoid rule of the weighted squared error on
+    every sub-step point, plus the acceleration and jerk terms."""
+    model = Model(params, "yaw-track-cabin")
+    path = short(duration=1.2)
+    problem = CueingProblem(model, path, ProblemOptions(h_u=0.1, initial="free"))
+    assert problem.terminal_stage and problem.n_terminal == 2 * model.n
+    x, u = initial_guesses(problem, 1, 0)[0][1:]
+    n, lim = model.n, model.limits
+    plan = Plan(problem.t_nodes, x[0, :n], x[0, n:2 * n], x[:-1, 2 * n:3 * n], u)
+    t = np.r_[problem.sub_times().ravel(), problem.t_nodes[-1]]
+    traj = evaluate_plan(model, path, plan, t)
+    error = np.sum(problem.cost_weights * (traj.S - traj.S_d) ** 2, axis=1)
+    T, h = path.duration, problem.steps
+    expected = np.trapezoid(error, t) / T
+    expected += problem.options.regularisation * np.sum(h[:, None] * (plan.u / lim.acceleration) ** 2) / T
+    expected += problem.jerk_weight * np.sum(h[:, None] * (plan.jerk / lim.jerk) ** 2) / T
+    states = np.column_stack([*plan.at(problem.t_nodes)])
+    w = problem.pack(states, plan.jerk)
+    cost = float(ca.Function("f", [problem.nlp["x"]], [problem.nlp["f"]])(w))
+    assert cost == pytest.approx(expected, rel=1e-9)
+
+
+def test_the_last_node_is_limited(params):
+    """The terminal stage bounds the torques and powers at the last node."""
+    problem = CueingProblem(Model(params, "full"), short(), ProblemOptions(h_u=0.1, compile=False))
+    rows = slice(problem.nlp["g"].numel() - problem.n_terminal, None)
+    np.testing.assert_array_equal(problem.lbg[rows], -1.0)
+    np.testing.assert_array_equal(problem.ubg[rows], 1.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        online = CueingProblem(Model(params, "full"), short(), ProblemOptions(h_u=0.1), parametric=True)
+    assert online.n_terminal == 0 and not online.compiled
