@@ -11,7 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona import __version__, guard, profiles, sizing
+from desdemona import __version__, allocator, guard, profiles, sizing
 from desdemona import perception as perception_models
 from desdemona.configs import CONFIGURATIONS, get_configuration
 from desdemona.model import Model
@@ -49,6 +49,7 @@ def main(argv: list[str] | None = None) -> int:
     from desdemona.report import ReportError
     from desdemona.simulate import LimitViolation
 
+    allocator.reuse_freed_memory()  # IPOPT's factorisations reuse their workspace (allocator.py)
     try:
         with guard.interruptible():
             return args.run(args)
