@@ -98,7 +98,7 @@ def test_unweighted_channels_weigh_in_the_cost_only(params):
     path = profiles.catapult(duration=1.0)
     problem = CueingProblem(Model(params, "full"), path, ProblemOptions(h_u=0.1))
     np.testing.assert_array_equal(problem.weights, path.weights)
-    np.testing.assert_array_equal(problem.cost_weights, [0.01, 0.01, 0.01, 3, 1, 1])
+    np.testing.assert_array_equal(problem.cost_weights, [0.003, 0.003, 0.003, 3, 1, 1])
     assert not problem.limit_curvature
     small = CueingProblem(Model(params, "yaw-track-cabin"), path, ProblemOptions(h_u=0.1))
     np.testing.assert_array_equal(small.cost_weights, path.weights)
