@@ -352,7 +352,7 @@ class CueingProblem:
         points = len(self.fractions)
         nd = points if self.modulus else (self.m * 6 if self.vestibular else points * 6)
         data = ca.SX.sym("d", self.n_head + nd)  # see with_steps
-        h_u, first, d = data[0], data[1], data[self.n_head:]
+        h_u, d = data[0], data[self.n_head:]
         q_next, qd_next = advance(q, qd, a, h_u, jerk)
         positions, values, efforts, powers = [], [], [], []
         for j, fraction in enumerate(self.fractions):
