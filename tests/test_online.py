@@ -269,3 +269,23 @@ def test_the_felt_filters_follow_every_sub_step_of_a_cycle(params):
     S = model.S(*advance(state[0], state[1], qdd, s, jerk), qdd + jerk * s)
     _, states = prob.filter.simulate(S, z0)
     np.testing.assert_allclose(mpc.z, states[m], rtol=1e-10, atol=1e-12)
+
+
+@pytest.mark.parametrize("config, horizon", [("yaw-track", 4.0), ("dfs", 2.0)])
+def test_the_command_plans_further_ahead_where_the_track_moves(tmp_path, config, horizon):
+    """Without --horizon: 4 s where the track's position must be planned, 2 s on dfs, at most the path."""
+    import json
+
+    from desdemona.cli import main
+    from desdemona.online import default_horizon
+
+    assert default_horizon(Model(config=config).config) == horizon
+    out = tmp_path / config
+    path = "catapult" if config == "yaw-track" else "dfs-catapult"
+    assert main(["online", path, "--config", config, "--step", "0.1", "--out", str(out)]) == 0
+    assert f"horizon {horizon:g} s" in json.loads((out / "summary.json").read_text())["method"]
+    short = tmp_path / "short.csv"
+    profiles.write_csv(short, profiles.catapult(level=10.0, push=1.0, quiet=0.5, duration=3.0))
+    if config == "yaw-track":
+        assert main(["online", str(short), "--config", config, "--step", "0.1", "--out", str(tmp_path / "s")]) == 0
+        assert "horizon 3 s" in json.loads((tmp_path / "s" / "summary.json").read_text())["method"]

@@ -137,7 +137,9 @@ def _parser() -> argparse.ArgumentParser:
     online.add_argument("profile", metavar="PROFILE_OR_CSV")
     _add_machine_options(online, default_config="dfs")
     online.add_argument("--out", required=True, metavar="DIR")
-    online.add_argument("--horizon", type=float, default=2.0, metavar="SECONDS", help="T_h (default: 2)")
+    online.add_argument("--horizon", type=float, default=None, metavar="SECONDS",
+                        help="T_h (default: 2 on dfs and dfs-yaw; 4 with the track, whose position is planned "
+                             "further ahead; at most the path's duration)")
     online.add_argument("--step", type=float, default=0.02, metavar="SECONDS",
                         help="h: the plan's grid over the first 0.4 s of the horizon, and the period of the "
                              "commands (default: 0.02)")
@@ -436,6 +438,8 @@ def _run_online(args) -> int:
     from desdemona import online, report
 
     model, path, out = _run_inputs(args)
+    if args.horizon is None:
+        args.horizon = min(online.default_horizon(model.config), path.duration)
     if not (0 < args.step and 2 * args.step <= args.horizon <= path.duration):
         raise UserError(f"need 0 < --step, 2 steps <= --horizon <= the path's {path.duration:g} s")
     if not (args.tail_step >= 0 and math.isfinite(args.tail_step)):

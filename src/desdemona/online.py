@@ -150,6 +150,15 @@ class Command:
         return self.sequence[0]
 
 
+def default_horizon(config) -> float:
+    """The horizon the command line uses when none is given [s]: 2 s where only the yaw and the gimbals
+    move (dfs), 4 s where the track does. A track's position must be planned further ahead than the
+    cue: with 2 s the real-time iteration ends 1.15-1.51x above the off-line optimum from rest on the
+    catapult, double pulse and car lap, with 4 s 0.99-1.22x except the car lap on ``full`` (1.45x),
+    at a p99 of 1.7-10 ms per cycle at 20 Hz (``python benchmarks/online.py --horizon``)."""
+    return 4.0 if 1 in config.free else 2.0
+
+
 class MPC:
     """The model predictive cueing controller, built once for a model and options, then stepped."""
 

@@ -127,7 +127,9 @@ class ProblemOptions:
         configurations of more than three joints, 0 otherwise. Measured on ``full`` from the first
         smart guess: the catapult's fine-grid RMS is 1.3318 without it, 1.3319 with 0.003 and 1.3697
         with 0.01 (105-167 iterations); the car lap 0.9744 with each; the cosine converges from all
-        four default starts with 0.003 (94-202 iterations), and not within 500 without it.
+        four default starts with 0.003 (94-202 iterations), and not within 500 without it. On-line
+        (``parametric``) 0.01: one QP per cycle, linearised at the last plan, suffers more from flat
+        directions; the MPC's double pulse on full has RMS 2.33 with 0.01 and 2.53 with 0.003.
     compile : evaluate the stages' functions compiled to machine code, kept in a cache on disk
         (:mod:`desdemona.compiled`; the results are the same, about six times faster to evaluate).
         None: where the interpreted evaluation would take long (``COMPILE_WORK``) or the library is
@@ -266,7 +268,8 @@ class CueingProblem:
         self.terminal_stage = self.smooth and not parametric
         self.weights = np.array(options.weights if options.weights is not None else path.weights, float)
         large = model.n > 3  # see ProblemOptions.limit_curvature and .unweighted
-        floor = options.unweighted if options.unweighted is not None else (0.003 if large else 0.0)
+        floor = options.unweighted if options.unweighted is not None else (
+            (0.01 if parametric else 0.003) if large else 0.0)
         self.cost_weights = np.where(self.weights > 0, self.weights, floor)
         self.limit_curvature = options.limit_curvature if options.limit_curvature is not None else not large
         self.jerk_weight = options.jerk_weight if options.jerk_weight is not None else (
