@@ -144,3 +144,20 @@ def test_classical_washout_steps_without_jerk_limits(toy):
     assert_within_limits(result)
     np.testing.assert_array_equal(plan.jerk, 0.0)
     assert np.abs(plan.acceleration_jumps()).max() > 1.0
+
+
+@pytest.mark.parametrize("config", ["dfs-yaw", "dfs"])
+def test_classical_dfs_never_looks_ahead(params, config):
+    """What the loop commands over [t_k, t_k+1] depends on M_d up to t_k only: two paths that part
+    after t_k give the same commands up to and including that step (the MPC with the hold predictor
+    knows no more)."""
+    model = Model(params, config)
+    t = np.arange(0.0, 4.0 + 1e-9, STEP)
+    k = 100
+    base = np.full(len(t), 14.0)
+    jump = np.where(np.arange(len(t)) > k, 25.0, 14.0)
+    plans = [classical_dfs(profiles.DesiredPath("m", t, None, modulus=m), model, state=(np.zeros(model.n), np.zeros(model.n)))
+             for m in (base, jump)]
+    np.testing.assert_array_equal(plans[0].u[:k + 1], plans[1].u[:k + 1])
+    np.testing.assert_array_equal(plans[0].jerk[:k + 1], plans[1].jerk[:k + 1])
+    assert np.any(plans[0].jerk[k + 1:] != plans[1].jerk[k + 1:])

@@ -253,6 +253,45 @@ def _rate_command(error, gain, J):
 # The classical dynamic-flight-simulator loop
 
 
+def _check_dfs(model: Model, what: str) -> None:
+    config = model.config
+    if config.free[:1] != (0,) or not set(config.free[1:]) <= {3, 4, 5}:
+        raise ValueError(f"{what} is for the yaw and the gimbals (dfs, dfs-yaw), not "
+                         f"{config.name}'s {', '.join(config.joint_names)}")
+
+
+def _rate_reference(M_d, model: Model) -> np.ndarray:
+    """The yaw rate [rad/s] that gives the modulus M_d in steady rotation (7.4.2), within its limit."""
+    radius = abs(model.config.fixed[1]) or DFS_RADIUS
+    g = model.params.gravity
+    rate = np.sqrt(np.sqrt(np.maximum(np.asarray(M_d, dtype=float) ** 2 - g**2, 0.0)) / radius)
+    return np.minimum(rate, model.limits.velocity[0])
+
+
+def _gimbal_targets(model: Model, q1, qd1, qdd1) -> np.ndarray:
+    """The gimbals' alignment angles (K, n - 1) for the yaw's states (K,): the outer and cabin gimbal
+    of :func:`~desdemona.kinematics.gimbal_alignment`, the inner gimbal at 0 (the gimbals at zero: f in
+    the arm frame)."""
+    n, joint_of = model.n, model.config.free
+    zero = np.zeros((len(q1), n - 1))
+    f = model.f_cabin(np.c_[q1, zero], np.c_[qd1, zero], np.c_[qdd1, zero])
+    outer, cabin = gimbal_alignment(f)
+    return np.stack([{3: outer, 4: np.zeros(len(q1)), 5: cabin}[joint_of[i]] for i in range(1, n)], axis=1)
+
+
+def steady_start(path: DesiredPath, model: Model) -> tuple[np.ndarray, np.ndarray]:
+    """(q0, qd0) of a ``dfs`` or ``dfs-yaw`` session that begins in steady rotation: the arm turning at
+    the rate that gives the path's first modulus (7.4.2), the gimbals still at the angles that put the
+    felt force along the occupant's vertical. A centrifuge spins up before its run; the thesis' on-line
+    catapult (7.5.1) starts from such a state, its pulses on a constant 1.5 g."""
+    _check_dfs(model, "a steady start")
+    rate = float(_rate_reference(path.sample_modulus([path.t[0]]), model)[0])
+    q, qd = np.zeros(model.n), np.r_[rate, np.zeros(model.n - 1)]
+    if model.n > 1:
+        q[1:] = _gimbal_targets(model, np.zeros(1), np.array([rate]), np.zeros(1))[0]
+    return q, qd
+
+
 def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.0, state=None) -> Plan:
     """The classical loop of figure 7.4 on ``dfs-yaw`` (the yaw) or ``dfs`` (the yaw and the gimbals).
 
@@ -278,44 +317,22 @@ def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.
     Every step then passes the guard (:meth:`Model.step_limit_use`), its commands scaled down until it
     does. path : desired modulus M_d (from its S_d or given); model : a ``dfs`` or ``dfs-yaw`` Model;
     times : the grid to run the loop on (default the path's); gain : the rate loop's bandwidth [1/s];
-    state : (q0, qd0[, qdd0]) of the free joints at the start, by default the yaw turning at the
-    reference rate of the first sample and the gimbals at rest at their alignment angles (as an off-line
-    guess); the accelerations start at zero (or at qdd0).
+    state : (q0, qd0[, qdd0]) of the free joints at the start, by default :func:`steady_start` (as an
+    off-line guess); the accelerations start at zero (or at qdd0).
     Returns the free joints' plan on ``times``: continuous accelerations on a machine with jerk limits.
     """
-    config = model.config
-    if config.free[:1] != (0,) or not set(config.free[1:]) <= {3, 4, 5}:
-        raise ValueError(f"the classical loop drives the yaw and the gimbals (dfs, dfs-yaw), not "
-                         f"{config.name}'s {', '.join(config.joint_names)}")
+    _check_dfs(model, "the classical loop of 7.4.2")
     t = path.t if times is None else np.asarray(times, dtype=float)
-    n, lim, g = model.n, model.limits, model.params.gravity
-    radius = abs(config.fixed[1]) or DFS_RADIUS
-    M_d = path.sample_modulus(t)
-    reference = np.sqrt(np.sqrt(np.maximum(M_d**2 - g**2, 0.0)) / radius)
-    reference = np.minimum(reference, lim.velocity[0])
+    n, lim = model.n, model.limits
+    reference = _rate_reference(path.sample_modulus(t), model)
     gimbals = np.arange(1, n)
-    joint_of = np.array(config.free)
-
-    def targets(q1, qd1, qdd1):
-        """The gimbals' alignment angles (K, n - 1) for the yaw's states (K,) (the gimbals at zero: f
-        in the arm frame)."""
-        zero = np.zeros((len(q1), n - 1))
-        f = model.f_cabin(np.c_[q1, zero], np.c_[qd1, zero], np.c_[qdd1, zero])
-        outer, cabin = gimbal_alignment(f)
-        return np.stack([{3: outer, 4: np.zeros(len(q1)), 5: cabin}[joint_of[i]] for i in gimbals], axis=1)
-
-    if state is None:
-        q, qd = np.zeros(n), np.r_[reference[0], np.zeros(n - 1)]
-        if n > 1:
-            q[gimbals] = targets(np.zeros(1), reference[:1], np.zeros(1))[0]
-    else:
-        q, qd = start_state(state, n)
+    q, qd = steady_start(path, model) if state is None else start_state(state, n)
     a = start_acceleration(state, n)
     q0, qd0 = q.copy(), qd.copy()
     yaw, gimbal = _Follower(model, [0]), _Follower(model, gimbals)
     guard = _Guard(model)
     u, jerk = np.zeros((len(t) - 1, n)), np.zeros((len(t) - 1, n))
-    w = np.array([GIMBAL_BANDWIDTH[j] for j in config.free[1:]])
+    w = np.array([GIMBAL_BANDWIDTH[j] for j in model.config.free[1:]])
     for k in range(len(t) - 1):
         h = float(t[k + 1] - t[k])
         # yaw: the rate loop, its acceleration within what torque and power allow at this rate
@@ -323,7 +340,7 @@ def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.
         rate = abs(qd[0]) + abs(a[0]) * h
         accel = [min(lim.effort[0] / inertia, lim.power[0] / (inertia * max(rate, 1e-9)))]
         command = np.zeros(n)
-        command[0] = np.clip(_rate_command(reference[k + 1] - qd[0], gain, yaw.J[0]), -accel[0], accel[0])
+        command[0] = np.clip(_rate_command(reference[k] - qd[0], gain, yaw.J[0]), -accel[0], accel[0])
         bold = yaw.step(q, qd, a, h, command, accel)
         if n > 1:
             # the gimbals' targets along the yaw's step (start, middle, end) and the parabola through
@@ -331,7 +348,7 @@ def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.
             # pole at the bandwidth) that sets the gimbals' jerk
             s = np.array([0.0, 0.5, 1.0]) * h
             yaw_q, yaw_qd = advance(q[0], qd[0], bold[0][0], s, bold[1][0])
-            ref = targets(yaw_q, yaw_qd, bold[0][0] + bold[1][0] * s)
+            ref = _gimbal_targets(model, yaw_q, yaw_qd, bold[0][0] + bold[1][0] * s)
             ref_rate = (4.0 * ref[1] - 3.0 * ref[0] - ref[2]) / h
             ref_accel = 4.0 * (ref[2] - 2.0 * ref[1] + ref[0]) / (h * h)
             error = np.mod(ref[0] - q[gimbals] + np.pi, 2.0 * np.pi) - np.pi
