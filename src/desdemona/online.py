@@ -341,6 +341,8 @@ class MPC:
         lbx[n:2 * n], ubx[n:2 * n] = qd, qd
         if self.smooth:
             lbx[2 * n:3 * n], ubx[2 * n:3 * n] = a, a
+        if self.model.config.takes_modulus:
+            self._one_way(qd, lbx, ubx)
         if prob.nz:
             x[:, prob.n_motion:] = self.z
             lbx[prob.n_motion:prob.nx], ubx[prob.n_motion:prob.nx] = self.z, self.z
@@ -362,6 +364,24 @@ class MPC:
         if self.smooth:
             return (x[:-1, 2 * n:3 * n], controls), success, elapsed
         return (controls, np.zeros_like(controls)), success, elapsed
+
+    def _one_way(self, qd, lbx, ubx) -> None:
+        """Keep the arm turning the way it turns now (forwards from rest) over the plan: bounds on the
+        yaw's rate at every node after the first, in place.
+
+        The modulus cues of ``dfs`` and ``dfs-yaw`` are the same for either direction of turning
+        ("without influencing the optimization results, q1' can be assumed positive", 7.4.2), so the
+        cue has a mirror image of every plan, and a plan linearised on a slowing arm can slide into
+        the mirror: through zero rate (where the modulus is only g) and up the other way, instead of
+        speeding up again. Measured on the roller coaster on dfs started in steady rotation, perfect
+        preview: modulus RMS 3.00 with the arm reversing (down to -2.5 rad/s), 1.86 kept one way.
+        """
+        nw, k = self.problem.nx + self.problem.nu, self.model.config.free.index(0)
+        rates = slice(nw + self.model.n + k, len(lbx), nw)  # the yaw's rate at nodes 1..N
+        if qd[k] >= 0.0:
+            lbx[rates] = np.maximum(lbx[rates], 0.0)
+        else:
+            ubx[rates] = np.minimum(ubx[rates], 0.0)
 
     def _per_step(self, accelerations, jerks) -> tuple[np.ndarray, np.ndarray]:
         """A plan's (accelerations, jerks) per interval as the same plan per step (the grid's intervals
