@@ -222,8 +222,9 @@ def closed_loop(controller, path: DesiredPath, predictor, q0=None, qd0=None,
 
     With ``delay`` (thesis 7.1, figure 7.2) the plan computed in the cycle that starts at t is applied
     from t + T_c: the controller is given the state predicted for then (the commands of the running
-    cycle applied to the state at t) and the preview from t + T_c as predicted at t; the first cycle
-    holds the machine still (zero accelerations: the session starts at rest).
+    cycle applied to the state at t) and the preview from t + T_c as predicted at t. The first plan is
+    computed in the cycle before the session starts (recorded at t = -T_c), from the start state and
+    the preview from t = 0, as a controller that is running when the session begins would have it.
     """
     o = controller.options
     h, n, r = o.step, controller.model.n, o.replan_steps
@@ -234,6 +235,17 @@ def closed_loop(controller, path: DesiredPath, predictor, q0=None, qd0=None,
     start_q, start_qd = q.copy(), qd.copy()
     u, jerks, starts, sources, times, reasons = [], [], [], [], [], []
     pending = (np.zeros((r, n)), np.zeros((r, n)))  # with delay: the commands of the running cycle
+
+    def record(now, command):
+        starts.append(now)
+        sources.append(command.source)
+        times.append(command.compute_time)
+        reasons.append(command.reason)
+
+    if o.delay:  # the first plan: computed in the cycle before the session, from its known start
+        command = controller.step((q, qd, a), predictor(path, 0.0, o.horizon))
+        record(-o.period, command)
+        pending = (command.sequence, command.jerks)
     for k in range(0, steps, r):
         now = k * h
         if o.delay:
@@ -245,10 +257,7 @@ def closed_loop(controller, path: DesiredPath, predictor, q0=None, qd0=None,
         else:
             command = controller.step((q, qd, a), predictor(path, now, o.horizon))
             sequence, jerk_sequence = command.sequence, command.jerks
-        starts.append(now)
-        sources.append(command.source)
-        times.append(command.compute_time)
-        reasons.append(command.reason)
+        record(now, command)
         for qdd, jerk in list(zip(sequence, jerk_sequence))[:steps - k]:
             u.append(qdd)
             jerks.append(jerk)
