@@ -183,3 +183,25 @@ def test_from_rest_the_guesses_spin_the_yaw_up_and_leave_the_stationary_point(pa
     assert best.success and best.cost < 0.75 * still.cost
     np.testing.assert_allclose(best.x[0, 2:], 0.0, atol=1e-12)
     np.testing.assert_allclose(best.x[-1, 1:], 0.0, atol=1e-9)  # at rest, track centred at the end
+
+
+def test_a_start_at_the_end_of_a_joints_travel_is_planned_from(params):
+    """The optimiser keeps positions a parabola's bulge inside their limits; a start in that band (the
+    track at rest at its end) must still be planned from, off-line and on-line, not be infeasible."""
+    from desdemona.online import MPC, MPCOptions
+    from desdemona.predictors import predict_perfect
+
+    model = Model(params, "yaw-track-cabin")
+    path = profiles.catapult(level=10.0, push=1.0, quiet=0.5, duration=3.0)
+    start = (np.array([0.0, -4.0, 0.0]), np.zeros(3))
+    options = ProblemOptions(h_u=0.05, initial="given", initial_state=start)
+    problem = CueingProblem(model, path, options)
+    assert problem.position_bounds()[0][1] > -4.0  # the band the start lies in
+    result = optimize(path, model, OptimizeOptions(options, starts=1))
+    assert result.converged and result.check.passed
+    np.testing.assert_allclose(result.plan.q0, start[0])
+    mpc = MPC(model, MPCOptions(horizon=1.0, step=0.05, deadline=float("inf")))
+    assert mpc.step((*start, np.zeros(3)), predict_perfect(path, 0.0, 1.0)).source == "mpc"
+    # inside the band nothing changes
+    inside = CueingProblem(model, path, dataclasses.replace(options, initial_state=(np.zeros(3), np.zeros(3))))
+    assert all(a is b for a, b in zip(inside.bounds_from(np.zeros(3)), (inside.lbx, inside.ubx, inside.lbg, inside.ubg)))

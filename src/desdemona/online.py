@@ -336,7 +336,8 @@ class MPC:
         u = self._leave_rest(qd, u)
         # RTI: a consistent point, not clipped
         x, controls = prob.guess(q, qd, u, a, clip=self.options.method != "rti")
-        lbx, ubx = prob.lbx.copy(), prob.ubx.copy()
+        lbx, ubx, lbg, ubg = prob.bounds_from(q)
+        lbx, ubx = lbx.copy(), ubx.copy()
         lbx[:n], ubx[:n] = q, q
         lbx[n:2 * n], ubx[n:2 * n] = qd, qd
         if self.smooth:
@@ -352,11 +353,11 @@ class MPC:
         if self.options.method == "rti":
             H, gradient, A, g = self._qp_data(w, p)
             g = np.asarray(g).ravel()
-            sol = self._qp(h=H, g=gradient, a=A, lba=prob.lbg - g, uba=prob.ubg - g, lbx=lbx - w, ubx=ubx - w)
+            sol = self._qp(h=H, g=gradient, a=A, lba=lbg - g, uba=ubg - g, lbx=lbx - w, ubx=ubx - w)
             success = bool(self._qp.stats()["success"])
             w = w + np.asarray(sol["x"]).ravel()
         else:
-            sol = prob.solver(x0=w, lbx=lbx, ubx=ubx, lbg=prob.lbg, ubg=prob.ubg, p=p)
+            sol = prob.solver(x0=w, lbx=lbx, ubx=ubx, lbg=lbg, ubg=ubg, p=p)
             success = bool(prob.solver.stats()["success"])
             w = sol["x"]
         elapsed = time.perf_counter() - start

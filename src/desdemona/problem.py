@@ -674,12 +674,66 @@ class CueingProblem:
                              if self.model.params.joints[i].kind == "prismatic"]
                 lo[prismatic] = hi[prismatic] = 0.0
         self.lbx, self.ubx = lbx, ubx
-        # per stage: the gaps (equalities), then the families in the order of the stage's g
-        lbg_stage = np.r_[np.zeros(nx), *[f.lower for f in self.families]]
-        ubg_stage = np.r_[np.zeros(nx), *[f.upper for f in self.families]]
+        self.lbg, self.ubg = self._constraint_bounds(None)
+        if o.initial == "given":
+            self.lbx, self.ubx, self.lbg, self.ubg = self.bounds_from(start_state(o.initial_state, n)[0])
+
+    def _constraint_bounds(self, widen=None) -> tuple[np.ndarray, np.ndarray]:
+        """(lbg, ubg): per stage the gaps (equalities), then the families in the order of the stage's
+        g. ``widen`` = (lower, upper, stages): the position and stopping families of the first
+        ``stages[j]`` stages take bound j at least that far out (:meth:`bounds_from`)."""
+        nx, N, bounded = self.nx, self.N, self.model.limits.bounded
+        rows_lo, rows_hi = [], []
+        for k in range(N):
+            lower, upper = [np.zeros(nx)], [np.zeros(nx)]
+            for f in self.families:
+                lo, hi = f.lower, f.upper
+                if widen is not None and f.name in ("position", "stopping"):
+                    wide = k < widen[2][bounded]
+                    count = lo.size // len(bounded)
+                    lo = np.minimum(lo, np.tile(np.where(wide, widen[0][bounded], lo[:len(bounded)]), count))
+                    hi = np.maximum(hi, np.tile(np.where(wide, widen[1][bounded], hi[:len(bounded)]), count))
+                lower.append(lo)
+                upper.append(hi)
+            rows_lo.append(np.concatenate(lower))
+            rows_hi.append(np.concatenate(upper))
         terminal = np.ones(self.n_terminal)  # torques and powers over their limits at the last node
-        self.lbg = np.r_[lbg_stage[:nx], np.zeros(self.n_initial), lbg_stage[nx:], np.tile(lbg_stage, N - 1), -terminal]
-        self.ubg = np.r_[ubg_stage[:nx], np.zeros(self.n_initial), ubg_stage[nx:], np.tile(ubg_stage, N - 1), terminal]
+        initial = np.zeros(self.n_initial)
+        return (np.r_[rows_lo[0][:nx], initial, rows_lo[0][nx:], *rows_lo[1:], -terminal],
+                np.r_[rows_hi[0][:nx], initial, rows_hi[0][nx:], *rows_hi[1:], terminal])
+
+    def bounds_from(self, q0) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """(lbx, ubx, lbg, ubg) for a plan that starts at the positions q0 (n,).
+
+        The optimiser keeps positions a bulge (qdd_max h^2 / 8) inside their limits, so that the
+        parabola between two points stays inside too. A start in that band (at rest at the end of a
+        joint's travel, say) could then not plan at all: it cannot move the first millimetre within
+        one step's jerk, and an on-line controller would brake for ever. Where q0 lies in the band,
+        the bounds of that joint (nodes, position and stopping rows) reach out to q0 over the time a
+        jerk-limited start from rest needs to cross the band, and one interval more; after that the
+        plan is inside, as everywhere. The bounds unchanged where q0 lies inside."""
+        q0 = np.asarray(q0, dtype=float)
+        qmin, qmax = self.position_bounds()
+        lower, upper = np.minimum(qmin, q0), np.maximum(qmax, q0)
+        if np.array_equal(lower, qmin) and np.array_equal(upper, qmax):
+            return self.lbx, self.ubx, self.lbg, self.ubg
+        lim = self.model.limits
+        band = np.maximum(np.nan_to_num(qmin) - np.nan_to_num(lower), np.nan_to_num(upper) - np.nan_to_num(qmax))
+        if self.smooth:
+            crossing = np.cbrt(6.0 * band / lim.jerk)
+        else:
+            crossing = np.sqrt(2.0 * band / lim.acceleration)
+        t = self.t_nodes - self.t_nodes[0]
+        stages = np.searchsorted(t, crossing, side="right") + 1  # intervals started before it is crossed, and one more
+        n, nw = self.model.n, self.nx + self.nu
+        lbx, ubx = self.lbx.copy(), self.ubx.copy()
+        below, above = lower < qmin, upper > qmax
+        for k in range(1, self.N + 1):  # the start node is the start
+            wide = k <= stages
+            lo, hi = lbx[k * nw:k * nw + n], ubx[k * nw:k * nw + n]  # views
+            lo[:] = np.where(wide & below, np.minimum(lo, lower), lo)
+            hi[:] = np.where(wide & above, np.maximum(hi, upper), hi)
+        return (lbx, ubx, *self._constraint_bounds((lower, upper, stages)))
 
     def _solver(self) -> ca.Function:
         o = self.options
