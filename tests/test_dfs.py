@@ -39,10 +39,8 @@ def test_online_dfs_catapult_in_the_thesis_setting_is_40_percent_below_the_class
     already turning at that 1.5 g when they come (``--initial steady``). From rest both controllers
     first spend 2.5 s spinning up, and the off-line optimum from rest is only 33 % below the classical
     loop (benchmarks)."""
-    from desdemona.baselines import steady_start
-
     path, model = profiles.dfs_catapult(), Model(params, "dfs")
-    result = run(path, model, OnlineOptions(SESSION, initial_state=steady_start(path, model)))
+    result = run(path, model, OnlineOptions(SESSION, initial="steady"))
     assert result.check.passed and set(result.loop.sources) == {"mpc"}
     assert most_reversals(result.quality) <= 1.0
     # measured 1.011 against 2.328 (57 % below); the felt direction 1.1 deg RMS against 5.5

@@ -301,8 +301,8 @@ def test_the_command_plans_further_ahead_where_the_track_moves(tmp_path, config,
 
 
 def test_online_command_starts_at_rest_steady_or_a_given_state(tmp_path, capsys):
-    """--initial rest (the default: every joint still at its centre), steady (a centrifuge spun up to
-    the path's first modulus, the cabin aligned with the force; dfs only) or given (--initial-state)."""
+    """--initial rest (the default: every joint still at its centre), steady (on dfs a centrifuge spun
+    up to the path's first modulus, the cabin aligned with the force) or given (--initial-state)."""
     import json
 
     from desdemona.baselines import steady_start
@@ -335,10 +335,8 @@ def test_online_command_starts_at_rest_steady_or_a_given_state(tmp_path, capsys)
     capsys.readouterr()
     for bad, message in ((["--initial", "given"], "go together"),
                          (["--initial-state", state], "go together"),
-                         (["--initial", "given", "--initial-state", "0,0,0,0;9,0,0,0"], "above its limit"),
-                         (["--initial", "steady", "--config", "yaw-track"], "centrifuge")):
-        args = ["catapult", *bad] if "yaw-track" in bad else [*common, *bad]
-        assert main(["online", *args, "--out", str(tmp_path / "bad")]) == 2
+                         (["--initial", "given", "--initial-state", "0,0,0,0;9,0,0,0"], "above its limit")):
+        assert main(["online", *common, *bad, "--out", str(tmp_path / "bad")]) == 2
         assert message in capsys.readouterr().err
         assert not (tmp_path / "bad").exists()
 
@@ -362,3 +360,28 @@ def test_hold_predictor_keeps_noise_out_and_follows_a_step():
     hold = HoldPredictor()
     for now in (0.5, 1.0, 1.5):
         assert hold(ramp, now, 1.0).modulus[0] == pytest.approx(10.0 + 2.0 * now, abs=1e-9)
+
+
+def test_a_steady_start_tilts_the_cabin_to_the_first_desired_force(params):
+    """Off dfs, --initial steady starts still with the cabin tilted so that gravity is felt along the
+    path's first force (the cosine starts at f_y = 5 m/s^2); the classical washout starts trimmed too.
+    Measured on the 5 s cosine on full: MPC 0.061 from the tilted start against 0.641 from a level one
+    (4 s horizon at 20 Hz)."""
+    from desdemona.baselines import steady_start
+
+    path = profiles.cosine()
+    model = Model(params, "full")
+    q0, qd0 = steady_start(path, model)
+    np.testing.assert_array_equal(qd0, 0.0)
+    f = model.S(q0, qd0, np.zeros(6))[3:6]
+    f_d = path.S_d[0, 3:6]
+    np.testing.assert_allclose(f / np.linalg.norm(f), f_d / np.linalg.norm(f_d), atol=1e-12)
+    np.testing.assert_array_equal(q0[:3], 0.0)  # yaw, track and heave at home
+    for config in ("yaw-track", "yaw-track-cabin"):  # nothing can tilt: rest at home
+        assert not np.any(np.r_[steady_start(path, Model(params, config))])
+    options = dataclasses.replace(OPTIONS, horizon=2.0)
+    rest, steady = (run(path, model, OnlineOptions(options, initial=start)) for start in ("rest", "steady"))
+    assert steady.check.passed and np.allclose(steady.plan.q0, q0)
+    assert steady.check.rms < 0.5 * rest.check.rms
+    with pytest.raises(ValueError, match="go together"):
+        OnlineOptions(initial="given")

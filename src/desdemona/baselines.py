@@ -280,15 +280,36 @@ def _gimbal_targets(model: Model, q1, qd1, qdd1) -> np.ndarray:
 
 
 def steady_start(path: DesiredPath, model: Model) -> tuple[np.ndarray, np.ndarray]:
-    """(q0, qd0) of a ``dfs`` or ``dfs-yaw`` session that begins in steady rotation: the arm turning at
-    the rate that gives the path's first modulus (7.4.2), the gimbals still at the angles that put the
-    felt force along the occupant's vertical. A centrifuge spins up before its run; the thesis' on-line
-    catapult (7.5.1) starts from such a state, its pulses on a constant 1.5 g."""
-    _check_dfs(model, "a steady start")
-    rate = float(_rate_reference(path.sample_modulus([path.t[0]]), model)[0])
-    q, qd = np.zeros(model.n), np.r_[rate, np.zeros(model.n - 1)]
-    if model.n > 1:
-        q[1:] = _gimbal_targets(model, np.zeros(1), np.array([rate]), np.zeros(1))[0]
+    """(q0, qd0) of the free joints for a session that begins in steady state with the path's first
+    sample, as a simulator is trimmed before its run.
+
+    - ``dfs``, ``dfs-yaw``: the arm turning at the rate that gives the path's first modulus (7.4.2),
+      the gimbals still at the angles that put the felt force along the occupant's vertical. A
+      centrifuge spins up before its run; the thesis' on-line catapult (7.5.1) starts from such a
+      state, its pulses on a constant 1.5 g.
+    - the others: at rest, with the cabin tilted (where its outer gimbal q4 and cabin gimbal q6 are
+      free) so that gravity is felt along the first desired specific force: q6 = atan2(-n_x, n_z),
+      q4 = atan2(n_y, hypot(n_x, n_z)) for its direction n, which puts (0, 0, g) of the world at g n in
+      the cabin; at rest at home where no gimbal can tilt (``yaw-track``, ``yaw-track-cabin``).
+    """
+    n, free = model.n, model.config.free
+    q, qd = np.zeros(n), np.zeros(n)
+    if model.config.takes_modulus:
+        _check_dfs(model, "a steady start")
+        rate = float(_rate_reference(path.sample_modulus([path.t[0]]), model)[0])
+        qd[0] = rate
+        if n > 1:
+            q[1:] = _gimbal_targets(model, np.zeros(1), np.array([rate]), np.zeros(1))[0]
+        return q, qd
+    f = path.sample([path.t[0]])[0, 3:6]
+    nx, ny, nz = f / (np.linalg.norm(f) or 1.0)
+    if 3 in free and 5 in free:
+        angles = {3: np.arctan2(ny, np.hypot(nx, nz)), 5: np.arctan2(-nx, nz)}
+    else:  # one tilt axis: the component it can give
+        angles = {3: np.arctan2(ny, nz), 5: np.arctan2(-nx, nz)}
+    for joint, angle in angles.items():
+        if joint in free:
+            q[free.index(joint)] = angle
     return q, qd
 
 
@@ -397,15 +418,18 @@ class Washout:
     gain: float = 0.5
 
 
-def _filtered(numerator, denominator, u, dt) -> np.ndarray:
+def _filtered(numerator, denominator, u, dt, steady: bool = False) -> np.ndarray:
     """The response of a continuous SISO filter to ``u`` (K,) sampled at ``dt``, inputs held (ZOH),
-    from a zero state."""
+    from a zero state, or from the steady state of the first input (``steady``)."""
     b, a, _ = scipy.signal.cont2discrete((numerator, denominator), dt, method="zoh")
-    return scipy.signal.lfilter(np.ravel(b), a, u)
+    b = np.ravel(b)
+    if not steady:
+        return scipy.signal.lfilter(b, a, u)
+    return scipy.signal.lfilter(b, a, u, zi=scipy.signal.lfilter_zi(b, a) * u[0])[0]
 
 
 def classical_washout(path: DesiredPath, model: Model, times=None, settings: Washout = Washout(),
-                      state=None) -> Plan:
+                      state=None, trimmed: bool = False) -> Plan:
     """The classical washout a motion simulator runs today, on the yaw-track, yaw-track-cabin and
     full configurations (Reid & Nahon's classical algorithm, with tilt coordination where the cabin
     can tilt).
@@ -426,7 +450,9 @@ def classical_washout(path: DesiredPath, model: Model, times=None, settings: Was
     (:meth:`Model.step_limit_use`), the command (and so the jerk) scaled down until it passes. Without
     jerk limits the accelerations step, as before.
     Returns the free joints' plan on ``times`` (default: the path's grid), from ``state`` =
-    (q0, qd0[, qdd0]) (default rest).
+    (q0, qd0[, qdd0]) (default rest). ``trimmed``: the filters start in the steady state of the first
+    sample, as for a session that begins trimmed to it (:func:`steady_start`); else from zero, as if
+    the path had been at rest before t = 0.
     """
     o = settings
     t = path.t if times is None else np.asarray(times, dtype=float)
@@ -445,17 +471,17 @@ def classical_washout(path: DesiredPath, model: Model, times=None, settings: Was
     target_angle = np.full((len(t), model.n), np.nan)  # tilt coordination
     for k, joint in enumerate(free):
         if joint == 1:
-            target_acc[:, k] = _filtered(*hp2, S_d[:, 4], dt)
+            target_acc[:, k] = _filtered(*hp2, S_d[:, 4], dt, trimmed)
         elif joint == 2:
-            target_acc[:, k] = _filtered(*hp2, S_d[:, 5] - g, dt)
+            target_acc[:, k] = _filtered(*hp2, S_d[:, 5] - g, dt, trimmed)
         elif joint in (0, 4) and (joint == 0 or 0 not in free):
-            target_rate[:, k] = _filtered(*hp1, S_d[:, 2], dt)
+            target_rate[:, k] = _filtered(*hp1, S_d[:, 2], dt, trimmed)
         elif joint == 3:
-            target_rate[:, k] = _filtered(*hp1, S_d[:, 0], dt)
-            target_angle[:, k] = np.arcsin(np.clip(_filtered(*lp2, S_d[:, 4], dt) / g, -0.5, 0.5))
+            target_rate[:, k] = _filtered(*hp1, S_d[:, 0], dt, trimmed)
+            target_angle[:, k] = np.arcsin(np.clip(_filtered(*lp2, S_d[:, 4], dt, trimmed) / g, -0.5, 0.5))
         elif joint == 5:
-            target_rate[:, k] = _filtered(*hp1, S_d[:, 1], dt)
-            target_angle[:, k] = -np.arcsin(np.clip(_filtered(*lp2, S_d[:, 3], dt) / g, -0.5, 0.5))
+            target_rate[:, k] = _filtered(*hp1, S_d[:, 1], dt, trimmed)
+            target_angle[:, k] = -np.arcsin(np.clip(_filtered(*lp2, S_d[:, 3], dt, trimmed) / g, -0.5, 0.5))
     prismatic = np.array([model.params.joints[j].kind == "prismatic" for j in free])
     tilt = ~np.isnan(target_angle[0])
     q, qd = start_state(state, model.n)

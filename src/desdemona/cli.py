@@ -163,10 +163,12 @@ def _parser() -> argparse.ArgumentParser:
                         help="with --predictor route: a recording of the course (same channels as the path)")
     online.add_argument("--initial", choices=("rest", "steady", "given"), default="rest",
                         help="the machine's state when the session starts: rest: every joint still at its "
-                             "centre (default); steady (dfs, dfs-yaw): the arm already turning at the rate "
-                             "of the path's first modulus, the cabin aligned with the felt force, as a "
-                             "centrifuge spun up before its run (the thesis' on-line catapult, 7.5.1); "
-                             "given: the state of --initial-state")
+                             "centre (default); steady: trimmed to the path's first sample, on dfs and "
+                             "dfs-yaw the arm already turning at the rate of its modulus with the cabin "
+                             "aligned (a centrifuge spun up before its run, as the thesis' on-line catapult "
+                             "of 7.5.1), elsewhere still with the cabin tilted so that gravity is felt "
+                             "along its force (where the gimbals can tilt); given: the state of "
+                             "--initial-state")
     online.add_argument("--initial-state", metavar="Q;QD", dest="initial_state", default=None,
                         help="with --initial given: positions and rates of the free joints in their order "
                              "(see 'desdemona model'), SI units (rad, m; rad/s, m/s)")
@@ -470,8 +472,7 @@ def _run_online(args) -> int:
                             f"differ from the path's")
     elif args.reference is not None:
         raise UserError("--reference is used only with --predictor route")
-    options = online.OnlineOptions(mpc, predictor=args.predictor, reference=reference,
-                                   initial_state=_online_start(args, model, path))
+    options = online.OnlineOptions(mpc, predictor=args.predictor, reference=reference, **_online_start(args, model))
     result = online.run(path, model, options)
     unreachable = sizing.unreachable(path, model)
     report.write_online(result, out, report.command_line(), args.overwrite, unreachable=unreachable,
@@ -493,19 +494,12 @@ def _run_online(args) -> int:
     return 0
 
 
-def _online_start(args, model: Model, path: profiles.DesiredPath):
-    """The on-line session's start (q0, qd0) from --initial and --initial-state; None for rest."""
+def _online_start(args, model: Model) -> dict:
+    """The OnlineOptions fields of --initial and --initial-state."""
     if (args.initial_state is not None) != (args.initial == "given"):
         raise UserError("--initial given and --initial-state go together")
-    if args.initial == "given":
-        return parse_state(args.initial_state, model)
-    if args.initial == "steady":
-        if not model.config.takes_modulus:
-            raise UserError(f"--initial steady is a centrifuge's start (dfs, dfs-yaw), not {model.config.name}'s")
-        from desdemona.baselines import steady_start
-
-        return steady_start(model.config.cue_path(path), model)
-    return None
+    state = None if args.initial_state is None else parse_state(args.initial_state, model)
+    return {"initial": args.initial, "initial_state": state}
 
 
 def _run_profiles(args) -> int:

@@ -35,7 +35,7 @@ import casadi as ca
 import numpy as np
 
 from desdemona import metrics
-from desdemona.baselines import classical_dfs, classical_washout
+from desdemona.baselines import classical_dfs, classical_washout, steady_start
 from desdemona.model import Model
 from desdemona.perception import VestibularModel
 from desdemona.plan import Plan, advance, start_state
@@ -495,23 +495,35 @@ class MPC:
 class OnlineOptions:
     """Options of :func:`run`: the controller's (:class:`MPCOptions`), the predictor's name
     (:data:`desdemona.predictors.PREDICTORS`) and, for ``route``, its ``reference`` recording, and the
-    machine's state when the session starts, ``initial_state`` = (q0, qd0) of the free joints; None for
-    rest at the centre (every joint at 0, as a real session starts)."""
+    machine's state when the session starts: ``initial`` "rest" (every joint still at its centre, as a
+    real session starts; the default), "steady" (in steady state with the path's first sample,
+    :func:`desdemona.baselines.steady_start`: on ``dfs`` the arm already turning, elsewhere the cabin
+    tilted to it; the classical washout then starts trimmed too) or "given": ``initial_state`` =
+    (q0, qd0) of the free joints (a given ``initial_state`` alone means "given")."""
 
     mpc: MPCOptions = MPCOptions()
     predictor: Literal["perfect", "hold", "linear", "route"] = "perfect"
     initial_state: tuple | None = None
     reference: DesiredPath | None = None
+    initial: Literal["rest", "steady", "given"] | None = None
 
     def __post_init__(self):
         if self.predictor not in PREDICTORS:
             raise ValueError(f"predictor = {self.predictor!r}: must be one of {', '.join(PREDICTORS)}")
         if self.predictor == "route" and self.reference is None:
             raise ValueError("predictor 'route' needs a reference recording of the course")
+        if self.initial is None:
+            object.__setattr__(self, "initial", "rest" if self.initial_state is None else "given")
+        if self.initial not in ("rest", "steady", "given"):
+            raise ValueError(f"initial = {self.initial!r}: must be rest, steady or given")
+        if (self.initial == "given") != (self.initial_state is not None):
+            raise ValueError("initial 'given' and initial_state go together")
 
-    def start(self, n: int) -> tuple[np.ndarray, np.ndarray]:
-        """(q0, qd0) of ``n`` free joints: the given state, or rest at the centre."""
-        return start_state(self.initial_state, n)
+    def start(self, path: DesiredPath, model: Model) -> tuple[np.ndarray, np.ndarray]:
+        """(q0, qd0) of the model's free joints when the session on ``path`` starts."""
+        if self.initial == "steady":
+            return steady_start(model.config.cue_path(path), model)
+        return start_state(self.initial_state, model.n)
 
 
 @dataclass(frozen=True, eq=False)
@@ -571,7 +583,7 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
     step = options.mpc.step
     path = model.config.cue_path(path)
     reference = None if options.reference is None else model.config.cue_path(options.reference)
-    q0, qd0 = options.start(model.n)
+    q0, qd0 = options.start(path, model)
     controller = MPC(model, options.mpc, weights=path.weights)
     loop = closed_loop(controller, path, predictor(options.predictor, reference), q0=q0, qd0=qd0)
     result, _ = check(model, path, loop.plan, step=step)
@@ -581,7 +593,7 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
     if model.config.takes_modulus:
         classical = classical_dfs(path, model, times=nodes, state=(q0, qd0))
     else:
-        classical = classical_washout(path, model, times=nodes, state=(q0, qd0))
+        classical = classical_washout(path, model, times=nodes, state=(q0, qd0), trimmed=options.initial == "steady")
     baseline_check, _ = check(model, path, classical, step=step)
     baseline = evaluate_plan(model, path, classical, nodes)
     return OnlineResult(path=path, model=model, options=options, loop=loop, deadline=controller.deadline,
