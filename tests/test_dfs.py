@@ -89,14 +89,12 @@ def test_the_arm_keeps_turning_one_way(params):
     slowing arm can slide through zero rate into the mirror image instead of speeding up again. A
     clip of the roller coaster (18-25 s) from steady rotation did that: modulus RMS 5.90 with the arm
     reversing to -1.7 rad/s, against 3.26 kept one way (and the classical loop's 5.01)."""
-    from desdemona.baselines import steady_start
-
     coaster = profiles.roller_coaster()
     keep = (coaster.t >= 18.0) & (coaster.t <= 25.0)
     path = profiles.DesiredPath("clip", coaster.t[keep] - 18.0, None, modulus=coaster.modulus[keep])
     model = Model(params, "dfs")
     result = run(path, model, OnlineOptions(MPCOptions(horizon=2.0, step=0.05, deadline=float("inf")),
-                                            initial_state=steady_start(path, model)))
+                                            initial="steady"))
     assert result.check.passed
     assert result.trajectory.qd[:, 0].min() > 0.0
     assert result.check.rms_modulus < 0.8 * result.baseline_check.rms_modulus

@@ -202,6 +202,11 @@ def test_a_start_at_the_end_of_a_joints_travel_is_planned_from(params):
     np.testing.assert_allclose(result.plan.q0, start[0])
     mpc = MPC(model, MPCOptions(horizon=1.0, step=0.05, deadline=float("inf")))
     assert mpc.step((*start, np.zeros(3)), predict_perfect(path, 0.0, 1.0)).source == "mpc"
+    # both ends, two bounded joints: the track at its upper end, the heave at its lower one
+    full = Model(params, "full")
+    ends = (np.array([0.0, 4.0, -1.0, 0.0, 0.0, 0.0]), np.zeros(6))
+    mpc = MPC(full, MPCOptions(horizon=1.0, step=0.05, deadline=float("inf")))
+    assert mpc.step((*ends, np.zeros(6)), predict_perfect(path, 0.0, 1.0)).source == "mpc"
     # inside the band nothing changes
     inside = CueingProblem(model, path, dataclasses.replace(options, initial_state=(np.zeros(3), np.zeros(3))))
     assert all(a is b for a, b in zip(inside.bounds_from(np.zeros(3)), (inside.lbx, inside.ubx, inside.lbg, inside.ubg)))

@@ -43,6 +43,19 @@ DFS_RADIUS = 4.0  # |q2| of the dfs configurations [m]
 #: gimbal: outer (q4), inner (q5), cabin (q6).
 GIMBAL_BANDWIDTH = {3: 5.0, 4: 5.0, 5: 1.5}
 
+#: The largest tilt of tilt coordination: sin(30 deg), so the cabin's tilt gives at most g / 2 of
+#: sustained horizontal force.
+MAX_TILT_SINE = 0.5
+
+
+def tilt_angles(f_x, f_y, g: float) -> tuple:
+    """The outer gimbal (q4, roll) and cabin gimbal (q6, pitch) angles [rad] at which gravity is felt
+    as the horizontal specific forces f_y = g sin q4 and f_x = -g sin q6 (tilt coordination), each
+    within :data:`MAX_TILT_SINE`; arrays or numbers."""
+    return (np.arcsin(np.clip(np.asarray(f_y) / g, -MAX_TILT_SINE, MAX_TILT_SINE)),
+            -np.arcsin(np.clip(np.asarray(f_x) / g, -MAX_TILT_SINE, MAX_TILT_SINE)))
+
+
 #: Time constant [s] of the washout's rate loops (rotations and tilt).
 RATE_LOOP = 0.1
 
@@ -288,9 +301,10 @@ def steady_start(path: DesiredPath, model: Model) -> tuple[np.ndarray, np.ndarra
       centrifuge spins up before its run; the thesis' on-line catapult (7.5.1) starts from such a
       state, its pulses on a constant 1.5 g.
     - the others: at rest, with the cabin tilted (where its outer gimbal q4 and cabin gimbal q6 are
-      free) so that gravity is felt along the first desired specific force: q6 = atan2(-n_x, n_z),
-      q4 = atan2(n_y, hypot(n_x, n_z)) for its direction n, which puts (0, 0, g) of the world at g n in
-      the cabin; at rest at home where no gimbal can tilt (``yaw-track``, ``yaw-track-cabin``).
+      free) by tilt coordination of the first desired specific force (:func:`tilt_angles`, the
+      classical washout's rule, here on the whole force: at most 30 deg, f_y = g sin q4, f_x = -g
+      sin q6); at rest at home where no gimbal can tilt (``yaw-track``, ``yaw-track-cabin``) or the
+      first force is vertical.
     """
     n, free = model.n, model.config.free
     q, qd = np.zeros(n), np.zeros(n)
@@ -301,15 +315,11 @@ def steady_start(path: DesiredPath, model: Model) -> tuple[np.ndarray, np.ndarra
         if n > 1:
             q[1:] = _gimbal_targets(model, np.zeros(1), np.array([rate]), np.zeros(1))[0]
         return q, qd
-    f = path.sample([path.t[0]])[0, 3:6]
-    nx, ny, nz = f / (np.linalg.norm(f) or 1.0)
-    if 3 in free and 5 in free:
-        angles = {3: np.arctan2(ny, np.hypot(nx, nz)), 5: np.arctan2(-nx, nz)}
-    else:  # one tilt axis: the component it can give
-        angles = {3: np.arctan2(ny, nz), 5: np.arctan2(-nx, nz)}
-    for joint, angle in angles.items():
+    f = path.sample([path.t[0]])[0]
+    roll, pitch = tilt_angles(f[3], f[4], model.params.gravity)
+    for joint, angle in ((3, roll), (5, pitch)):
         if joint in free:
-            q[free.index(joint)] = angle
+            q[free.index(joint)] = float(angle)
     return q, qd
 
 
@@ -478,10 +488,10 @@ def classical_washout(path: DesiredPath, model: Model, times=None, settings: Was
             target_rate[:, k] = _filtered(*hp1, S_d[:, 2], dt, trimmed)
         elif joint == 3:
             target_rate[:, k] = _filtered(*hp1, S_d[:, 0], dt, trimmed)
-            target_angle[:, k] = np.arcsin(np.clip(_filtered(*lp2, S_d[:, 4], dt, trimmed) / g, -0.5, 0.5))
+            target_angle[:, k] = tilt_angles(0.0, _filtered(*lp2, S_d[:, 4], dt, trimmed), g)[0]
         elif joint == 5:
             target_rate[:, k] = _filtered(*hp1, S_d[:, 1], dt, trimmed)
-            target_angle[:, k] = -np.arcsin(np.clip(_filtered(*lp2, S_d[:, 3], dt, trimmed) / g, -0.5, 0.5))
+            target_angle[:, k] = tilt_angles(_filtered(*lp2, S_d[:, 3], dt, trimmed), 0.0, g)[1]
     prismatic = np.array([model.params.joints[j].kind == "prismatic" for j in free])
     tilt = ~np.isnan(target_angle[0])
     q, qd = start_state(state, model.n)

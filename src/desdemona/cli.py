@@ -161,17 +161,19 @@ def _parser() -> argparse.ArgumentParser:
                              "--reference) (default: perfect)")
     online.add_argument("--reference", metavar="PROFILE_OR_CSV", default=None,
                         help="with --predictor route: a recording of the course (same channels as the path)")
-    online.add_argument("--initial", choices=("rest", "steady", "given"), default="rest",
+    online.add_argument("--initial", choices=("rest", "steady", "given"), default=None,
                         help="the machine's state when the session starts: rest: every joint still at its "
-                             "centre (default); steady: trimmed to the path's first sample, on dfs and "
-                             "dfs-yaw the arm already turning at the rate of its modulus with the cabin "
-                             "aligned (a centrifuge spun up before its run, as the thesis' on-line catapult "
-                             "of 7.5.1), elsewhere still with the cabin tilted so that gravity is felt "
-                             "along its force (where the gimbals can tilt); given: the state of "
-                             "--initial-state")
+                             "centre (default; unlike optimize's rest the positions are not chosen, a "
+                             "session cannot know where the path will want them); steady: trimmed to the "
+                             "path's first sample, on dfs and dfs-yaw the arm already turning at the rate "
+                             "of its modulus with the cabin aligned (a centrifuge spun up before its run, "
+                             "as the thesis' on-line catapult of 7.5.1), elsewhere still with the cabin "
+                             "tilted by tilt coordination of its force (at most 30 deg, where the gimbals "
+                             "can tilt); given: the state of --initial-state (the default when it is given)")
     online.add_argument("--initial-state", metavar="Q;QD", dest="initial_state", default=None,
-                        help="with --initial given: positions and rates of the free joints in their order "
-                             "(see 'desdemona model'), SI units (rad, m; rad/s, m/s)")
+                        help="positions and rates of the free joints in their order (see 'desdemona "
+                             "model'), SI units (rad, m; rad/s, m/s), e.g. '0,0.1,0,0;1.2,0,0,0' on dfs "
+                             "(the arm turning at 1.2 rad/s, the outer gimbal at 0.1 rad)")
     online.add_argument("--method", choices=("rti", "nlp"), default="rti",
                         help="rti: one QP per cycle (fast); nlp: IPOPT to convergence (default: rti)")
     _add_overwrite_option(online)
@@ -496,10 +498,11 @@ def _run_online(args) -> int:
 
 def _online_start(args, model: Model) -> dict:
     """The OnlineOptions fields of --initial and --initial-state."""
-    if (args.initial_state is not None) != (args.initial == "given"):
-        raise UserError("--initial given and --initial-state go together")
+    initial = args.initial or ("given" if args.initial_state is not None else "rest")
+    if (args.initial_state is not None) != (initial == "given"):
+        raise UserError("--initial given needs --initial-state, and --initial-state goes with --initial given")
     state = None if args.initial_state is None else parse_state(args.initial_state, model)
-    return {"initial": args.initial, "initial_state": state}
+    return {"initial": initial, "initial_state": state}
 
 
 def _run_profiles(args) -> int:

@@ -343,7 +343,7 @@ class MPC:
         if self.smooth:
             lbx[2 * n:3 * n], ubx[2 * n:3 * n] = a, a
         if self.model.config.takes_modulus:
-            self._one_way(qd, lbx, ubx)
+            self._one_way(qd, a, lbx, ubx)
         if prob.nz:
             x[:, prob.n_motion:] = self.z
             lbx[prob.n_motion:prob.nx], ubx[prob.n_motion:prob.nx] = self.z, self.z
@@ -366,9 +366,11 @@ class MPC:
             return (x[:-1, 2 * n:3 * n], controls), success, elapsed
         return (controls, np.zeros_like(controls)), success, elapsed
 
-    def _one_way(self, qd, lbx, ubx) -> None:
-        """Keep the arm turning the way it turns now (forwards from rest) over the plan: bounds on the
-        yaw's rate at every node after the first, in place.
+    def _one_way(self, qd, a, lbx, ubx) -> None:
+        """Keep the arm turning the way it turns (forwards from rest) over the plan: bounds on the
+        yaw's rate, in place, from the first node at which its acceleration can have been brought to
+        zero (|a| / jerk limit after now), in the direction of the rate it then has at the soonest,
+        qd + a |a| / (2 jerk limit): a plan that must still cross zero rate is not made infeasible.
 
         The modulus cues of ``dfs`` and ``dfs-yaw`` are the same for either direction of turning
         ("without influencing the optimization results, q1' can be assumed positive", 7.4.2), so the
@@ -376,12 +378,16 @@ class MPC:
         the mirror: through zero rate (where the modulus is only g) and up the other way, instead of
         speeding up again. Measured on the roller coaster on dfs started in steady rotation, perfect
         preview: modulus RMS 3.00 with the arm reversing (down to -2.5 rad/s), 1.86 kept one way; the
-        ``nlp`` method from rest 3.10 and 2.05. The thesis' delayed timing on the same path (a 1 s
-        horizon, each plan applied 0.4 s late) lost: 2.90 and 4.15, the arm never reversing in either.
+        ``nlp`` method from rest 3.10 and 2.05.
         """
-        nw, k = self.problem.nx + self.problem.nu, self.model.config.free.index(0)
-        rates = slice(nw + self.model.n + k, len(lbx), nw)  # the yaw's rate at nodes 1..N
-        if qd[k] >= 0.0:
+        prob, k = self.problem, self.model.config.free.index(0)
+        nw = prob.nx + prob.nu
+        jerk = self.limits.jerk[k] if self.smooth else np.inf
+        settle = abs(a[k]) / jerk
+        rate = qd[k] + a[k] * abs(a[k]) / (2.0 * jerk)
+        first = max(1, int(np.searchsorted(prob.t_nodes - prob.t_nodes[0], settle - 1e-12)))
+        rates = slice(first * nw + self.model.n + k, len(lbx), nw)  # the yaw's rate from that node on
+        if rate >= 0.0:
             lbx[rates] = np.maximum(lbx[rates], 0.0)
         else:
             ubx[rates] = np.minimum(ubx[rates], 0.0)
@@ -577,7 +583,8 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
     """Run the MPC in closed loop over a whole desired path and check the result (thesis chapter 7).
 
     The controller sees the path only through the predictor; each command is held for one step and
-    integrated exactly. The machine starts at ``options.initial_state`` (by default at rest), and the
+    integrated exactly. The machine starts as ``options`` say (by default at rest at home; see
+    :class:`OnlineOptions`), and the
     classical loop (``dfs``) or washout (the others) runs beside it from the same state as the
     baseline. Raises :class:`LimitViolation` if the run breaks a limit on the independent check's fine
     grid.

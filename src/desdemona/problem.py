@@ -711,7 +711,9 @@ class CueingProblem:
         one step's jerk, and an on-line controller would brake for ever. Where q0 lies in the band,
         the bounds of that joint (nodes, position and stopping rows) reach out to q0 over the time a
         jerk-limited start from rest needs to cross the band, and one interval more; after that the
-        plan is inside, as everywhere. The bounds unchanged where q0 lies inside."""
+        plan is inside, as everywhere. The bounds unchanged where q0 lies inside. A start in the band
+        moving outwards, whose stopping point lies beyond the start, is still infeasible: no plan
+        from it keeps the stopping condition."""
         q0 = np.asarray(q0, dtype=float)
         qmin, qmax = self.position_bounds()
         lower, upper = np.minimum(qmin, q0), np.maximum(qmax, q0)
@@ -728,7 +730,8 @@ class CueingProblem:
         n, nw = self.model.n, self.nx + self.nu
         lbx, ubx = self.lbx.copy(), self.ubx.copy()
         below, above = lower < qmin, upper > qmax
-        for k in range(1, self.N + 1):  # the start node is the start
+        last = self.N if self.options.final == "none" else self.N - 1  # a fixed end stays fixed
+        for k in range(1, last + 1):  # the start node is the start
             wide = k <= stages
             lo, hi = lbx[k * nw:k * nw + n], ubx[k * nw:k * nw + n]  # views
             lo[:] = np.where(wide & below, np.minimum(lo, lower), lo)

@@ -213,8 +213,8 @@ def closed_loop(controller, path: DesiredPath, predictor, q0=None, qd0=None,
         accelerations at the start of each step, ``command.jerk`` (r, n) their rates of change over it,
         ``.source``, ``.compute_time``, ``.reason``, and ``options`` with ``step``, ``horizon``,
         ``period`` (T_c = r steps) and ``delay`` (e.g. :class:`desdemona.online.MPC`);
-        predictor : ``predictor(path, now, horizon) -> preview``, e.g. from
-        :data:`desdemona.online.PREDICTORS`. Every cycle's compute time is recorded.
+        predictor : ``predictor(path, now, horizon) -> preview``, e.g.
+        :func:`desdemona.predictors.predictor` (name). Every cycle's compute time is recorded.
 
     The plant starts at (q0, qd0) with zero acceleration and applies what it is told: a command whose
     acceleration does not start where the last one ended is a step of acceleration, which the
