@@ -397,3 +397,24 @@ def test_a_steady_start_tilts_the_cabin_to_the_first_desired_force(params):
     assert track[0] < 1e-9 and track[1] > 1.0
     with pytest.raises(ValueError, match="go together"):
         OnlineOptions(initial="given")
+
+
+def test_the_online_command_weighs_as_optimize_does(tmp_path):
+    """Off dfs the command's cost weighs false rotation by the perception thresholds ("felt"), as
+    `optimize` does, unless told --weights path; on dfs the path's own (rotation 0.1)."""
+    import json
+
+    from desdemona.cli import main
+
+    short = tmp_path / "short.csv"
+    path = profiles.catapult(level=10.0, push=1.0, quiet=0.5, duration=3.0)
+    profiles.write_csv(short, path)
+    used = {}
+    for spec in (None, "path"):
+        out = tmp_path / f"w-{spec}"
+        extra = [] if spec is None else ["--weights", spec]
+        assert main(["online", str(short), "--config", "yaw-track", "--step", "0.1", *extra, "--out", str(out)]) == 0
+        used[spec] = json.loads((out / "summary.json").read_text())["options"]["mpc"]["weights"]
+    np.testing.assert_allclose(used[None], profiles.weights_for("felt", path))
+    np.testing.assert_allclose(used["path"], path.weights)
+    assert used[None][2] > 5.0 * used["path"][2]  # yaw rate weighed by its threshold

@@ -174,6 +174,7 @@ def _parser() -> argparse.ArgumentParser:
                         help="positions and rates of the free joints in their order (see 'desdemona "
                              "model'), SI units (rad, m; rad/s, m/s), e.g. '0,0.1,0,0;1.2,0,0,0' on dfs "
                              "(the arm turning at 1.2 rad/s, the outer gimbal at 0.1 rad)")
+    _add_weights_option(online)
     online.add_argument("--method", choices=("rti", "nlp"), default="rti",
                         help="rti: one QP per cycle (fast); nlp: IPOPT to convergence (default: rti)")
     _add_overwrite_option(online)
@@ -246,6 +247,13 @@ def _add_session_options(parser: argparse.ArgumentParser, given: bool = True) ->
     parser.add_argument("--final", choices=("centre", "rest", "none"), default="centre",
                         help="centre: at rest with the track and heave centred at the end (default); "
                              "rest: every joint still; none: free (thesis)")
+    _add_weights_option(parser)
+    parser.add_argument("--gain", type=float, default=1.0, metavar="G",
+                        help="motion gain around 1 g: f_d -> (0,0,g) + G (f_d - (0,0,g)), omega_d -> G "
+                             "omega_d (default: 1)")
+
+
+def _add_weights_option(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--weights", default=None, metavar="SPEC",
                         help="the cost's weight per channel of S (diagonal of Q): felt (default): the path's "
                              "force weights, and rotation weighted by the perception thresholds so that one "
@@ -254,9 +262,6 @@ def _add_session_options(parser: argparse.ArgumentParser, given: bool = True) ->
                              "dfs, whose arm turns to make the force: a modulus path weighs its rotation "
                              "at 0.1); thresholds: every channel by 1/threshold^2; or six numbers "
                              "wx,wy,wz,fx,fy,fz")
-    parser.add_argument("--gain", type=float, default=1.0, metavar="G",
-                        help="motion gain around 1 g: f_d -> (0,0,g) + G (f_d - (0,0,g)), omega_d -> G "
-                             "omega_d (default: 1)")
 
 
 def _session(args, model: Model, path: profiles.DesiredPath) -> tuple[profiles.DesiredPath, dict]:
@@ -459,9 +464,12 @@ def _run_online(args) -> int:
         raise UserError(f"--tail-step {args.tail_step:g}: must be a number of seconds >= 0")
     if args.deadline is not None and not args.deadline > 0:
         raise UserError(f"--deadline {args.deadline:g}: must be a positive number of seconds")
+    # the same cost as optimize's: a session is judged as the off-line result is (issue 16)
+    weights = tuple(profiles.weights_for(args.weights or model.config.default_weights, model.config.cue_path(path)))
     try:
         mpc = online.MPCOptions(horizon=args.horizon, step=args.step, replan=args.replan, delay=args.delay,
-                                deadline=args.deadline, method=args.method, tail_step=args.tail_step or None)
+                                deadline=args.deadline, method=args.method, tail_step=args.tail_step or None,
+                                weights=weights)
     except ValueError as exc:
         raise UserError(f"--replan: {exc}") from None
     reference = None
