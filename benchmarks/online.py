@@ -40,7 +40,6 @@ from collections import Counter
 import numpy as np
 
 from desdemona import Model, default_params, profiles
-from desdemona.baselines import steady_start
 from desdemona.offline import OptimizeOptions, optimize
 from desdemona.online import MPCOptions, OnlineOptions, run
 from desdemona.problem import ProblemOptions
@@ -93,10 +92,8 @@ def rms(check, config) -> float:
 
 
 def whole_machine_row(path, config, predictor, params, start="rest") -> str:
-    model = Model(params, config)
-    initial = steady_start(model.config.cue_path(path), model) if start == "steady" else None
-    result = run(path, model, OnlineOptions(MPCOptions(horizon=2.0, step=0.02), predictor=predictor,
-                                            initial_state=initial))
+    result = run(path, Model(params, config), OnlineOptions(MPCOptions(horizon=2.0, step=0.02), predictor=predictor,
+                                                            initial=start))
     t = timings(result)
     cells = [f"{t[0]:.2f} | {t[1]:.2f} | {t[2]:.2f}"]
     for check, q in ((result.check, result.quality), (result.baseline_check, result.baseline_quality)):

@@ -191,9 +191,8 @@ def predictor(name: str, reference: DesiredPath | None = None):
         if reference is None:
             raise ValueError("the route predictor needs a reference recording of the course")
         return RoutePredictor(reference)
-    if name == "hold":
-        return HoldPredictor()
-    return PREDICTORS[name]
+    made = PREDICTORS[name]
+    return made() if isinstance(made, type) else made  # a class carries state: a fresh one per run
 
 
 def _grid(path: DesiredPath, horizon: float) -> np.ndarray:
