@@ -53,14 +53,14 @@ class Faulty(MPC):
         super().__init__(*args, **kw)
         self.fail, self.late, self.count = set(fail), set(late), 0
 
-    def _solve(self, q, qd, a, data):
-        plan, success, elapsed = super()._solve(q, qd, a, data)
+    def _solve(self, q, qd, a, data, **kw):
+        solved = super()._solve(q, qd, a, data, **kw)
         self.count += 1
         if self.count - 1 in self.fail:
-            return plan, False, elapsed
+            return solved._replace(success=False)
         if self.count - 1 in self.late:
-            return plan, True, 2.0 * self.deadline
-        return plan, success, elapsed
+            return solved._replace(success=True, elapsed=2.0 * self.deadline)
+        return solved
 
 
 def faulty_predictor(bad_steps, kind):
@@ -162,22 +162,32 @@ def test_perceived_mpc_lowers_the_perceived_error(params):
     assert perceived[True] < perceived[False]
 
 
-@pytest.mark.parametrize("config, bound", [("dfs", 1.2), ("yaw-track", 1.2), ("yaw-track-cabin", 1.5)])
-def test_from_rest_the_mpc_leaves_the_stationary_point(params, config, bound):
+@pytest.mark.parametrize("config", ["dfs", "yaw-track", "yaw-track-cabin"])
+def test_from_rest_the_mpc_leaves_the_stationary_point(params, config):
     """A session starts at rest, where the yaw has no gradient (at 1 g on dfs the modulus has none):
-    the MPC must still turn the arm, near the off-line optimum from rest. dfs: the built-in catapult
-    with the 2 s horizon; the others: a shorter catapult."""
+    the MPC must still turn the arm, near the off-line optimum from rest. dfs: the built-in catapult;
+    the others: a shorter catapult, where "rest" is where the first plan wants the machine, as the
+    off-line problem's rest chooses it (on yaw-track-cabin: 5.14 against 5.78 from home, the off-line
+    optimum 4.77). 2 s horizon."""
     short = config != "dfs"
     path = profiles.catapult(level=15.0, push=1.0, quiet=0.5, duration=4.0) if short else profiles.catapult()
     model = Model(params, config)
-    options = OPTIONS if short else dataclasses.replace(OPTIONS, horizon=2.0)
+    options = dataclasses.replace(OPTIONS, horizon=2.0)
     result = run(path, model, OnlineOptions(options))
     offline = optimize(path, model, OptimizeOptions(ProblemOptions(h_u=OPTIONS.step, initial="rest"), starts=3))
-    assert np.all(result.plan.qd0 == 0.0) and np.all(result.plan.q0 == 0.0)
+    assert np.all(result.plan.qd0 == 0.0)
+    if config == "dfs":  # the cabin follows the force: at rest at home, as off-line
+        assert np.all(result.plan.q0 == 0.0)
+    else:  # placed (within the limits: the check has passed), the arm's angle aside
+        assert result.plan.q0[0] == 0.0 and np.any(result.plan.q0[1:] != 0.0)
+    if config == "yaw-track-cabin":
+        home = run(path, model, OnlineOptions(options, initial="home"))
+        assert np.all(home.plan.q0 == 0.0) and home.check.passed
+        assert result.check.rms < 0.95 * home.check.rms
     if np.abs(offline.trajectory.qd[:, 0]).max() > 0.5:  # where the optimum turns the arm, so does the MPC
         assert np.abs(result.plan.nodes()[1][:, 0]).max() > 0.5
     assert result.check.passed and set(result.loop.sources) == {"mpc"}
-    assert result.check.rms <= bound * offline.check.rms
+    assert result.check.rms <= 1.2 * offline.check.rms
     if config == "dfs":  # the thesis' claim (7.6): anticipation beats the classical loop
         assert result.check.rms <= 0.8 * result.baseline_check.rms
 
@@ -301,8 +311,9 @@ def test_the_command_plans_further_ahead_where_the_track_moves(tmp_path, config,
 
 
 def test_online_command_starts_at_rest_steady_or_a_given_state(tmp_path, capsys):
-    """--initial rest (the default: every joint still at its centre), steady (on dfs a centrifuge spun
-    up to the path's first modulus, the cabin aligned with the force) or given (--initial-state)."""
+    """--initial rest (the default: on dfs every joint still at its centre), steady (on dfs a centrifuge
+    spun up to the path's first modulus, the cabin aligned with the force) or given (--initial-state);
+    the command offers every start the library has."""
     import json
 
     from desdemona.baselines import steady_start
@@ -321,7 +332,9 @@ def test_online_command_starts_at_rest_steady_or_a_given_state(tmp_path, capsys)
         return [float(first[c]) for c in ("q_yaw", "q_outer_gimbal", "q_cabin", "qd_yaw", "qd_outer_gimbal")]
 
     assert main(["online", *common, "--out", str(tmp_path / "rest")]) == 0
-    np.testing.assert_array_equal(start(tmp_path / "rest"), 0.0)
+    np.testing.assert_array_equal(start(tmp_path / "rest"), 0.0)  # on dfs, rest is at home
+    summary = json.loads((tmp_path / "rest" / "summary.json").read_text())
+    assert summary["start"]["initial"] == "rest" and not any(summary["start"]["q0"].values())
     assert main(["online", *common, "--initial", "steady", "--out", str(tmp_path / "steady")]) == 0
     q0, qd0 = steady_start(path, Model(config="dfs"))
     M0 = path.modulus[0]
@@ -332,9 +345,14 @@ def test_online_command_starts_at_rest_steady_or_a_given_state(tmp_path, capsys)
     state = "0,0.1,0,0;1.2,0,0,0"
     assert main(["online", *common, "--initial", "given", "--initial-state", state, "--out", str(tmp_path / "given")]) == 0
     np.testing.assert_allclose(start(tmp_path / "given"), [0, 0.1, 0, 1.2, 0], atol=1e-12)
-    capsys.readouterr()
+    assert "started (given): yaw 0 rad at 1.2 rad/s, outer_gimbal 0.1 rad, inner_gimbal 0 rad, cabin 0 rad\n" in capsys.readouterr().out
     assert main(["online", *common, "--initial-state", state, "--out", str(tmp_path / "given2")]) == 0  # given
     np.testing.assert_allclose(start(tmp_path / "given2"), [0, 0.1, 0, 1.2, 0], atol=1e-12)
+    from desdemona.cli import _parser
+    from desdemona.online import INITIAL_CHOICES
+
+    online_command = _parser()._subparsers._group_actions[0].choices["online"]
+    assert next(a for a in online_command._actions if a.dest == "initial").choices == INITIAL_CHOICES
     for bad, message in ((["--initial", "given"], "needs --initial-state"),
                          (["--initial", "steady", "--initial-state", state], "goes with --initial given"),
                          (["--initial", "given", "--initial-state", "0,0,0,0;9,0,0,0"], "above its limit")):
@@ -382,9 +400,11 @@ def test_a_steady_start_tilts_the_cabin_to_the_first_desired_force(params):
     for config in ("yaw-track", "yaw-track-cabin"):  # nothing can tilt: rest at home
         assert not np.any(np.r_[steady_start(path, Model(params, config))])
     options = dataclasses.replace(OPTIONS, horizon=2.0)
-    rest, steady = (run(path, model, OnlineOptions(options, initial=start)) for start in ("rest", "steady"))
+    home, steady, rest = (run(path, model, OnlineOptions(options, initial=start)) for start in ("home", "steady", "rest"))
     assert steady.check.passed and np.allclose(steady.plan.q0, q0)
-    assert steady.check.rms < 0.5 * rest.check.rms
+    assert steady.check.rms < 0.5 * home.check.rms
+    # at rest where the first plan wants it: tilted too, by the plan's own choice
+    assert rest.check.passed and rest.check.rms < 0.5 * home.check.rms
     # on a steady lateral force the trimmed washout's high-pass sees no step at t = 0: its track
     # stays at the centre; from zero filter states it runs 1.4 m out and back
     from desdemona.baselines import classical_washout

@@ -161,10 +161,11 @@ def _parser() -> argparse.ArgumentParser:
                              "--reference) (default: perfect)")
     online.add_argument("--reference", metavar="PROFILE_OR_CSV", default=None,
                         help="with --predictor route: a recording of the course (same channels as the path)")
-    online.add_argument("--initial", choices=("rest", "steady", "given"), default=None,
-                        help="the machine's state when the session starts: rest: every joint still at its "
-                             "centre (default; unlike optimize's rest the positions are not chosen, a "
-                             "session cannot know where the path will want them); steady: trimmed to the "
+    online.add_argument("--initial", choices=("rest", "home", "steady", "given"), default=None,
+                        help="the machine's state when the session starts: rest: still, where the first "
+                             "plan wants it (default; the positions are chosen before the session from the "
+                             "first horizon's preview, as optimize's rest chooses them; at home on dfs); "
+                             "home: still, every joint at its centre; steady: trimmed to the "
                              "path's first sample, on dfs and dfs-yaw the arm already turning at the rate "
                              "of its modulus with the cabin aligned (a centrifuge spun up before its run, "
                              "as the thesis' on-line catapult of 7.5.1), elsewhere still with the cabin "
@@ -498,6 +499,12 @@ def _run_online(args) -> int:
           f"{c.worst_use:.4f}, compute per cycle median {1e3 * np.median(times):.2f} ms, "
           f"p99 {1e3 * np.percentile(times, 99):.2f} ms, fallbacks {len(sources) - sources.count('mpc')}"
           f"{sizing.describe(unreachable)}; written to {out}")
+    start = report.start_description(result)
+    if any(start["q0"].values()) or any(start["qd0"].values()):
+        units = {j.name: ("m" if j.kind == "prismatic" else "rad") for j in model.params.joints}
+        at = ", ".join(f"{name} {q:.3g} {units[name]}" + (f" at {qd:.3g} {units[name]}/s" if qd else "")
+                       for (name, q), qd in zip(start["q0"].items(), start["qd0"].values()))
+        print(f"  started ({start['initial']}): {at}")
     print(f"  felt: {result.quality.headline()}")
     if result.baseline_quality is not None:
         print(f"  felt with the classical loop: {result.baseline_quality.headline()}")

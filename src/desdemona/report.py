@@ -272,6 +272,14 @@ def trajectory_dataframe(traj: Trajectory, config):
     return pandas.DataFrame(table[:, 1:], index=pandas.Index(table[:, 0], name="t"), columns=names[1:])
 
 
+def start_description(result) -> dict:
+    """Where an on-line session started: the ``initial`` option and the free joints' positions and
+    rates (SI units) at t = 0, which "rest" chooses (:meth:`desdemona.online.MPC.place`)."""
+    names, plan = result.model.config.joint_names, result.plan
+    return {"initial": result.options.initial, "q0": dict(zip(names, map(float, plan.q0))),
+            "qd0": dict(zip(names, map(float, plan.qd0)))}
+
+
 def online_summary(result, command: str | None = None) -> dict:
     """The summary.json of an on-line :class:`~desdemona.online.OnlineResult`."""
     mpc, c = result.options.mpc, result.check
@@ -286,6 +294,7 @@ def online_summary(result, command: str | None = None) -> dict:
                     "rms_weighted_classical": None if baseline is None else baseline.rms,
                     "rms_modulus_classical_loop": None if baseline is None else baseline.rms_modulus,
                     "limits_kept": c.passed, "worst_use": c.worst, "check_grid_step_s": c.step},
+        "start": start_description(result),
         "quality": result.quality.to_dict(),
         "quality_classical_loop": None if result.baseline_quality is None else result.baseline_quality.to_dict(),
         "cycles": {"count": len(times), "deadline_s": result.deadline,
