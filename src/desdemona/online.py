@@ -153,7 +153,7 @@ class Command:
 def default_horizon(config) -> float:
     """The horizon the command line uses when none is given [s]: 2 s where only the yaw and the gimbals
     move (dfs), 4 s where the track does. A track's position must be planned further ahead than the
-    cue: from rest at 20 Hz, with 2 s the real-time iteration ends 1.06-1.35x the bound (the off-line
+    cue: from rest at 20 Hz, with 2 s the real-time iteration ends 1.03-1.35x the bound (the off-line
     optimum from rest with the same stopping condition) on the catapult, double pulse and car lap,
     with 4 s 0.87-1.18x, at a p99 of 1.7-10 ms per cycle on a quiet machine (``python
     benchmarks/online.py --horizon``)."""
