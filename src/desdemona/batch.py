@@ -165,6 +165,7 @@ def _run(jobs, args, processes, dask_address, progress) -> list[JobResult]:
                           initargs=(True,)) as pool:
             for i, result in pool.imap_unordered(_indexed_job, list(enumerate(args))):
                 done(i, result)
+            guard.finish(pool)
     return results
 
 

@@ -18,7 +18,7 @@ or two, write nothing, and leave the command to exit 128 + the signal number. Th
   seconds until it reaches Python code that lets it through.
 - Worker processes: they ignore SIGINT (:func:`worker_signals`), so only the parent decides, and the
   parent terminates them (``multiprocessing.Pool`` sends SIGTERM on leaving its ``with`` block), which
-  stops them the same way.
+  stops them the same way. A pool whose work is done is ended by :func:`finish` instead.
 
 Signals and signal handlers are process-wide, so is the state here: it is set only inside the CLI's
 ``with interruptible():`` and is inert for a library user who never enters it.
@@ -155,6 +155,16 @@ def worker_signals(writes: bool = False) -> None:
     _state.signum, _state.monitored, _state.unstoppable, _state.reporter, _state.speak = None, 0, 0, None, False
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, _handler if writes else signal.SIG_DFL)
+
+
+def finish(pool) -> None:
+    """End a ``multiprocessing.Pool`` whose work is done: each worker is sent the end of its task
+    queue and exits by itself (``close``, ``join``). Leaving the pool's ``with`` block only
+    terminates it, which first takes the task queue's lock for good and then signals the workers; a
+    test run once hung there for good, in ``join``, on a worker that waited for that lock and had not
+    acted on the signal. The block's termination stays for an interrupted pool."""
+    pool.close()
+    pool.join()
 
 
 @contextlib.contextmanager

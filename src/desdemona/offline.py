@@ -267,6 +267,7 @@ def optimize(path: DesiredPath, model: Model, options: OptimizeOptions = Optimiz
             with context.Pool(min(options.workers, len(guesses)), initializer=guard.worker_signals) as pool:
                 for part in pool.imap_unordered(_worker_solve, [[g] for g in guesses]):
                     done(part[0])
+                guard.finish(pool)
         finally:
             _WORKER.clear()
         order = {name: i for i, (name, _, _) in enumerate(guesses)}
