@@ -455,6 +455,7 @@ def _run_batch(args) -> int:
 
 def _run_online(args) -> int:
     from desdemona import online, report
+    from desdemona.metrics import joint_units
 
     model, path, out = _run_inputs(args)
     if args.horizon is None:
@@ -501,9 +502,9 @@ def _run_online(args) -> int:
           f"{sizing.describe(unreachable)}; written to {out}")
     start = report.start_description(result)
     if any(start["q0"].values()) or any(start["qd0"].values()):
-        units = {j.name: ("m" if j.kind == "prismatic" else "rad") for j in model.params.joints}
-        at = ", ".join(f"{name} {q:.3g} {units[name]}" + (f" at {qd:.3g} {units[name]}/s" if qd else "")
-                       for (name, q), qd in zip(start["q0"].items(), start["qd0"].values()))
+        units = joint_units(start["q0"])
+        at = ", ".join(f"{name} {q:.3g} {unit}" + (f" at {qd:.3g} {unit}/s" if qd else "")
+                       for (name, q), qd, unit in zip(start["q0"].items(), start["qd0"].values(), units))
         print(f"  started ({start['initial']}): {at}")
     print(f"  felt: {result.quality.headline()}")
     if result.baseline_quality is not None:

@@ -283,7 +283,7 @@ class MPC:
         if placed.success and placed.cost < first.cost:
             self.plan = self._per_step(*placed.plan)
             return placed.start, np.zeros_like(qd)
-        self.plan = None
+        self.plan, self.plan_age = None, 0
         return q, qd
 
     def _advance_filters(self, q, qd, command) -> None:
@@ -665,8 +665,8 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
 
     The controller sees the path only through the predictor; each command is held for one step and
     integrated exactly. The machine starts as ``options`` say (by default at rest, where the first
-    plan wants it, :meth:`MPC.place`; see :class:`OnlineOptions`), and the classical loop (``dfs``) or washout (the others) runs beside it from the same state as the
-    baseline. Raises :class:`LimitViolation` if the run breaks a limit on the independent check's fine
+    plan wants it, :meth:`MPC.place`; see :class:`OnlineOptions`), and the classical loop (``dfs``)
+    or washout (the others) runs beside it from the same state as the baseline. Raises :class:`LimitViolation` if the run breaks a limit on the independent check's fine
     grid.
     """
     step = options.mpc.step
