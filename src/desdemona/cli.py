@@ -176,8 +176,10 @@ def _parser() -> argparse.ArgumentParser:
                              "model'), SI units (rad, m; rad/s, m/s), e.g. '0,0.1,0,0;1.2,0,0,0' on dfs "
                              "(the arm turning at 1.2 rad/s, the outer gimbal at 0.1 rad)")
     _add_weights_option(online)
-    online.add_argument("--method", choices=("rti", "nlp"), default="rti",
-                        help="rti: one QP per cycle (fast); nlp: IPOPT to convergence (default: rti)")
+    online.add_argument("--method", choices=("auto", "rti", "nlp"), default="auto",
+                        help="rti: one QP per plan (fast); nlp: IPOPT to convergence; auto: rti when a "
+                             "plan is made every step, nlp when --replan spans several steps, as the "
+                             "thesis solves to convergence in its T_c (default: auto)")
     _add_overwrite_option(online)
     online.set_defaults(run=_run_online)
 

@@ -57,9 +57,10 @@ class MPCOptions:
     computed during [t, t + T_c] from the state at t is applied from t + T_c, so it starts from the state
     predicted there; deadline : compute budget per plan [s] (default: T_c); substeps, regularisation,
     margin, weights : as in :class:`desdemona.problem.ProblemOptions`; braking : fraction of the acceleration limit assumed
-    for stopping; method : "rti" (real-time iteration: one Gauss-Newton QP per step, linearised at the
-    shifted previous plan, solved by CasADi's ``qp_solver`` plugin) or "nlp" (IPOPT to convergence,
-    warm-started, at most ``max_iter`` iterations); perception : minimise the perceived difference
+    for stopping; method : "rti" (real-time iteration: one Gauss-Newton QP per plan, linearised at the
+    shifted previous plan, solved by CasADi's ``qp_solver`` plugin), "nlp" (IPOPT to convergence,
+    warm-started, at most ``max_iter`` iterations) or "auto" (the default: "rti" when a plan is made
+    every step, "nlp" when the re-plan period spans several, see :attr:`plan_method`); perception : minimise the perceived difference
     through this vestibular model (chapter 6): the controller then carries the filter states of what
     the person has felt and of what they should have felt from step to step; spin_up : fraction of
     the yaw's acceleration limit with which a still yaw is seeded (see :meth:`MPC._leave_rest`), 0 to
@@ -83,7 +84,7 @@ class MPCOptions:
     braking: float = 0.5
     weights: tuple[float, ...] | None = None
     max_iter: int = 100
-    method: Literal["rti", "nlp"] = "rti"
+    method: Literal["auto", "rti", "nlp"] = "auto"
     qp_solver: str = "hpipm"
     perception: VestibularModel | None = None
     spin_up: float = 0.2
@@ -92,6 +93,8 @@ class MPCOptions:
     jerk_weight: float | None = None
 
     def __post_init__(self):
+        if self.method not in ("auto", "rti", "nlp"):
+            raise ValueError(f"method {self.method!r}: one of auto, rti, nlp")
         if not (self.step > 0 and self.horizon >= 2 * self.step):
             raise ValueError(f"need step > 0 and horizon >= 2 steps, got step {self.step}, horizon {self.horizon}")
         r = self.period / self.step
@@ -103,6 +106,24 @@ class MPCOptions:
     def period(self) -> float:
         """T_c [s]: the time between two plans."""
         return self.step if self.replan is None else self.replan
+
+    @property
+    def plan_method(self) -> str:
+        """The method each plan is solved by: ``method``, or for "auto" the real-time iteration when a
+        plan is made every step and IPOPT to convergence when the re-plan period spans several steps.
+
+        One Gauss-Newton QP per plan is enough when plans follow each other step by step, each
+        linearised at the last; with a long period the plan moves far between two QPs, and the thesis
+        uses its T_c to solve to convergence (7.5). Measured with the thesis' T_c 0.4 s delayed, h
+        0.1 s, perfect preview, from rest, modulus RMS real-time iteration against IPOPT: T_h 1 s on
+        ``dfs-yaw``, catapult 5.27 against 5.03 (the off-line bound 4.28), the roller coaster 2.65
+        against 2.40 (2.00), dfs-catapult 1.88 against 1.87 (1.87); T_h 2 s on ``dfs``, the felt
+        force's RMS, catapult 9.44 against 4.76 (4.74), the roller coaster 5.06 against 2.20 (2.20).
+        Several real-time iterations per plan were no remedy: without a globalisation, four of them
+        took the roller coaster on ``dfs-yaw`` to 4.31."""
+        if self.method != "auto":
+            return self.method
+        return "rti" if self.replan_steps == 1 else "nlp"
 
     @property
     def replan_steps(self) -> int:
@@ -156,7 +177,10 @@ def default_horizon(config) -> float:
     cue: from rest at 20 Hz, with 2 s the real-time iteration ends 1.03-1.35x the bound (the off-line
     optimum from rest with the same stopping condition) on the catapult, double pulse and car lap,
     with 4 s 0.87-1.18x, at a p99 of 1.7-10 ms per cycle on a quiet machine (``python
-    benchmarks/online.py --horizon``)."""
+    benchmarks/online.py --horizon``). On ``dfs`` the gimbals must start turning the cabin as the arm
+    spins up: with the thesis' T_c 0.4 s delayed and h 0.1 s the whole machine ends 0.98-1.005x the
+    bound with 2 s and 1.40-1.80x with the thesis' 1 s, which suffices for its yaw-only ``dfs-yaw``
+    (1.00-1.20x; ``python benchmarks/online.py --configs dfs-yaw dfs``)."""
     return 4.0 if 1 in config.free else 2.0
 
 
@@ -196,7 +220,7 @@ class MPC:
         self._limit_use = model.step_limit_use(options.step)
         self.z = self.z_d = None  # filter states of the felt and the desired path (with perception)
         self._z_d_next = None  # the desired filter state one step on, from this step's preview
-        if options.method == "rti":
+        if options.plan_method == "rti":
             self._qp_data, self._qp = self._real_time_iteration(options.qp_solver)
         self.smooth = self.problem.smooth
         self.plan: tuple[np.ndarray, np.ndarray] | None = None  # the last plan per step: accelerations, jerks
@@ -386,7 +410,7 @@ class MPC:
         Returns a :class:`_Solved`."""
         prob = self.problem
         n = self.model.n
-        method = method or self.options.method
+        method = method or self.options.plan_method
         if self.plan is not None:
             u = self._shifted_plan(prob)
         else:

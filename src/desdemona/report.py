@@ -288,7 +288,7 @@ def online_summary(result, command: str | None = None) -> dict:
     return {
         "command": command,
         **run_description(result.path, result.model.config),
-        "method": f"mpc ({mpc.method}), predictor {result.options.predictor}, horizon {mpc.horizon:g} s, "
+        "method": f"mpc ({mpc.plan_method}), predictor {result.options.predictor}, horizon {mpc.horizon:g} s, "
                   f"step {mpc.step:g} s",
         "metrics": {"rms_weighted": c.rms, "rms_modulus": c.rms_modulus,
                     "rms_weighted_classical": None if baseline is None else baseline.rms,
