@@ -1,6 +1,7 @@
 """The on-line controller: closed loop against the classical loop and the off-line optimum, faults."""
 
 import dataclasses
+import json
 
 import numpy as np
 import pytest
@@ -129,7 +130,6 @@ def test_predictors():
 
 
 def test_online_command_writes_the_folder(tmp_path, capsys):
-    import json
 
     from desdemona.cli import main
 
@@ -222,6 +222,32 @@ def test_thesis_timing_replans_every_T_c_and_applies_each_plan_one_period_later(
     assert late.check.rms < 0.97 * single.check.rms
 
 
+def test_a_short_horizon_plans_on_with_the_path_held(params, tmp_path, capsys):
+    """The thesis' timing on the whole-machine dfs: 1 s does not fit the arm's spin-up and the
+    gimbals' turn, and a plan priced only to its end leaves the arm idle (felt force 7.02, the bound
+    4.74); reaching 2 s with the last previewed value held, 5.70."""
+    from desdemona.cli import main
+
+    path, model = profiles.catapult(), Model(params, "dfs")
+    timing = MPCOptions(horizon=1.0, step=0.1, replan=0.4, delay=True, deadline=float("inf"))
+    assert timing.length == 1.0 and dataclasses.replace(timing, reach=2.0).length == 2.0
+    blind, reaching = (run(path, model, OnlineOptions(dataclasses.replace(timing, reach=reach)))
+                       for reach in (None, 2.0))
+    bound = optimize(path, model, OptimizeOptions(ProblemOptions(h_u=0.1, initial="rest", stoppable=True,
+                                                                 braking=timing.braking), starts=3)).check.rms
+    assert reaching.check.passed and reaching.check.rms < 0.85 * blind.check.rms
+    assert reaching.check.rms < 1.25 * bound < blind.check.rms
+    # the command line reaches the default horizon; --reach below --horizon is refused by name
+    out = tmp_path / "thesis"
+    thesis = ["online", "catapult", "--config", "dfs", "--horizon", "1", "--step", "0.1", "--replan", "0.4", "--delay"]
+    assert main([*thesis, "--out", str(out)]) == 0
+    assert "reach 2 s" in json.loads((out / "summary.json").read_text())["method"]
+    assert main([*thesis, "--reach", "0.5", "--out", str(tmp_path / "x")]) == 2
+    assert "--reach 0.5: must be at least --horizon (1 s)" in capsys.readouterr().err
+    with pytest.raises(ValueError, match="at least the horizon"):
+        MPCOptions(horizon=1.0, reach=0.5)
+
+
 def test_mpc_method_is_checked():
     with pytest.raises(ValueError, match="one of auto, rti, nlp"):
         MPCOptions(method="sqp")
@@ -303,7 +329,6 @@ def test_the_felt_filters_follow_every_sub_step_of_a_cycle(params):
 @pytest.mark.parametrize("config, horizon", [("yaw-track", 4.0), ("dfs", 2.0)])
 def test_the_command_plans_further_ahead_where_the_track_moves(tmp_path, config, horizon):
     """Without --horizon: 4 s where the track's position must be planned, 2 s on dfs, at most the path."""
-    import json
 
     from desdemona.cli import main
     from desdemona.online import default_horizon
@@ -324,7 +349,6 @@ def test_online_command_starts_at_rest_steady_or_a_given_state(tmp_path, capsys)
     """--initial rest (the default: on dfs every joint still at its centre), steady (on dfs a centrifuge
     spun up to the path's first modulus, the cabin aligned with the force) or given (--initial-state);
     the command offers every start the library has."""
-    import json
 
     from desdemona.baselines import steady_start
     from desdemona.cli import main
@@ -432,7 +456,6 @@ def test_a_steady_start_tilts_the_cabin_to_the_first_desired_force(params):
 def test_the_online_command_weighs_as_optimize_does(tmp_path):
     """Off dfs the command's cost weighs false rotation by the perception thresholds ("felt"), as
     `optimize` does, unless told --weights path; on dfs the path's own (rotation 0.1)."""
-    import json
 
     from desdemona.cli import main
 

@@ -140,6 +140,12 @@ def _parser() -> argparse.ArgumentParser:
     online.add_argument("--horizon", type=float, default=None, metavar="SECONDS",
                         help="T_h (default: 2 on dfs and dfs-yaw; 4 with the track, whose position is planned "
                              "further ahead; at most the path's duration)")
+    online.add_argument("--reach", type=float, default=None, metavar="SECONDS",
+                        help="how far each plan looks, at least T_h: beyond T_h, where nothing is known, the "
+                             "path is taken as held at its last previewed value, an end cost that prices "
+                             "where the plan leaves the machine (default: the larger of T_h and the default "
+                             "horizon, so a 1 s horizon on dfs still plans 2 s; --reach equal to --horizon "
+                             "for none, the thesis' K = 0)")
     online.add_argument("--step", type=float, default=0.02, metavar="SECONDS",
                         help="h: the plan's grid over the first 0.4 s of the horizon, and the period of the "
                              "commands (default: 0.02)")
@@ -460,10 +466,15 @@ def _run_online(args) -> int:
     from desdemona.metrics import joint_units
 
     model, path, out = _run_inputs(args)
+    default = min(online.default_horizon(model.config), path.duration)
     if args.horizon is None:
-        args.horizon = min(online.default_horizon(model.config), path.duration)
+        args.horizon = default
     if not (0 < args.step and 2 * args.step <= args.horizon <= path.duration):
         raise UserError(f"need 0 < --step, 2 steps <= --horizon <= the path's {path.duration:g} s")
+    if args.reach is None:
+        args.reach = max(args.horizon, default)
+    if not (args.horizon <= args.reach and math.isfinite(args.reach)):
+        raise UserError(f"--reach {args.reach:g}: must be at least --horizon ({args.horizon:g} s), in seconds")
     if not (args.tail_step >= 0 and math.isfinite(args.tail_step)):
         raise UserError(f"--tail-step {args.tail_step:g}: must be a number of seconds >= 0")
     if args.deadline is not None and not args.deadline > 0:
@@ -473,7 +484,7 @@ def _run_online(args) -> int:
     try:
         mpc = online.MPCOptions(horizon=args.horizon, step=args.step, replan=args.replan, delay=args.delay,
                                 deadline=args.deadline, method=args.method, tail_step=args.tail_step or None,
-                                weights=weights)
+                                weights=weights, reach=args.reach)
     except ValueError as exc:
         raise UserError(f"--replan: {exc}") from None
     reference = None

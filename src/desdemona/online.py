@@ -71,7 +71,19 @@ class MPCOptions:
     coaster or dfs-catapult-recorded with the hold predictor), 1 elsewhere; tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon
     (None: ``step`` throughout). A coarse tail keeps the horizon's reach at a fraction of the work:
     what the plan does in a second matters only through where it leaves the machine, and it is
-    re-planned long before then."""
+    re-planned long before then; reach : how far each plan looks [s], at least ``horizon`` (None:
+    the horizon). Beyond the horizon, where nothing is known, the desired path is taken as held at
+    its last previewed value: an end cost (eq. 3.8's K) that prices where the plan leaves the
+    machine by what holding the path would cost from there. A short horizon needs it where the
+    machine takes longer than the horizon to get where a cue wants it: with the thesis' T_h 1 s
+    (T_c 0.4 s delayed, h 0.1 s) on ``dfs`` the arm's spin-up and the gimbals' turn do not fit in
+    1 s, and the plan, priced only to its end, leaves the arm idle (felt force RMS 1.40-1.80x the
+    off-line bound); reaching 2 s, 1.02-1.20x. The thesis takes K = 0 for the dfs (7.3), with the
+    one-joint modulus cue, where it matters less (``dfs-yaw``: 1.00-1.20x without, 1.00-1.17x
+    with). Where the track moves, a 2 s preview reaching 4 s came within 0.89-1.14x of 4 s of
+    preview, against up to 1.69x ending at 2 s; the car lap on ``full`` was 8 % worse than without
+    (``python benchmarks/online.py --reach``). The command line reaches at least
+    :func:`default_horizon`."""
 
     horizon: float = 2.0
     step: float = 0.02
@@ -91,6 +103,7 @@ class MPCOptions:
     tail_step: float | None = 0.1
     fine: float = 0.4
     jerk_weight: float | None = None
+    reach: float | None = None
 
     def __post_init__(self):
         if self.method not in ("auto", "rti", "nlp"):
@@ -101,6 +114,13 @@ class MPCOptions:
         if not (abs(r - round(r)) < 1e-9 and 1 <= round(r) and self.period <= self.horizon - self.step):
             raise ValueError(f"replan = {self.replan}: the re-plan period must be a whole number of steps "
                              f"({self.step:g} s) and shorter than the horizon ({self.horizon:g} s)")
+        if self.reach is not None and not self.reach >= self.horizon:
+            raise ValueError(f"reach = {self.reach}: must be at least the horizon ({self.horizon:g} s)")
+
+    @property
+    def length(self) -> float:
+        """How far each plan looks [s]: the reach, or the horizon."""
+        return self.horizon if self.reach is None else self.reach
 
     @property
     def period(self) -> float:
@@ -131,11 +151,11 @@ class MPCOptions:
         return int(round(self.period / self.step))
 
     def grid(self) -> np.ndarray:
-        """The plan's interval lengths [s] over the horizon, each a whole number of steps: ``step`` for
-        the first ``fine`` seconds (at least the re-plan period and one step more), then ``tail_step``
-        rounded to whole steps (the last one shorter where the horizon ends); uniform with a perception
-        model, whose filters are discretised for one step."""
-        total = int(round(self.horizon / self.step))
+        """The plan's interval lengths [s] over its :attr:`length`, each a whole number of steps:
+        ``step`` for the first ``fine`` seconds (at least the re-plan period and one step more), then
+        ``tail_step`` rounded to whole steps (the last one shorter where the plan ends); uniform with
+        a perception model, whose filters are discretised for one step."""
+        total = int(round(self.length / self.step))
         block = 1 if self.tail_step is None else int(round(self.tail_step / self.step))
         if block <= 1 or self.perception is not None:
             return np.full(total, self.step)
@@ -178,9 +198,10 @@ def default_horizon(config) -> float:
     optimum from rest with the same stopping condition) on the catapult, double pulse and car lap,
     with 4 s 0.87-1.18x, at a p99 of 1.7-10 ms per cycle on a quiet machine (``python
     benchmarks/online.py --horizon``). On ``dfs`` the gimbals must start turning the cabin as the arm
-    spins up: with the thesis' T_c 0.4 s delayed and h 0.1 s the whole machine ends 0.98-1.005x the
-    bound with 2 s and 1.40-1.80x with the thesis' 1 s, which suffices for its yaw-only ``dfs-yaw``
-    (1.00-1.20x; ``python benchmarks/online.py --configs dfs-yaw dfs``)."""
+    spins up: with the thesis' T_h 1 s (T_c 0.4 s delayed, h 0.1 s) a plan ending with the preview
+    left the whole machine 1.40-1.80x the bound, one reaching 2 s 1.02-1.20x (``python
+    benchmarks/online.py --configs dfs-yaw dfs``). The command line's plans reach at least this far
+    whatever the horizon (``MPCOptions.reach``)."""
     return 4.0 if 1 in config.free else 2.0
 
 
@@ -348,6 +369,7 @@ class MPC:
     def _data(self, t, values) -> np.ndarray:
         prob = self.problem
         times = prob.sub_times()  # relative to now: the placeholder starts at 0
+        # a plan that reaches past the preview takes its last value as held there (np.interp does)
         if self.model.config.modulus_cost:
             return prob.with_steps(np.interp(times, t, values).T)
         S_d = np.column_stack([np.interp(times.ravel(), t, values[:, i]) for i in range(6)])

@@ -289,7 +289,7 @@ def online_summary(result, command: str | None = None) -> dict:
         "command": command,
         **run_description(result.path, result.model.config),
         "method": f"mpc ({mpc.plan_method}), predictor {result.options.predictor}, horizon {mpc.horizon:g} s, "
-                  f"step {mpc.step:g} s",
+                  + (f"reach {mpc.length:g} s, " if mpc.length > mpc.horizon else "") + f"step {mpc.step:g} s",
         "metrics": {"rms_weighted": c.rms, "rms_modulus": c.rms_modulus,
                     "rms_weighted_classical": None if baseline is None else baseline.rms,
                     "rms_modulus_classical_loop": None if baseline is None else baseline.rms_modulus,
