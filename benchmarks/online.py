@@ -210,30 +210,35 @@ def main(argv=None) -> int:
     return whole_machine_table(params)
 
 
+def track_cases(params):
+    """(name, path, configuration, model) of every built-in track path on every configuration with the track."""
+    for name in ("catapult", "double-pulse", "car-lap", "cosine"):
+        path = profiles.get_profile(name)
+        for config in ("yaw-track", "yaw-track-cabin", "full"):
+            yield name, path, config, Model(params, config)
+
+
 def horizon_table(params, step: float = 0.05) -> int:
     print("| path | configuration | off-line from rest | off-line from rest, stoppable (the bound) "
           "| MPC T_h 2 s | / bound | p99 [ms] | MPC T_h 4 s | / bound | p99 [ms] "
           "| off-line from home, stoppable | MPC T_h 4 s from home | / its bound "
           "| MPC T_h 4 s from a steady start | / off-line from rest | limits kept |")
     print("|" + " --- |" * 16)
-    for name in ("catapult", "double-pulse", "car-lap", "cosine"):
-        path = profiles.get_profile(name)
-        for config in ("yaw-track", "yaw-track-cabin", "full"):
-            model = Model(params, config)
-            b = bounds(path, model, step, home=True)
-            results = {(horizon, start): run(path, model, OnlineOptions(
-                           MPCOptions(horizon=horizon, step=step, deadline=float("inf")), initial=start))
-                       for horizon, start in ((2.0, "rest"), (4.0, "rest"), (4.0, "home"), (4.0, "steady"))}
+    for name, path, config, model in track_cases(params):
+        b = bounds(path, model, step, home=True)
+        results = {(horizon, start): run(path, model, OnlineOptions(
+                       MPCOptions(horizon=horizon, step=step, deadline=float("inf")), initial=start))
+                   for horizon, start in ((2.0, "rest"), (4.0, "rest"), (4.0, "home"), (4.0, "steady"))}
 
-            def cell(key, against):
-                ours = results[key].check.rms
-                p99 = f" | {timings(results[key])[1]:.2f}" if key[1] == "rest" else ""
-                return f"{ours:.4f} | {ours / b[against]:.3f}{p99}"
+        def cell(key, against):
+            ours = results[key].check.rms
+            p99 = f" | {timings(results[key])[1]:.2f}" if key[1] == "rest" else ""
+            return f"{ours:.4f} | {ours / b[against]:.3f}{p99}"
 
-            kept = all(r.check.passed for r in results.values())
-            print(f"| {name} | {config} | {b['free']:.4f} | {b['bound']:.4f} | {cell((2.0, 'rest'), 'bound')} "
-                  f"| {cell((4.0, 'rest'), 'bound')} | {b['home']:.4f} | {cell((4.0, 'home'), 'home')} "
-                  f"| {cell((4.0, 'steady'), 'free')} | {'yes' if kept else 'NO'} |", flush=True)
+        kept = all(r.check.passed for r in results.values())
+        print(f"| {name} | {config} | {b['free']:.4f} | {b['bound']:.4f} | {cell((2.0, 'rest'), 'bound')} "
+              f"| {cell((4.0, 'rest'), 'bound')} | {b['home']:.4f} | {cell((4.0, 'home'), 'home')} "
+              f"| {cell((4.0, 'steady'), 'free')} | {'yes' if kept else 'NO'} |", flush=True)
     return 0
 
 
@@ -243,16 +248,13 @@ def reach_table(params, step: float = 0.05) -> int:
     print("| path | configuration | T_h 2 s, reach 2 s | T_h 2 s, reach 4 s | T_h 4 s | reach 4 s / T_h 4 s "
           "| p99 [ms], reach 2 s | reach 4 s | limits kept |")
     print("|" + " --- |" * 9)
-    for name in ("catapult", "double-pulse", "car-lap", "cosine"):
-        path = profiles.get_profile(name)
-        for config in ("yaw-track", "yaw-track-cabin", "full"):
-            model = Model(params, config)
-            r = [run(path, model, OnlineOptions(MPCOptions(horizon=h, step=step, deadline=float("inf"), reach=reach)))
-                 for h, reach in ((2.0, None), (2.0, 4.0), (4.0, None))]
-            rms_ = [x.check.rms for x in r]
-            kept = all(x.check.passed for x in r)
-            print(f"| {name} | {config} | {rms_[0]:.4f} | {rms_[1]:.4f} | {rms_[2]:.4f} | {rms_[1] / rms_[2]:.3f} "
-                  f"| {timings(r[0])[1]:.2f} | {timings(r[1])[1]:.2f} | {'yes' if kept else 'NO'} |", flush=True)
+    for name, path, config, model in track_cases(params):
+        r = [run(path, model, OnlineOptions(MPCOptions(horizon=h, step=step, deadline=float("inf"), reach=reach)))
+             for h, reach in ((2.0, None), (2.0, 4.0), (4.0, None))]
+        rms_ = [x.check.rms for x in r]
+        kept = all(x.check.passed for x in r)
+        print(f"| {name} | {config} | {rms_[0]:.4f} | {rms_[1]:.4f} | {rms_[2]:.4f} | {rms_[1] / rms_[2]:.3f} "
+              f"| {timings(r[0])[1]:.2f} | {timings(r[1])[1]:.2f} | {'yes' if kept else 'NO'} |", flush=True)
     return 0
 
 
