@@ -130,7 +130,6 @@ def test_predictors():
 
 
 def test_online_command_writes_the_folder(tmp_path, capsys):
-
     from desdemona.cli import main
 
     out = tmp_path / "online"
@@ -329,7 +328,6 @@ def test_the_felt_filters_follow_every_sub_step_of_a_cycle(params):
 @pytest.mark.parametrize("config, horizon", [("yaw-track", 4.0), ("dfs", 2.0)])
 def test_the_command_plans_further_ahead_where_the_track_moves(tmp_path, config, horizon):
     """Without --horizon: 4 s where the track's position must be planned, 2 s on dfs, at most the path."""
-
     from desdemona.cli import main
     from desdemona.online import default_horizon
 
@@ -349,7 +347,6 @@ def test_online_command_starts_at_rest_steady_or_a_given_state(tmp_path, capsys)
     """--initial rest (the default: on dfs every joint still at its centre), steady (on dfs a centrifuge
     spun up to the path's first modulus, the cabin aligned with the force) or given (--initial-state);
     the command offers every start the library has."""
-
     from desdemona.baselines import steady_start
     from desdemona.cli import main
 
@@ -456,7 +453,6 @@ def test_a_steady_start_tilts_the_cabin_to_the_first_desired_force(params):
 def test_the_online_command_weighs_as_optimize_does(tmp_path):
     """Off dfs the command's cost weighs false rotation by the perception thresholds ("felt"), as
     `optimize` does, unless told --weights path; on dfs the path's own (rotation 0.1)."""
-
     from desdemona.cli import main
 
     short = tmp_path / "short.csv"
