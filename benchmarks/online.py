@@ -23,8 +23,8 @@ first plan wants the machine (``--initial rest``; at home on dfs). Tables (markd
    line runs it (the plan reaching the default horizon, 2 s, the path held past the preview).
    Perfect preview, no deadline (every cycle's own plan is used, so the timings show what each
    cycle costs).
-2. Per configuration and predictor: RMS, correlation and lag between desired and felt (the modulus on
-   dfs, f_y elsewhere), p99 compute.
+2. Per configuration and predictor: RMS (as in table 1), correlation and lag between desired and felt
+   (the modulus on dfs, f_y elsewhere), p99 compute.
 3. The route predictor on a ride replayed 10 % faster or slower with sensor noise, against perfect
    preview and holding the present value.
 4. The whole-machine dfs (yaw and gimbals planned together) at 50 Hz with a 2 s horizon, and the
@@ -51,6 +51,7 @@ from collections import Counter
 import numpy as np
 
 from desdemona import Model, default_params, profiles
+from desdemona.configs import get_configuration
 from desdemona.offline import OptimizeOptions, optimize
 from desdemona.online import MPCOptions, OnlineOptions, default_horizon, run
 from desdemona.problem import ProblemOptions
@@ -180,7 +181,7 @@ def main(argv=None) -> int:
             # the thesis' timing (7.5): T_h 1 s, T_c 0.4 s, h 0.1 s, each plan applied one period late;
             # as the thesis has it (K = 0: the plan ends with the preview), and as the command line
             # runs it (the plan reaches the default horizon, the path held past the preview)
-            for reach in (None, default_horizon(Model(params, config).config)):
+            for reach in (None, default_horizon(get_configuration(config))):
                 print(tracking_row(path, config, 1.0, 0.1, "auto", params, replan=0.4, delay=True,
                                    bound_cache=cache, reach=reach), flush=True)
     for name in ("catapult", "double-pulse", "car-lap"):
