@@ -1,0 +1,146 @@
+"""Desired paths as CSV files: the strict reader and the writer (columns ``t,wx,wy,wz,fx,fy,fz`` or
+``t,M``, SI units, ``#`` comments, an optional ``# weights:`` line)."""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+from pathlib import Path
+
+import numpy as np
+
+from desdemona.profiles.path import (MAX_ANGULAR_VELOCITY, MAX_SPECIFIC_FORCE, MODULUS_COLUMNS, PATH_COLUMNS,
+                                     DesiredPath, ProfileError)
+from desdemona.profiles.weights import _weight_numbers
+
+
+def read_csv(path: str | Path) -> DesiredPath:
+    """Read a desired path from CSV: columns ``t,wx,wy,wz,fx,fy,fz`` (SI) or ``t,M``, in any order; ``#``
+    comments; UTF-8, with or without the byte-order mark spreadsheet programs write.
+
+    Strict: every problem (missing or unknown column, a value that is not a finite number, time not
+    strictly increasing, fewer than two rows, a negative modulus, |f| above 100 g, |omega| above
+    50 rad/s, a time column that looks like milliseconds) raises :class:`ProfileError` naming the file
+    and the line or column.
+    """
+    path = Path(path)
+    try:
+        text = path.read_bytes().decode("utf-8-sig")
+    except OSError as exc:
+        raise ProfileError(f"{path}: cannot read: {exc.strerror or exc}") from None
+    except UnicodeDecodeError as exc:
+        line = path.read_bytes()[: exc.start].count(b"\n") + 1
+        raise ProfileError(f"{path}: line {line}: not UTF-8 text (byte 0x{exc.object[exc.start]:02x}); "
+                           f"save it as UTF-8 CSV") from None
+    weights = _header_weights(path, text)
+    lines = [(i + 1, line) for i, line in enumerate(text.splitlines())
+             if line.strip() and not line.lstrip().startswith("#")]
+    if not lines:
+        raise ProfileError(f"{path}: no header and no data")
+    header_line, header = lines[0]
+    columns = [c.strip() for c in next(csv.reader([header]))]
+    layout = next((cols for cols in (PATH_COLUMNS, MODULUS_COLUMNS) if sorted(columns) == sorted(cols)), None)
+    if layout is None:
+        missing = [c for c in (MODULUS_COLUMNS if "M" in columns else PATH_COLUMNS) if c not in columns]
+        unknown = [c for c in columns if c not in PATH_COLUMNS + MODULUS_COLUMNS]
+        repeated = [c for c in columns if columns.count(c) > 1]
+        detail = (f"unknown column {unknown[0]!r}" if unknown else f"column {repeated[0]!r} twice" if repeated
+                  else f"missing column {missing[0]!r}" if missing else "a modulus M with the full path")
+        raise ProfileError(f"{path}: line {header_line}: {detail}; the columns must be "
+                           f"'{','.join(PATH_COLUMNS)}' or '{','.join(MODULUS_COLUMNS)}' (SI units, any order)")
+    rows = []
+    for number, line in lines[1:]:
+        cells = next(csv.reader([line]))
+        if len(cells) != len(columns):
+            raise ProfileError(f"{path}: line {number}: {len(cells)} values for {len(columns)} columns")
+        try:
+            values = [float(c) for c in cells]
+        except ValueError:
+            raise ProfileError(f"{path}: line {number}: not a number in {line.strip()!r}") from None
+        bad = [columns[k] for k, v in enumerate(values) if not math.isfinite(v)]
+        if bad:
+            raise ProfileError(f"{path}: line {number}: {bad[0]} is not a finite number (NaN or inf)")
+        rows.append(values)
+    if len(rows) < 2:
+        raise ProfileError(f"{path}: needs at least two rows of data, found {len(rows)}")
+    data = np.array(rows)[:, [columns.index(c) for c in layout]]  # reordered as ``layout``
+    t = data[:, 0]
+    steps = np.diff(t)
+    if np.any(steps <= 0):
+        k = int(np.argmax(steps <= 0))
+        raise ProfileError(f"{path}: line {lines[k + 2][0]}: time {t[k + 1]:g} s does not increase "
+                           f"(previous {t[k]:g} s)")
+    _check_time_unit(path, t)
+    name = path.stem
+    if layout == MODULUS_COLUMNS:
+        negative = data[:, 1] < 0
+        if np.any(negative):
+            k = int(np.argmax(negative))
+            raise ProfileError(f"{path}: line {lines[k + 1][0]}: M = {data[k, 1]:g} m/s^2 is negative; the "
+                               f"modulus |f| is >= 0")
+        _check_magnitude(path, lines, data[:, 1:2], "M", MAX_SPECIFIC_FORCE, "m/s^2")
+        return DesiredPath(name, t - t[0], None, modulus=data[:, 1], description=f"read from {path.name}")
+    _check_magnitude(path, lines, np.linalg.norm(data[:, 4:7], axis=1, keepdims=True), "|f|",
+                     MAX_SPECIFIC_FORCE, "m/s^2")
+    _check_magnitude(path, lines, np.linalg.norm(data[:, 1:4], axis=1, keepdims=True), "|omega|",
+                     MAX_ANGULAR_VELOCITY, "rad/s")
+    return DesiredPath(name, t - t[0], data[:, 1:], weights=weights, description=f"read from {path.name}")
+
+
+def _header_weights(path, text: str) -> tuple[float, ...]:
+    """The weights a CSV file carries in a comment line ``# weights: wx,wy,wz,fx,fy,fz`` (at most one;
+    strict, see :func:`weights_for`), else Q = I."""
+    found = [(i + 1, line.lstrip()[1:].strip()) for i, line in enumerate(text.splitlines())
+             if line.lstrip().startswith("#") and line.lstrip()[1:].strip().lower().startswith("weights")]
+    if not found:
+        return (1.0,) * 6
+    if len(found) > 1:
+        raise ProfileError(f"{path}: line {found[1][0]}: a second weights line (the first is line {found[0][0]})")
+    number, comment = found[0]
+    key, colon, value = comment.partition(":")
+    if not colon or key.strip().lower() != "weights":
+        raise ProfileError(f"{path}: line {number}: write the weights as '# weights: wx,wy,wz,fx,fy,fz'")
+    try:
+        return tuple(_weight_numbers([float(c) for c in value.split(",")]))
+    except (ValueError, ProfileError) as exc:
+        detail = str(exc) if isinstance(exc, ProfileError) else f"not a number in {value.strip()!r}"
+        raise ProfileError(f"{path}: line {number}: {detail}") from None
+
+
+# A time column in milliseconds read as seconds: a path of hours sampled at most twice a second. No
+# vehicle recording meant for motion cueing has both (cues live in 0.1-10 Hz and a session lasts
+# minutes), and as seconds it would ask for hundreds of thousands of control intervals.
+MS_DURATION = 3600.0  # [s]
+MS_MEDIAN_STEP = 0.5  # [s]
+
+
+def _check_time_unit(path: Path, t: np.ndarray) -> None:
+    duration, step = float(t[-1] - t[0]), float(np.median(np.diff(t)))
+    if duration > MS_DURATION and step >= MS_MEDIAN_STEP:
+        raise ProfileError(f"{path}: column 't' looks like milliseconds: {duration:g} s ({duration / 3600:.1f} h) "
+                           f"sampled every {step:g} s; the time column must be in seconds (divide it by 1000)")
+
+
+def _check_magnitude(path, lines, values, label, limit, unit):
+    over = np.abs(values[:, 0]) > limit
+    if np.any(over):
+        k = int(np.argmax(over))
+        raise ProfileError(f"{path}: line {lines[k + 1][0]}: {label} = {values[k, 0]:.4g} {unit} is above "
+                           f"{limit:.4g} {unit}: wrong units? (SI: rad/s and m/s^2 expected)")
+
+
+def write_csv(path_or_file, path: DesiredPath) -> None:
+    """Write a desired path as CSV (the format :func:`read_csv` reads), full precision."""
+    buffer = io.StringIO()
+    buffer.write(f"# {path.name}: {path.description}\n")
+    if path.S_d is None:
+        buffer.write(",".join(MODULUS_COLUMNS) + "\n")
+        for t, m in zip(path.t, path.modulus):
+            buffer.write(f"{float(t)!r},{float(m)!r}\n")
+    else:
+        buffer.write("# weights: " + ",".join(repr(float(w)) for w in path.weights) + "\n")
+        buffer.write(",".join(PATH_COLUMNS) + "\n")
+        for t, row in zip(path.t, path.S_d):
+            buffer.write(",".join(repr(float(x)) for x in (t, *row)) + "\n")
+    Path(path_or_file).write_text(buffer.getvalue())
