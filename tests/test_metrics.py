@@ -139,6 +139,39 @@ def test_sign_changes_are_direct_reversals_outside_the_deadband():
     assert metrics.sign_changes_per_second(t, qdd)[0] == pytest.approx(2 / 7.0)
 
 
+def test_reversals_count_swings_across_the_hysteresis_band_only():
+    h, period, amplitude = 0.001, 0.5, 3.0
+    t = h * np.arange(4000)
+    square = square_wave(t, period, amplitude)
+    rng = np.random.default_rng(3)
+    # a dither of 4 % of the peak around a level: sign changes by the hundred, no reversal
+    dither = 0.04 * amplitude * rng.uniform(-1.0, 1.0, len(t))
+    # the same dither on a slow ramp through zero: exactly one reversal, many raw sign changes
+    ramp = np.linspace(-amplitude, amplitude, len(t)) + dither
+    qdd = np.column_stack([square, dither, ramp, np.zeros(len(t))])
+    reversals = metrics.reversals_per_second(t, qdd)
+    raw = metrics.sign_changes_per_second(t, qdd)
+    assert reversals[0] == pytest.approx(raw[0]) == pytest.approx(15 / t[-1])
+    # the dither's own peak is its scale: 4 % of the peak of the *trajectory* is the band
+    assert metrics.reversals_per_second(t, np.column_stack([dither + amplitude, square]))[0] == 0.0
+    assert raw[1] > 100 and raw[2] > 10
+    assert reversals[2] == pytest.approx(1 / t[-1])
+    assert reversals[3] == 0.0
+
+
+def test_headline_prints_reversals_and_the_summary_keeps_both():
+    t = 0.01 * np.arange(500)
+    S_d = np.zeros((len(t), 6))
+    S_d[:, 5] = 9.81
+    qdd = np.column_stack([np.sin(t), 1e-3 * np.sign(np.sin(40 * t)) + 1.0])
+    m = metrics.of_arrays(t, S_d, S_d, qdd, np.zeros_like(qdd), ("yaw", "track"))
+    assert "acceleration reversals/s" in m.headline() and "sign changes" not in m.headline()
+    joints = m.to_dict()["joints"]
+    assert joints["sign_changes_per_s"]["yaw"] == pytest.approx(1 / t[-1])
+    assert joints["reversals_per_s"]["track"] == 0.0
+    assert m.key_figures()["reversals_per_s_max"] == pytest.approx(1 / t[-1])
+
+
 def test_modulus_and_joint_rates_at_start():
     rng = np.random.default_rng(7)
     M_d = 9.81 + smooth_noise(rng, len(T), 1)[:, 0]

@@ -34,7 +34,13 @@ Definitions (S, S_d : (K, 6) on a time grid t : (K,) [s]; channels wx, wy, wz [r
   with ``|qdd| <`` :data:`DEADBAND` counts as 0, and every pair of consecutive samples whose signs are
   opposite (+ then -, or - then +) is one change; the count is divided by the duration T = t[-1] - t[0].
   A reversal through a zero sample (+, 0, -) is therefore not counted, and a solver's noise of a few
-  1e-6 around zero is: both matter little beside the chatter this is meant to show.
+  1e-6 around zero is. This raw count is kept in ``summary.json`` only: on real inputs a joint dithering
+  at a limit or around zero changes sign many times a second with no motion a rider could notice.
+- Acceleration reversals per second per joint, what a rider notices: with a hysteresis of d =
+  :data:`REVERSAL_SHARE` (5 %) of the joint's peak ``max |qdd|`` over the trajectory, one reversal is a
+  crossing from above +d to below -d or back (samples within +-d keep the side last left), divided by
+  T. A square wave of amplitude A reverses at every step; a dither of less than 5 % of the peak around
+  any value never does. This is the figure that is printed.
 - Joint rates at t[0] (a session starts at rest: all zero).
 - Modulus ``M = |f|`` against ``M_d`` (the dfs configuration, eq. 7.1, 7.2): RMS, correlation, lag.
 - Felt-direction error (issue 14): per sample the angle [rad; deg where reported] between the felt
@@ -78,6 +84,8 @@ CHANNELS = PATH_COLUMNS[1:]
 LAG_WINDOW = 2.0
 #: |qdd| below this [rad/s^2 | m/s^2] counts as zero for sign changes (as in felt_check.py).
 DEADBAND = 1e-6
+#: Hysteresis of a reversal, as a share of the joint's peak |qdd| (:func:`reversals_per_second`).
+REVERSAL_SHARE = 0.05
 CHANNEL_UNITS = ("rad/s",) * 3 + ("m/s^2",) * 3
 #: |f| below this [m/s^2] has no direction (free fall): the felt-direction error is undefined there.
 NO_FORCE = 1e-6
@@ -268,6 +276,22 @@ def sign_changes_per_second(t, qdd, deadband: float = DEADBAND) -> np.ndarray:
     return np.count_nonzero(np.abs(np.diff(signs, axis=0)) == 2.0, axis=0) / (t[-1] - t[0])
 
 
+def reversals_per_second(t, qdd, share: float = REVERSAL_SHARE) -> np.ndarray:
+    """Reversals of qdd (K, n) per second per joint (n,) [1/s], with a hysteresis of ``share`` of each
+    joint's peak |qdd|: a crossing from above +d to below -d, or from below -d to above +d, with
+    d = share * max |qdd| (see the module's definitions). A joint whose peak is below :data:`DEADBAND`
+    never reverses."""
+    t, qdd = np.asarray(t, float), np.asarray(qdd, float).reshape(len(t), -1)
+    counts = np.zeros(qdd.shape[1])
+    for k, x in enumerate(qdd.T):
+        peak = np.abs(x).max(initial=0.0)
+        if peak < DEADBAND:
+            continue
+        side = np.sign(x[np.abs(x) > share * peak])  # the samples outside the band, in order
+        counts[k] = np.count_nonzero(side[1:] != side[:-1])
+    return counts / (t[-1] - t[0])
+
+
 @dataclass(frozen=True, eq=False)
 class Metrics:
     """The quality metrics of one trajectory against its desired path (see the module's definitions).
@@ -275,7 +299,7 @@ class Metrics:
     Per channel of S (6,), None where the result has no full desired path S_d: rms, correlation, lag_s,
     perceived_rms, above_threshold_pct, peak_false_cue (units of S; NaN where undefined).
     Per joint (n,) in the order of ``joints``: jerk_peak, jerk_rms, qdd_variation_per_s,
-    sign_changes_per_s, qd_start (joint rate at t[0]). Modulus M against M_d: modulus_rms [m/s^2],
+    sign_changes_per_s (raw), reversals_per_s (with a hysteresis), qd_start (joint rate at t[0]). Modulus M against M_d: modulus_rms [m/s^2],
     modulus_correlation, modulus_lag_s.
     Felt direction (full and modulus paths), against ``direction_reference`` ("S_d" or "cabin +z"):
     direction_rms, direction_peak, direction_threshold [rad] and direction_above_pct [%].
@@ -298,6 +322,7 @@ class Metrics:
     jerk_rms: np.ndarray
     qdd_variation_per_s: np.ndarray
     sign_changes_per_s: np.ndarray
+    reversals_per_s: np.ndarray
     qd_start: np.ndarray
     modulus_rms: float | None
     modulus_correlation: float | None
@@ -312,7 +337,8 @@ class Metrics:
     rotation_above_pct: np.ndarray
 
     CHANNEL_FIELDS = ("rms", "correlation", "lag_s", "perceived_rms", "above_threshold_pct", "peak_false_cue")
-    JOINT_FIELDS = ("jerk_peak", "jerk_rms", "qdd_variation_per_s", "sign_changes_per_s", "qd_start")
+    JOINT_FIELDS = ("jerk_peak", "jerk_rms", "qdd_variation_per_s", "sign_changes_per_s", "reversals_per_s",
+                    "qd_start")
     #: The first word of every name in :meth:`rows`, in the order the rows come.
     ROW_GROUPS = (*CHANNEL_FIELDS, "felt_direction", "felt_rotation", *JOINT_FIELDS, "modulus")
 
@@ -350,7 +376,8 @@ class Metrics:
                  "peak_false_cue": CHANNEL_UNITS,
                  "jerk_peak": [u + "/s^3" for u in per_joint], "jerk_rms": [u + "/s^3" for u in per_joint],
                  "qdd_variation_per_s": [u + "/s^3" for u in per_joint],
-                 "sign_changes_per_s": ("1/s",) * len(self.joints), "qd_start": [u + "/s" for u in per_joint]}
+                 "sign_changes_per_s": ("1/s",) * len(self.joints), "reversals_per_s": ("1/s",) * len(self.joints),
+                 "qd_start": [u + "/s" for u in per_joint]}
         rows = []
         for name in self.CHANNEL_FIELDS:
             values = getattr(self, name)
@@ -371,7 +398,7 @@ class Metrics:
     def key_figures(self) -> dict[str, float | None]:
         """The few numbers a table of many runs shows (the batch table): peak false rotation [deg/s],
         the worst felt force error RMS [m/s^2] (full paths), RMS(M - M_d) [m/s^2] (modulus paths), the
-        most acceleration sign changes per second of any joint [1/s]; for every path the felt-direction
+        most acceleration reversals per second of any joint [1/s] (with the hysteresis); for every path the felt-direction
         error's RMS and peak [deg] and the largest felt rotation of any canal channel [deg/s]."""
         rotation = None if self.peak_false_cue is None else self.peak_false_cue[:3]
         return {
@@ -379,7 +406,7 @@ class Metrics:
             else math.degrees(float(np.nanmax(rotation))),
             "felt_force_rms_max": None if self.perceived_rms is None else float(np.max(self.perceived_rms[3:])),
             "rms_modulus": _plain(self.modulus_rms),
-            "sign_changes_per_s_max": float(np.max(self.sign_changes_per_s)) if len(self.joints) else None,
+            "reversals_per_s_max": float(np.max(self.reversals_per_s)) if len(self.joints) else None,
             "felt_direction_rms_deg": _degrees(self.direction_rms),
             "felt_direction_peak_deg": _degrees(self.direction_peak),
             "felt_rotation_peak_deg_s": _degrees(np.max(self.rotation_peak)),
@@ -409,8 +436,9 @@ class Metrics:
             parts.append(f"felt direction off by {math.degrees(self.direction_rms):.3g} deg RMS, "
                          f"{math.degrees(self.direction_peak):.3g} deg peak (against {self.direction_reference})")
         if len(self.joints):
-            k = int(np.argmax(self.sign_changes_per_s))
-            parts.append(f"max {self.sign_changes_per_s[k]:.3g} acceleration sign changes/s ({self.joints[k]})")
+            k = int(np.argmax(self.reversals_per_s))
+            parts.append(f"max {self.reversals_per_s[k]:.3g} acceleration reversals/s ({self.joints[k]}, "
+                         f"swings over {100 * REVERSAL_SHARE:.0f}% of its peak)")
             k = int(np.argmax(np.abs(self.qd_start)))
             unit = joint_units(self.joints)[k]
             parts.append(f"largest rate at start {abs(self.qd_start[k]):.3g} {unit}/s ({self.joints[k]})")
@@ -450,7 +478,8 @@ def of_arrays(t, S, S_d, qdd, qd, joint_names, M=None, M_d=None,
                    duration_s=float(t[-1] - t[0]), **channel,
                    jerk_peak=np.abs(jerk(t, qdd)).max(axis=0, initial=0.0), jerk_rms=jerk_rms(t, qdd),
                    qdd_variation_per_s=variation_per_second(t, qdd),
-                   sign_changes_per_s=sign_changes_per_second(t, qdd), qd_start=qd[0].copy(),
+                   sign_changes_per_s=sign_changes_per_second(t, qdd),
+                   reversals_per_s=reversals_per_second(t, qdd), qd_start=qd[0].copy(),
                    modulus_rms=modulus[0], modulus_correlation=modulus[1], modulus_lag_s=modulus[2],
                    direction_reference="cabin +z" if S_d is None else "S_d", direction_rms=direction[0],
                    direction_peak=direction[1], direction_threshold=threshold, direction_above_pct=direction[2],
