@@ -1,0 +1,266 @@
+"""From a vehicle's motion to a desired path: the axes turn into the cabin frame, resampling with an
+anti-alias filter, cropping, the convention check and writing the CSV safely.
+
+Shared by the JSBSim import (:mod:`.jsbsim`) and the log import (:mod:`.log`). The cabin frame is x
+right, y forward, z up; vehicle body axes are x forward, y right, z down (DESIGN.md, "Vehicle data
+in"), so ``f_cabin = R_cabin_body f_body`` and ``omega_cabin = R_cabin_body omega_body`` with the proper
+rotation :data:`R_CABIN_BODY` (det +1: angular velocity, a pseudo-vector, turns like the force).
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+from scipy import signal
+
+from desdemona.profiles.csvfile import write_csv
+from desdemona.profiles.path import G, DesiredPath, ProfileError, modulus_version
+
+#: Body axes (x forward, y right, z down) to cabin axes (x right, y forward, z up): fx = f_y_body,
+#: fy = f_x_body, fz = -f_z_body; wx = q, wy = p, wz = -r.
+R_CABIN_BODY = np.array([[0.0, 1.0, 0.0],
+                         [1.0, 0.0, 0.0],
+                         [0.0, 0.0, -1.0]])
+
+#: The cabin's unit vector for each direction name a log's axis may be declared as.
+DIRECTIONS = {"right": (1.0, 0.0, 0.0), "left": (-1.0, 0.0, 0.0),
+              "forward": (0.0, 1.0, 0.0), "back": (0.0, -1.0, 0.0),
+              "up": (0.0, 0.0, 1.0), "down": (0.0, 0.0, -1.0)}
+
+#: Above this specific force [g] a flight has crashed (ground contact, a spin gone numerically wild):
+#: no person or motion simulator takes it, and it is no path to cue.
+CRASH_G = 20.0
+
+# The convention check (DESIGN.md: where the vehicle is still, the felt force is +1 g up).
+STILL_SECONDS = 1.0          # [s] the shortest still stretch the check uses
+#: [rad/s] |omega| below this: above a resting IMU's gyro noise and bias, below an airliner's steady
+#: turn (1.45 deg/s at 30 deg of bank, which reads 1.15 g: not still).
+STILL_RATE = np.radians(1.0)
+STILL_SPREAD = 0.03          # RMS of f about its mean, relative to |mean f| ...
+STILL_SPREAD_ABS = 0.05      # ... plus this [m/s^2]
+UP_TOLERANCE_DEG = 30.0      # direction of the still force from up (a parked car on a slope)
+MAGNITUDE_TOLERANCE = (0.8, 1.25)  # |f| / g at rest
+
+#: Cut-off of the filter before the rates are differentiated for the lever arm's alpha [Hz]: motion
+#: cues live below about 10 Hz, and a derivative amplifies the sensor's noise above.
+ALPHA_CUTOFF_HZ = 10.0
+FILTER_ORDER = 4
+#: Anti-alias cut-off as a share of the new sample rate (0.4 = 80 % of the new Nyquist frequency).
+CUTOFF_PER_RATE = 0.4
+
+
+def turn_to_cabin(v, R_cabin_from) -> np.ndarray:
+    """(N, 3) vectors in another frame turned into the cabin frame: ``v_cabin = R v``, row by row."""
+    return np.asarray(v, dtype=float) @ np.asarray(R_cabin_from, dtype=float).T
+
+
+def axes_rotation(axes) -> np.ndarray:
+    """R_cabin_log (3, 3) from the directions of a log's x, y, z axes, e.g. ``("forward", "right", "down")``.
+
+    Each name is one of :data:`DIRECTIONS`; the three must be perpendicular and right-handed (a proper
+    rotation, det +1), else :class:`ProfileError` says which.
+    """
+    names = [str(a).strip().lower() for a in axes]
+    if len(names) != 3:
+        raise ProfileError(f"--axes {','.join(names)}: give three directions, for the log's x, y and z")
+    unknown = [a for a in names if a not in DIRECTIONS]
+    if unknown:
+        raise ProfileError(f"--axes: unknown direction {unknown[0]!r}; use {', '.join(DIRECTIONS)}")
+    R = np.column_stack([DIRECTIONS[a] for a in names])
+    if abs(np.linalg.det(R)) < 0.5:
+        raise ProfileError(f"--axes {','.join(names)}: two axes along the same line; give one of "
+                           f"forward/back, one of right/left, one of up/down")
+    if np.linalg.det(R) < 0:
+        flipped = {"up": "down", "down": "up", "left": "right", "right": "left", "forward": "back",
+                   "back": "forward"}
+        raise ProfileError(f"--axes {','.join(names)}: a left-handed set (x cross y = -z); an IMU's axes are "
+                           f"right-handed: is z {flipped[names[2]]}?")
+    return R
+
+
+def uniform_grid(t, X) -> tuple[np.ndarray, np.ndarray]:
+    """Samples ``X`` (N, k) at times ``t`` (N,) [s] interpolated onto a uniform grid of the median step
+    (unchanged if ``t`` is uniform already)."""
+    t = np.asarray(t, dtype=float)
+    X = np.asarray(X, dtype=float)
+    step = float(np.median(np.diff(t)))
+    if np.allclose(np.diff(t), step, rtol=1e-6, atol=1e-9):
+        return t, X
+    n = int(np.floor((t[-1] - t[0]) / step + 1e-9)) + 1
+    grid = t[0] + step * np.arange(n)
+    return grid, np.column_stack([np.interp(grid, t, X[:, i]) for i in range(X.shape[1])])
+
+
+def lowpass(X, rate_hz: float, cutoff_hz: float) -> np.ndarray:
+    """X (N, k) sampled uniformly at ``rate_hz`` through a zero-phase Butterworth low-pass (order
+    :data:`FILTER_ORDER`, applied forwards and backwards: no delay). Unchanged if the cut-off is at or
+    above 0.45 of the rate (nothing to remove) or the signal too short to filter."""
+    X = np.asarray(X, dtype=float)
+    if cutoff_hz >= 0.45 * rate_hz:
+        return X
+    sos = signal.butter(FILTER_ORDER, cutoff_hz, fs=rate_hz, output="sos")
+    if len(X) <= 3 * (2 * len(sos) + 1):
+        return X
+    return signal.sosfiltfilt(sos, X, axis=0)
+
+
+def resample(t, X, rate_hz: float) -> tuple[np.ndarray, np.ndarray]:
+    """X (N, k) at uniform times ``t`` [s] resampled to ``rate_hz`` [Hz] from ``t[0]``: low-passed at
+    :data:`CUTOFF_PER_RATE` x ``rate_hz`` first when the new rate is lower (anti-alias), then
+    interpolated linearly (the filtered signal is smooth on the finer grid)."""
+    t = np.asarray(t, dtype=float)
+    native = 1.0 / float(np.median(np.diff(t)))
+    X = lowpass(X, native, CUTOFF_PER_RATE * rate_hz)
+    n = int(np.floor((t[-1] - t[0]) * rate_hz + 1e-6)) + 1
+    grid = t[0] + np.arange(n) / rate_hz
+    return grid, np.column_stack([np.interp(grid, t, X[:, i]) for i in range(X.shape[1])])
+
+
+def filter_note(native_hz: float, rate_hz: float) -> str:
+    """How :func:`resample` treated a signal at ``native_hz`` resampled to ``rate_hz``, for a ``source:`` line."""
+    cutoff = CUTOFF_PER_RATE * rate_hz
+    if cutoff >= 0.45 * native_hz:
+        return f"{rate_hz:g} Hz from {native_hz:.4g} Hz, interpolated (no anti-alias filter needed)"
+    return f"{rate_hz:g} Hz from {native_hz:.4g} Hz through a zero-phase Butterworth low-pass at {cutoff:g} Hz"
+
+
+def crop(t, X, start: float | None, end: float | None, what: str) -> tuple[np.ndarray, np.ndarray]:
+    """The samples with ``start <= t <= end`` [s] (None: from the first, to the last), time shifted so
+    that the crop starts at 0. Fewer than two samples raises :class:`ProfileError`."""
+    t = np.asarray(t, dtype=float)
+    lo = t[0] if start is None else float(start)
+    hi = t[-1] if end is None else float(end)
+    if start is not None and end is not None and not hi > lo:
+        raise ProfileError(f"--start {lo:g} and --end {hi:g}: the end must be after the start")
+    keep = (t >= lo - 1e-9) & (t <= hi + 1e-9)
+    if np.count_nonzero(keep) < 2:
+        raise ProfileError(f"{what}: nothing between {lo:g} s and {hi:g} s (it runs from {t[0]:g} s to {t[-1]:g} s)")
+    return t[keep] - lo, np.asarray(X)[keep]
+
+
+def check_no_crash(t, f_cabin, what: str) -> None:
+    """Refuse a motion whose specific force exceeds :data:`CRASH_G` anywhere (``t`` (N,) [s], ``f_cabin``
+    (N, 3) [m/s^2]), naming the time and the value."""
+    n = np.linalg.norm(f_cabin, axis=1) / G
+    if np.any(n > CRASH_G):
+        k = int(np.argmax(n))
+        raise ProfileError(f"{what}: the specific force reaches {n[k]:.0f} g at t = {t[k]:.2f} s (above "
+                           f"{CRASH_G:g} g: a crash or ground impact, not a motion to cue); crop it away "
+                           f"with --start/--end or choose another stretch")
+
+
+@dataclass(frozen=True)
+class Still:
+    """A still stretch of a motion: from ``t0`` to ``t1`` [s], its mean specific force [m/s^2] in the cabin
+    frame."""
+
+    t0: float
+    t1: float
+    f_cabin: np.ndarray
+
+
+def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE) -> Still | None:
+    """The stillest stretch of at least :data:`STILL_SECONDS` where the rates are near zero
+    (|omega| < ``max_rate`` [rad/s]) and the force nearly constant (RMS about its mean below
+    :data:`STILL_SPREAD` of its size plus :data:`STILL_SPREAD_ABS`), or None. Uniform ``t`` [s]; the
+    criteria are relative so a log in the wrong unit is still found still (and then diagnosed)."""
+    t = np.asarray(t, dtype=float)
+    step = float(np.median(np.diff(t)))
+    w = int(round(STILL_SECONDS / step)) + 1
+    if len(t) < w:
+        return None
+    f = np.asarray(f_cabin, dtype=float)
+    rates = np.linalg.norm(omega_cabin, axis=1)
+    windows_rate = np.lib.stride_tricks.sliding_window_view(rates, w).max(axis=1)
+    c1 = np.vstack([np.zeros(3), np.cumsum(f, axis=0)])
+    c2 = np.vstack([np.zeros(3), np.cumsum(f ** 2, axis=0)])
+    mean = (c1[w:] - c1[:-w]) / w
+    var = np.maximum((c2[w:] - c2[:-w]) / w - mean ** 2, 0.0).sum(axis=1)
+    spread = np.sqrt(var)
+    size = np.linalg.norm(mean, axis=1)
+    still = (windows_rate < max_rate) & (spread < STILL_SPREAD * size + STILL_SPREAD_ABS)
+    if not np.any(still):
+        return None
+    score = np.where(still, spread / (size + STILL_SPREAD_ABS) + windows_rate / max_rate, np.inf)
+    k = int(np.argmin(score))
+    return Still(float(t[k]), float(t[k + w - 1]), mean[k])
+
+
+def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0)) -> None:
+    """Raise :class:`ProfileError` naming the likely mistake unless the still force reads +1 g up in
+    the cabin frame: magnitude within :data:`MAGNITUDE_TOLERANCE` of g and direction within
+    :data:`UP_TOLERANCE_DEG` of ``up``, the world's up in the cabin frame (cabin +z for a vehicle at rest
+    or flying level; from the attitude where it is known). ``axes_hint`` adds how the axes were declared
+    to the message."""
+    f = still.f_cabin
+    up = np.asarray(up, dtype=float) / np.linalg.norm(up)
+    size = float(np.linalg.norm(f))
+    where = f"still from {still.t0:.2f} s to {still.t1:.2f} s, the force reads ({f[0]:.3g}, {f[1]:.3g}, " \
+            f"{f[2]:.3g}) m/s^2 in the cabin frame (x right, y forward, z up)"
+    lo, hi = MAGNITUDE_TOLERANCE
+    ratio = size / G
+    if lo / 9.81 <= ratio <= hi / 9.81:
+        raise ProfileError(f"{where}: |f| = {size:.3g} m/s^2, 1/9.81 of g: the accelerations are in g "
+                           f"but declared as m/s^2? (--accel-unit g)")
+    if lo * 9.81 <= ratio <= hi * 9.81:
+        raise ProfileError(f"{where}: |f| = {size:.3g} m/s^2, 9.81 g: the accelerations are in m/s^2 but "
+                           f"declared as g? (--accel-unit m/s2)")
+    if ratio < 0.2:
+        raise ProfileError(f"{where}: about 0 at rest: kinematic acceleration, not specific force? The log "
+                           f"must hold accelerometer readings (specific force, +1 g up at rest)")
+    if not lo <= ratio <= hi:
+        raise ProfileError(f"{where}: |f| = {ratio:.2f} g at rest, not 1 g: wrong accelerometer unit or scale?")
+    angle = float(np.degrees(np.arccos(np.clip(f @ up / size, -1.0, 1.0))))
+    if angle <= UP_TOLERANCE_DEG:
+        return
+    hint = f" (declared {axes_hint})" if axes_hint else ""
+    if angle >= 180.0 - UP_TOLERANCE_DEG:
+        raise ProfileError(f"{where}: -1 g, the force points down: the vertical axis is up but declared "
+                           f"down (or the reverse)?{hint}")
+    k = int(np.argmax(np.abs(f[:2])))
+    raise ProfileError(f"{where}: g lies along cabin {'xy'[k]} ({('right', 'forward')[k]}), not up: which "
+                       f"axis is vertical?{hint}")
+
+
+def up_from_attitude(phi, theta) -> np.ndarray:
+    """The world's up (3,) in the cabin frame of a vehicle banked ``phi`` and pitched ``theta`` [rad]
+    (Euler angles of body axes x forward, y right, z down): the direction a still or steadily moving
+    vehicle's specific force points, ``(-sin phi cos theta, sin theta, cos phi cos theta)``."""
+    return np.array([-np.sin(phi) * np.cos(theta), np.sin(theta), np.cos(phi) * np.cos(theta)])
+
+
+def make_path(name: str, t, omega_cabin, f_cabin, description: str, modulus: bool) -> DesiredPath:
+    """The desired path of a motion in the cabin frame (``omega_cabin`` [rad/s], ``f_cabin`` [m/s^2],
+    (N, 3) each), or its modulus-only form ``t,M`` (``dfs``) when ``modulus``."""
+    path = DesiredPath(name, np.asarray(t, dtype=float) - float(t[0]),
+                       np.column_stack([omega_cabin, f_cabin]), description=description)
+    return modulus_version(path) if modulus else path
+
+
+def write_path(out, path: DesiredPath, comments=(), overwrite: bool = False) -> Path:
+    """Write ``path`` as CSV to ``out`` with ``# comments`` lines, never half: into a temporary file in
+    the same folder, then renamed. An existing ``out`` is replaced only with ``overwrite``."""
+    out = Path(out)
+    if out.exists() and not overwrite:
+        raise ProfileError(f"{out}: already exists; choose another file or add --overwrite")
+    if out.is_dir():
+        raise ProfileError(f"{out}: is a folder; give a CSV file name")
+    folder = out.parent if str(out.parent) else Path(".")
+    if not folder.is_dir():
+        raise ProfileError(f"{out}: cannot write it: the folder {folder} does not exist")
+    fd, tmp = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".tmp", dir=folder)
+    os.close(fd)
+    umask = os.umask(0)
+    os.umask(umask)
+    try:
+        write_csv(tmp, path, comments=comments)
+        os.chmod(tmp, 0o666 & ~umask)  # as a plain open() would create it
+        os.replace(tmp, out)
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+    return out

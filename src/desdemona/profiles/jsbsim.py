@@ -1,0 +1,231 @@
+"""Desired paths from a JSBSim flight: what the pilot feels, turned into the cabin frame.
+
+JSBSim (https://github.com/JSBSim-Team/jsbsim, pip ``jsbsim``, an optional extra) runs one of its
+shipped scripts (by name, from its ``scripts/`` folder) or a script file of the user's as fast as it
+computes. The path is the specific force at the pilot station, ``accelerations/n-pilot-{x,y,z}-norm``
+[g, body axes x forward, y right, z down], and the body rates ``velocities/{p,q,r}-rad_sec``, turned
+into the cabin frame by :data:`.convert.R_CABIN_BODY` (DESIGN.md, "Vehicle data in").
+"""
+
+from __future__ import annotations
+
+import contextlib
+import difflib
+import os
+import sys
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from desdemona.profiles import convert
+from desdemona.profiles.path import G, DesiredPath, ProfileError
+
+INSTALL_HINT = "pip install 'desdemona[jsbsim]' (or, in a source checkout, pip install '.[jsbsim]')"
+#: Default sample rate of the written path [Hz]: JSBSim steps at 120 Hz; 100 Hz keeps every motion cue
+#: (below about 10 Hz) with a tenfold margin and a round time step.
+DEFAULT_RATE = 100.0
+#: Simulated past the crop's end so that the zero-phase filter has no edge inside the crop [s].
+FILTER_MARGIN = 1.0
+FORCE = ("accelerations/n-pilot-x-norm", "accelerations/n-pilot-y-norm", "accelerations/n-pilot-z-norm")
+RATES = ("velocities/p-rad_sec", "velocities/q-rad_sec", "velocities/r-rad_sec")
+ATTITUDE = ("attitude/phi-rad", "attitude/theta-rad")
+#: Still, for the convention check [rad/s]: a simulation has no gyro noise; slower than any turn that
+#: banks the aircraft by more than the check's tolerance.
+STILL_RATE = np.radians(0.2)
+
+
+def _jsbsim():
+    try:
+        import jsbsim
+    except ImportError:
+        raise ProfileError(f"importing a JSBSim flight needs the jsbsim package: {INSTALL_HINT}") from None
+    return jsbsim
+
+
+def shipped_scripts() -> list[str]:
+    """The names of the scripts that ship with the jsbsim package (file names without ``.xml``)."""
+    folder = Path(_jsbsim().get_default_root_dir()) / "scripts"
+    return sorted(p.stem for p in folder.glob("*.xml"))
+
+
+def script_file(script: str | Path) -> Path:
+    """A script file of the user's, or a shipped script by name (with or without ``.xml``)."""
+    given = Path(script)
+    if given.suffix.lower() == ".xml" and given.is_file():
+        return given
+    folder = Path(_jsbsim().get_default_root_dir()) / "scripts"
+    for candidate in (folder / f"{given.name}.xml", folder / given.name):
+        if candidate.is_file():
+            return candidate
+    if given.is_file():
+        return given
+    names = shipped_scripts()
+    close = difflib.get_close_matches(given.stem, names, n=8, cutoff=0.4)
+    close += [n for n in names if n not in close][: max(0, 5 - len(close))]
+    raise ProfileError(f"JSBSim script {str(script)!r}: neither a file nor a shipped script; shipped are "
+                       f"e.g. {', '.join(close)} ({len(names)} in all: desdemona import jsbsim --list)")
+
+
+@dataclass(frozen=True)
+class Flight:
+    """A JSBSim run sampled at every step: ``t`` (N,) [s] of sim time, ``omega_body`` (N, 3) [rad/s]
+    (p, q, r), ``f_body`` (N, 3) [m/s^2] at the pilot station, body axes (x forward, y right, z down),
+    ``attitude`` (N, 2) [rad] bank and pitch (phi, theta)."""
+
+    script: Path
+    aircraft: str
+    version: str
+    t: np.ndarray
+    omega_body: np.ndarray
+    f_body: np.ndarray
+    attitude: np.ndarray
+
+
+@contextlib.contextmanager
+def _quiet(log_path: str):
+    """JSBSim's own printing (its banner, script ``notify`` events, messages from C++) goes to
+    ``log_path`` instead of this process's stdout and stderr: redirected at the file descriptors and,
+    as the jsbsim module may hand C++'s output to Python's ``sys.stdout``, there too."""
+    sys.stdout.flush()
+    sys.stderr.flush()
+    saved = os.dup(1), os.dup(2)
+    with open(log_path, "wb") as sink, open(log_path.replace(".log", ".py.log"), "w") as text_sink:
+        os.dup2(sink.fileno(), 1)
+        os.dup2(sink.fileno(), 2)
+        try:
+            with contextlib.redirect_stdout(text_sink), contextlib.redirect_stderr(text_sink):
+                yield
+        finally:
+            sys.stdout.flush()
+            sys.stderr.flush()
+            _flush_c_stdio()  # C++ std::cout writes through C's stdout buffer: empty it into the sink
+            os.dup2(saved[0], 1)
+            os.dup2(saved[1], 2)
+            os.close(saved[0])
+            os.close(saved[1])
+
+
+def _flush_c_stdio() -> None:
+    import ctypes
+
+    try:
+        ctypes.CDLL(None).fflush(None)
+    except (OSError, AttributeError):  # no C library to reach (not on this platform): nothing buffered there
+        pass
+
+
+def _initialization_file(script: Path, root: Path, aircraft: str, initialize: str) -> str:
+    """The script's initial-condition file as JSBSim wants it (relative to the aircraft's folder): one
+    next to the script is found too, so a user's script can start its aircraft where it likes."""
+    if not initialize or (root / "aircraft" / aircraft / f"{initialize}.xml").is_file():
+        return ""
+    local = script.resolve().parent / (initialize if initialize.endswith(".xml") else f"{initialize}.xml")
+    if not local.is_file():
+        return ""
+    return os.path.relpath(local, root / "aircraft" / aircraft)
+
+
+def _script_use(script: Path) -> tuple[str, str]:
+    """(aircraft, initialize) of a script's ``<use>`` element."""
+    import xml.etree.ElementTree as ET
+
+    try:
+        use = ET.parse(script).getroot().find("use")
+    except (ET.ParseError, OSError) as exc:
+        raise ProfileError(f"JSBSim script {script}: not readable XML: {exc}") from None
+    if use is None or not use.get("aircraft"):
+        raise ProfileError(f"JSBSim script {script}: no <use aircraft=...> element")
+    return use.get("aircraft"), use.get("initialize", "")
+
+
+def fly(script: str | Path, end: float | None = None) -> Flight:
+    """Run a JSBSim script (a shipped one by name, or a file) as fast as it computes, up to its own end
+    or ``end`` [s] of sim time, sampling every step. JSBSim's printing is silenced."""
+    jsbsim = _jsbsim()
+    path = script_file(script).resolve()  # JSBSim reads a relative path from its own root folder
+    root = Path(jsbsim.get_default_root_dir())
+    aircraft, initialize = _script_use(path)
+    init = _initialization_file(path, root, aircraft, initialize)
+    rows = []
+    failure = None
+    with tempfile.TemporaryDirectory() as tmp:
+        log = os.path.join(tmp, "jsbsim.log")
+        with _quiet(log):
+            try:
+                fdm = jsbsim.FGFDMExec(str(root))
+                fdm.set_debug_level(0)
+                fdm.set_output_path(tmp)  # a script's <output> files go here, not into JSBSim's folder
+                loaded = fdm.load_script(str(path), 0.0, init) if init else fdm.load_script(str(path))
+                if not loaded:
+                    failure = "JSBSim could not load it"
+                else:
+                    fdm.disable_output()
+                    fdm.run_ic()
+                    props = [fdm.get_property_manager().get_node(name) for name in RATES + FORCE + ATTITUDE]
+                    while True:
+                        t = fdm.get_sim_time()
+                        rows.append([t, *(node.get_double_value() for node in props)])
+                        if end is not None and t > end or not fdm.run():
+                            break
+            except (jsbsim.BaseError, OSError) as exc:  # a trim that fails, a file that does not exist, ...
+                at = f" at t = {rows[-1][0]:.2f} s" if rows else ""
+                failure = f"{type(exc).__name__}{at}: {' '.join(str(exc).split())}"
+        if failure is not None:
+            said = [line.strip() for name in (log, log.replace(".log", ".py.log")) if os.path.exists(name)
+                    for line in Path(name).read_text(errors="replace").splitlines() if line.strip()]
+            detail = f"{failure} ({said[-1]})" if said and not rows else failure
+            raise ProfileError(f"JSBSim script {path}: cannot be run: {detail}")
+    data = np.array(rows)
+    keep = np.concatenate([[True], np.diff(data[:, 0]) > 0])  # a trim may repeat a time
+    data = data[keep]
+    if len(data) < 2:
+        raise ProfileError(f"JSBSim script {path}: ran no time")
+    return Flight(path, aircraft, jsbsim.__version__, data[:, 0], data[:, 1:4], data[:, 4:7] * G, data[:, 7:9])
+
+
+def from_jsbsim(script: str | Path, start: float | None = None, end: float | None = None,
+                rate: float | None = None, modulus: bool = False) -> tuple[DesiredPath, list[str]]:
+    """The desired path of a JSBSim flight from ``start`` to ``end`` [s of sim time] (None: the script's
+    own), resampled to ``rate`` [Hz] (None: :data:`DEFAULT_RATE`) with an anti-alias filter, its time 0
+    at ``start``; with ``modulus``
+    its ``t,M`` form. Returns the path and its ``source:`` comment lines.
+
+    Refused (:class:`ProfileError`): an unknown script, a crop outside the flight, a specific force above
+    :data:`.convert.CRASH_G` g anywhere in the crop (raw samples), a still stretch that does not read
+    +1 g up (the convention check; a flight without one is not checked, its axes being JSBSim's own).
+    """
+    rate = DEFAULT_RATE if rate is None else float(rate)
+    if not rate > 0:
+        raise ProfileError(f"--rate {rate:g}: must be a positive number of samples per second")
+    flight = fly(script, None if end is None else end + FILTER_MARGIN)
+    name = flight.script.stem
+    omega = convert.turn_to_cabin(flight.omega_body, convert.R_CABIN_BODY)
+    f = convert.turn_to_cabin(flight.f_body, convert.R_CABIN_BODY)
+    if start is not None and not start < flight.t[-1]:
+        raise ProfileError(f"JSBSim script {name}: --start {start:g} s is past its end at {flight.t[-1]:.4g} s")
+    lo = flight.t[0] if start is None else start
+    t_raw, f_raw = convert.crop(flight.t, f, lo, end, f"JSBSim script {name}")
+    convert.check_no_crash(t_raw + lo, f_raw, f"JSBSim script {name}")
+    t, X = convert.resample(*convert.uniform_grid(flight.t, np.column_stack([omega, f])), rate)
+    t, X = convert.crop(t, X, lo, end, f"JSBSim script {name}")
+    still = convert.find_still(t, X[:, :3], X[:, 3:], STILL_RATE)
+    if still is not None:  # the accelerometer agrees with the attitude (a check of the axes turn)
+        during = (flight.t >= lo + still.t0) & (flight.t <= lo + still.t1)
+        phi, theta = flight.attitude[during].mean(axis=0)
+        convert.check_convention(still, up=convert.up_from_attitude(phi, theta))
+    span = f"{lo:g}-{lo + t[-1]:.6g} s"
+    description = f"JSBSim {name} ({flight.aircraft}), pilot station, {span} of sim time"
+    path = convert.make_path(name, t, X[:, :3], X[:, 3:], description, modulus)
+    comments = [f"source: JSBSim {flight.version} script {flight.script.name} ({'shipped with JSBSim' if _shipped(flight.script) else 'a script file'}), aircraft {flight.aircraft}",
+                "source: pilot station specific force accelerations/n-pilot-{x,y,z}-norm and body rates "
+                "velocities/{p,q,r}-rad_sec, body (forward,right,down) -> cabin (right,forward,up)",
+                f"source: crop {span} of sim time (t = 0 here), "
+                f"{convert.filter_note(1 / float(np.median(np.diff(flight.t))), rate)}"
+                + ("; modulus |f| only" if modulus else "")]
+    return path, comments
+
+
+def _shipped(script: Path) -> bool:
+    return script.resolve().parent == (Path(_jsbsim().get_default_root_dir()) / "scripts").resolve()

@@ -1,0 +1,168 @@
+"""Desired paths from a logged motion: an IMU's or a vehicle simulator's output as CSV.
+
+The log holds, per sample, a time, three accelerometer readings and three angular rates, in columns
+named by the user, in declared units and along declared axes. An accelerometer reads specific force
+``f = a - g_vec`` (+1 g up at rest), which is what a person feels and what a desired path holds; a log
+of kinematic acceleration (0 at rest) is not one, and the convention check says so.
+
+The rows go through: units to SI, the log's axes turned into the cabin frame (x right, y forward,
+z up), a uniform grid at the log's own median step, the lever arm from the sensor to the head
+(``f_head = f_sensor + alpha x r + omega x (omega x r)``), the anti-alias filter and resampling, the
+convention check (where the log is still the force reads +1 g up) and the crop.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from desdemona.profiles import convert
+from desdemona.profiles.path import G, DesiredPath, ProfileError
+
+ACCEL_UNITS = {"g": G, "m/s2": 1.0, "m/s^2": 1.0}
+RATE_UNITS = {"deg/s": math.pi / 180.0, "rad/s": 1.0}
+TIME_UNITS = {"s": 1.0, "ms": 1e-3}
+#: The written path's rate when none is given: the log's own, at most this [Hz].
+MAX_DEFAULT_RATE = 100.0
+
+
+@dataclass(frozen=True)
+class LogFormat:
+    """How a log is laid out: column names, units and the directions of its x, y, z axes.
+
+    time : the time column; accel, rates : three column names each (the log's x, y, z);
+    accel_unit : ``g`` or ``m/s2``; rate_unit : ``deg/s`` or ``rad/s``; time_unit : ``s`` or ``ms``;
+    axes : the cabin-frame direction of the log's x, y, z (``forward,right,down`` = vehicle body axes);
+    lever_arm : (3,) [m] from the sensor to the head, in the log's axes.
+    """
+
+    time: str = "t"
+    accel: tuple[str, str, str] = ("ax", "ay", "az")
+    rates: tuple[str, str, str] = ("p", "q", "r")
+    accel_unit: str = "m/s2"
+    rate_unit: str = "rad/s"
+    time_unit: str = "s"
+    axes: tuple[str, str, str] = ("forward", "right", "down")
+    lever_arm: tuple[float, float, float] = (0.0, 0.0, 0.0)
+
+    def __post_init__(self):
+        for label, value, units in (("--accel-unit", self.accel_unit, ACCEL_UNITS),
+                                    ("--rate-unit", self.rate_unit, RATE_UNITS),
+                                    ("--time-unit", self.time_unit, TIME_UNITS)):
+            if value not in units:
+                raise ProfileError(f"{label} {value!r}: use one of {', '.join(units)}")
+        for label, names in (("--accel", self.accel), ("--rates", self.rates)):
+            if len(names) != 3:
+                raise ProfileError(f"{label} {','.join(names)}: give three column names, for x, y and z")
+        if len(self.lever_arm) != 3 or not all(math.isfinite(x) for x in self.lever_arm):
+            raise ProfileError(f"--lever-arm {self.lever_arm}: give three numbers x,y,z in metres")
+        convert.axes_rotation(self.axes)  # raises on a left-handed or degenerate set
+
+
+def read_log(file: str | Path, columns: list[str]) -> dict[str, np.ndarray]:
+    """The named columns of a CSV log as float arrays. ``#`` lines are comments; the first other line
+    names the columns. A missing column, a cell that is not a number, fewer than two rows raise
+    :class:`ProfileError` naming them (and the log's columns)."""
+    file = Path(file)
+    try:
+        text = file.read_bytes().decode("utf-8-sig")
+    except OSError as exc:
+        raise ProfileError(f"{file}: cannot read: {exc.strerror or exc}") from None
+    except UnicodeDecodeError:
+        raise ProfileError(f"{file}: not UTF-8 text; save it as UTF-8 CSV") from None
+    lines = [(i + 1, line) for i, line in enumerate(text.splitlines())
+             if line.strip() and not line.lstrip().startswith("#")]
+    if not lines:
+        raise ProfileError(f"{file}: no header and no data")
+    header = [c.strip() for c in next(csv.reader([lines[0][1]]))]
+    missing = [c for c in columns if c not in header]
+    if missing:
+        raise ProfileError(f"{file}: no column{'s' if len(missing) > 1 else ''} {', '.join(map(repr, missing))}; "
+                           f"the log's columns are {', '.join(header)} (name them with --time, --accel, --rates)")
+    index = [header.index(c) for c in columns]
+    rows = []
+    for number, line in lines[1:]:
+        cells = next(csv.reader([line]))
+        try:
+            values = [float(cells[k]) for k in index]
+        except (ValueError, IndexError):
+            raise ProfileError(f"{file}: line {number}: a missing value or not a number in {line.strip()!r}") from None
+        if not all(math.isfinite(v) for v in values):
+            raise ProfileError(f"{file}: line {number}: not a finite number (NaN or inf) in {line.strip()!r}")
+        rows.append(values)
+    if len(rows) < 2:
+        raise ProfileError(f"{file}: needs at least two rows of data, found {len(rows)}")
+    data = np.array(rows)
+    return {c: data[:, k] for k, c in enumerate(columns)}
+
+
+def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None = None,
+             end: float | None = None, rate: float | None = None, modulus: bool = False,
+             check: bool = True) -> tuple[DesiredPath, list[str]]:
+    """The desired path of a logged motion (see the module's docstring) from ``start`` to ``end`` [s of
+    the log's time] (None: all), at ``rate`` [Hz] (None: the log's own, at most
+    :data:`MAX_DEFAULT_RATE`), its time 0 at the crop's start; with ``modulus`` its ``t,M`` form.
+    Returns the path and its ``source:`` comment lines.
+
+    With ``check`` the convention check runs on the whole log (:func:`.convert.check_convention`); a log
+    with no still stretch cannot be checked and is refused unless ``check`` is False.
+    """
+    file = Path(file)
+    data = read_log(file, [fmt.time, *fmt.accel, *fmt.rates])
+    t = data[fmt.time] * TIME_UNITS[fmt.time_unit]
+    steps = np.diff(t)
+    if np.any(steps <= 0):
+        k = int(np.argmax(steps <= 0))
+        raise ProfileError(f"{file}: column {fmt.time!r}: time {t[k + 1]:g} s at data row {k + 2} does not "
+                           f"increase (previous {t[k]:g} s)")
+    R = convert.axes_rotation(fmt.axes)
+    f = convert.turn_to_cabin(np.column_stack([data[c] for c in fmt.accel]) * ACCEL_UNITS[fmt.accel_unit], R)
+    omega = convert.turn_to_cabin(np.column_stack([data[c] for c in fmt.rates]) * RATE_UNITS[fmt.rate_unit], R)
+    t, X = convert.uniform_grid(t, np.column_stack([omega, f]))
+    native = 1.0 / float(np.median(np.diff(t)))
+    rate = min(native, MAX_DEFAULT_RATE) if rate is None else float(rate)
+    if not rate > 0:
+        raise ProfileError(f"--rate {rate:g}: must be a positive number of samples per second")
+    r_cabin = R @ np.asarray(fmt.lever_arm, dtype=float)
+    if np.any(r_cabin != 0):
+        X[:, 3:] = head_force(X[:, :3], X[:, 3:], r_cabin, native)
+    t, X = convert.resample(t, X, rate)
+    if check:
+        still = convert.find_still(t, X[:, :3], X[:, 3:])
+        if still is None:
+            raise ProfileError(f"{file}: the convention check cannot run: the log is nowhere still for "
+                               f"{convert.STILL_SECONDS:g} s (rates below {math.degrees(convert.STILL_RATE):g} "
+                               f"deg/s and a steady force); check its axes and units by hand and add --no-check")
+        try:
+            convert.check_convention(still, ",".join(fmt.axes) + " for the log's x,y,z")
+        except ProfileError as exc:
+            raise ProfileError(f"{file}: {exc}") from None
+    lo = float(t[0]) if start is None else float(start)
+    t, X = convert.crop(t, X, lo, end, str(file))
+    convert.check_no_crash(t + lo, X[:, 3:], str(file))
+    span = f"{lo:g}-{lo + t[-1]:.6g} s"
+    description = f"log {file.name}, {span}"
+    path = convert.make_path(file.stem, t, X[:, :3], X[:, 3:], description, modulus)
+    comments = [f"source: log {file.name}, columns time {fmt.time} [{fmt.time_unit}], accel "
+                f"{','.join(fmt.accel)} [{fmt.accel_unit}], rates {','.join(fmt.rates)} [{fmt.rate_unit}]",
+                f"source: axes {','.join(fmt.axes)} for the log's x,y,z -> cabin (right,forward,up); lever arm "
+                f"sensor->head {','.join(f'{x:g}' for x in fmt.lever_arm)} m (log axes)",
+                f"source: crop {span} of the log's time (t = 0 here), {convert.filter_note(native, rate)}; "
+                f"convention check {'passed' if check else 'skipped (--no-check)'}"
+                + ("; modulus |f| only" if modulus else "")]
+    return path, comments
+
+
+def head_force(omega, f_sensor, r, rate_hz: float) -> np.ndarray:
+    """Specific force at the head (N, 3) [m/s^2] from the sensor's, for a rigid vehicle:
+    ``f_head = f_sensor + alpha x r + omega x (omega x r)``, ``r`` (3,) [m] from the sensor to the head,
+    ``omega`` (N, 3) [rad/s] on a uniform grid at ``rate_hz``; ``alpha`` is the derivative of ``omega``
+    low-passed at :data:`.convert.ALPHA_CUTOFF_HZ` (a derivative amplifies sensor noise). All in one
+    frame."""
+    smooth = convert.lowpass(omega, rate_hz, convert.ALPHA_CUTOFF_HZ)
+    alpha = np.gradient(smooth, 1.0 / rate_hz, axis=0)
+    return f_sensor + np.cross(alpha, r) + np.cross(omega, np.cross(omega, r))

@@ -1,0 +1,166 @@
+"""`desdemona import jsbsim`: a JSBSim flight as the pilot feels it, in the cabin frame (short crops of
+shipped scripts; JSBSim computes 100 s of flight in about 0.25 s)."""
+
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from desdemona import profiles
+from desdemona.cli import main
+from desdemona.profiles import convert, jsbsim
+from desdemona.profiles.path import G
+
+pytest.importorskip("jsbsim")
+
+
+def test_body_to_cabin_is_a_proper_rotation_and_level_reads_one_g_up():
+    R = convert.R_CABIN_BODY
+    np.testing.assert_allclose(R @ R.T, np.eye(3))
+    assert np.linalg.det(R) == pytest.approx(1.0)
+    # level flight: n_z = -1 in body axes (x forward, y right, z down)
+    np.testing.assert_allclose(R @ np.array([0.0, 0.0, -G]), [0.0, 0.0, G])
+    # forward is cabin +y, right is cabin +x; a right turn (r > 0 in body axes) has wz < 0
+    np.testing.assert_allclose(R @ [1.0, 0.0, 0.0], [0.0, 1.0, 0.0])
+    np.testing.assert_allclose(R @ [0.0, 1.0, 0.0], [1.0, 0.0, 0.0])
+    assert (R @ [0.0, 0.0, 0.3])[2] < 0
+
+
+@pytest.fixture(scope="module")
+def runway(tmp_path_factory):
+    """The 737 ground test: engines, a roll to ~60 kt, hard braking (0-60 s)."""
+    out = tmp_path_factory.mktemp("jsbsim") / "runway.csv"
+    assert main(["import", "jsbsim", "b737_runway_new", "--end", "60", "--out", str(out)]) == 0
+    return out
+
+
+def test_runway_reads_back_still_then_braking(runway):
+    path = profiles.load(runway)
+    assert path.S_d is not None and path.t[0] == 0.0
+    assert path.t[-1] == pytest.approx(60.0)
+    np.testing.assert_allclose(np.diff(path.t), 0.01, atol=1e-9)  # the default 100 Hz
+    still = (path.t > 10) & (path.t < 40)  # standing on the runway, engines spooling
+    np.testing.assert_allclose(path.S_d[still, 3:].mean(axis=0), [0.0, 0.0, G], atol=0.1)
+    np.testing.assert_allclose(path.S_d[still, :3], 0.0, atol=1e-3)
+    braking = path.t > 59.0
+    assert path.S_d[braking, 4].min() < -2.0  # braking pushes the pilot forward: f_y < 0
+
+
+def test_runway_carries_its_source(runway):
+    text = runway.read_text()
+    sources = [line for line in text.splitlines() if line.startswith("# source:")]
+    assert len(sources) == 3
+    joined = " ".join(sources)
+    for word in ("b737_runway_new", "aircraft 737", "JSBSim 1.", "crop 0-60 s", "100 Hz"):
+        assert word in joined
+
+
+def test_runway_path_is_accepted_by_optimize(runway, tmp_path):
+    crop = tmp_path / "braking.csv"
+    assert main(["import", "jsbsim", "b737_runway_new", "--start", "54", "--end", "60", "--out", str(crop)]) == 0
+    assert main(["optimize", str(crop), "--config", "yaw-track", "--h-u", "0.5", "--starts", "1",
+                 "--out", str(tmp_path / "run"), "--quiet"]) == 0
+    assert (tmp_path / "run" / "summary.json").exists()
+
+
+def test_coordinated_right_turn(tmp_path):
+    """The 737's steady turn (bank about 30 deg, turning right): more than 1 g along the occupant's
+    vertical, no side force, yaw rate negative (clockwise seen from above)."""
+    out = tmp_path / "turn.csv"
+    assert main(["import", "jsbsim", "737_cruise_steady_turn", "--start", "10", "--end", "14", "--out", str(out)]) == 0
+    S = profiles.load(out).S_d
+    assert np.all(S[:, 5] > 1.1 * G)
+    np.testing.assert_allclose(S[:, 3], 0.0, atol=0.05 * G)
+    assert np.all(S[:, 2] < -0.01)
+
+
+def test_crop_starts_at_zero_and_modulus_form(tmp_path):
+    out = tmp_path / "m.csv"
+    assert main(["import", "jsbsim", "737_cruise_steady_turn", "--start", "10", "--end", "12", "--rate", "50",
+                 "--modulus", "--out", str(out)]) == 0
+    path = profiles.load(out)
+    assert path.S_d is None
+    assert path.t[0] == 0.0 and path.t[-1] == pytest.approx(2.0) and len(path.t) == 101
+    np.testing.assert_allclose(path.M_d, 1.151 * G, rtol=0.01)
+    assert "t,M" in out.read_text().splitlines()[4]
+
+
+def test_jsbsim_printing_is_silenced(tmp_path, capfd):
+    """The script's notify events print on JSBSim's C++ stdout: none of it reaches the command's."""
+    out = tmp_path / "quiet.csv"
+    assert main(["import", "jsbsim", "737_cruise_steady_turn", "--start", "5", "--end", "7", "--out", str(out)]) == 0
+    captured = capfd.readouterr()
+    assert captured.out.splitlines() == [captured.out.splitlines()[0]] and str(out) in captured.out
+    assert "JSBSim" not in captured.out and captured.err == ""
+
+
+def test_own_script_with_initial_conditions_beside_it(tmp_path):
+    """A user's script file, its aircraft started in the air from an initialisation file next to it."""
+    (tmp_path / "air.xml").write_text(
+        '<?xml version="1.0"?>\n<initialize name="air">\n  <vt unit="KTS"> 96.0 </vt>\n'
+        '  <latitude unit="DEG"> 47.0 </latitude>\n  <longitude unit="DEG"> 122.0 </longitude>\n'
+        '  <psi unit="DEG"> 0.0 </psi>\n  <altitude unit="FT"> 4000.0 </altitude>\n'
+        '  <gamma unit="DEG"> 0.0 </gamma>\n  <running> -1 </running>\n</initialize>\n')
+    (tmp_path / "level.xml").write_text(
+        '<?xml version="1.0"?>\n<runscript name="level">\n  <use aircraft="c172x" initialize="air"/>\n'
+        '  <run start="0.0" end="8" dt="0.00833333">\n    <event name="trim">\n'
+        '      <condition> simulation/sim-time-sec gt 0.5 </condition>\n'
+        '      <set name="simulation/do_simple_trim" value="1"/>\n      <notify/>\n    </event>\n'
+        '  </run>\n</runscript>\n')
+    out = tmp_path / "level.csv"
+    assert main(["import", "jsbsim", str(tmp_path / "level.xml"), "--start", "4", "--out", str(out)]) == 0
+    S = profiles.load(out).S_d
+    np.testing.assert_allclose(S[:, 3:].mean(axis=0), [0.0, 0.0, G], atol=0.3)  # flying level, in the air
+
+
+def test_unknown_script_lists_shipped_ones(tmp_path, capsys):
+    out = tmp_path / "x.csv"
+    assert main(["import", "jsbsim", "no_such_script", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "no_such_script" in err
+    assert sum(name in err for name in jsbsim.shipped_scripts()) >= 3
+    assert "--list" in err and not out.exists()
+
+
+def test_list_shipped_scripts(capsys):
+    assert main(["import", "jsbsim", "--list"]) == 0
+    names = capsys.readouterr().out.split()
+    assert "b737_runway_new" in names and "737_cruise_steady_turn" in names
+
+
+def test_crash_is_refused_naming_time_and_value(tmp_path, capsys):
+    """f16_test spins into hundreds of g after about 2 minutes."""
+    out = tmp_path / "crash.csv"
+    assert main(["import", "jsbsim", "f16_test", "--start", "110", "--end", "135", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and " g at t = 1" in err and "20 g" in err
+    assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_existing_output_is_kept(tmp_path, capsys):
+    out = tmp_path / "x.csv"
+    out.write_text("mine\n")
+    assert main(["import", "jsbsim", "737_cruise_steady_turn", "--end", "3", "--out", str(out)]) == 2
+    assert "already exists" in capsys.readouterr().err and out.read_text() == "mine\n"
+    assert main(["import", "jsbsim", "737_cruise_steady_turn", "--start", "10", "--end", "11", "--out", str(out),
+                 "--overwrite"]) == 0
+    assert profiles.load(out).duration == pytest.approx(1.0)
+
+
+def test_without_jsbsim_says_how_to_get_it(tmp_path, capsys, monkeypatch):
+    monkeypatch.setitem(sys.modules, "jsbsim", None)  # import jsbsim raises ImportError
+    assert main(["import", "jsbsim", "b737_runway_new", "--out", str(tmp_path / "x.csv")]) == 2
+    err = capsys.readouterr().err
+    assert "pip install 'desdemona[jsbsim]'" in err and not (tmp_path / "x.csv").exists()
+
+
+def test_script_output_files_are_not_written(tmp_path, monkeypatch):
+    """737_cruise asks for an <output> CSV file: JSBSim would write it into its own folder (or here)."""
+    import jsbsim as package
+
+    root = Path(package.get_default_root_dir())
+    before = set(root.iterdir())
+    monkeypatch.chdir(tmp_path)
+    assert main(["import", "jsbsim", "737_cruise", "--start", "1", "--end", "2", "--out", "c.csv"]) == 0
+    assert set(root.iterdir()) == before and [p.name for p in tmp_path.iterdir()] == ["c.csv"]

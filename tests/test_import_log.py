@@ -1,0 +1,226 @@
+"""`desdemona import log`: a logged motion in any declared units and axes gives the same path; the
+convention check names the likely mistake; bad input is one message, exit 2, nothing written."""
+
+import math
+
+import numpy as np
+import pytest
+
+from desdemona import profiles
+from desdemona.cli import main
+from desdemona.profiles import convert
+from desdemona.profiles.log import LogFormat, from_log, head_force
+from desdemona.profiles.path import G, ProfileError
+
+RATE = 200.0  # [Hz] of the synthetic logs
+
+
+def bump(t, t0, t1):
+    """A smooth 0 -> 1 -> 0 bump over [t0, t1] (raised cosine)."""
+    x = np.clip((t - t0) / (t1 - t0), 0.0, 1.0)
+    return 0.5 * (1.0 - np.cos(2.0 * np.pi * x))
+
+
+def motion(still=2.0):
+    """A vehicle still for ``still`` s, then a right turn and a brake: t (N,), omega_cabin and f_cabin
+    (N, 3) in the cabin frame (x right, y forward, z up)."""
+    t = np.arange(0.0, still + 6.0, 1.0 / RATE)
+    turn, brake = bump(t, still, still + 3.0), bump(t, still + 3.0, still + 5.5)
+    omega = np.column_stack([0.02 * turn, 0.05 * brake, -0.3 * turn])  # wz < 0: turning right
+    f = np.column_stack([0.3 * G * turn, -0.6 * G * brake, G + 0.05 * G * turn])
+    return t, omega, f
+
+
+def write_log(file, t, omega, f, axes, accel_unit, rate_unit, time_unit="s", names=("t", "ax", "ay", "az", "p", "q", "r")):
+    """The motion as a log would hold it: in the log's axes (v_log = R^T v_cabin) and units."""
+    R = convert.axes_rotation(axes)
+    scale_f = {"g": 1.0 / G, "m/s2": 1.0}[accel_unit]
+    scale_w = {"deg/s": 180.0 / math.pi, "rad/s": 1.0}[rate_unit]
+    scale_t = {"s": 1.0, "ms": 1000.0}[time_unit]
+    data = np.column_stack([t * scale_t, f @ R * scale_f, omega @ R * scale_w])
+    with open(file, "w") as out:
+        out.write("# a synthetic log\n" + ",".join(names) + "\n")
+        for row in data:
+            out.write(",".join(repr(float(x)) for x in row) + "\n")
+    return file
+
+
+CONVENTIONS = [  # axes of the log's x, y, z; accel unit; rate unit; time unit
+    (("forward", "right", "down"), "g", "deg/s", "s"),
+    (("right", "forward", "up"), "m/s2", "rad/s", "s"),
+    (("up", "left", "back"), "g", "rad/s", "ms"),
+    (("left", "back", "up"), "m/s2", "deg/s", "s"),
+]
+
+
+def test_every_convention_gives_the_same_path(tmp_path):
+    t, omega, f = motion()
+    paths = []
+    for k, (axes, accel, rates, time_unit) in enumerate(CONVENTIONS):
+        names = ("time", "a1", "a2", "a3", "w1", "w2", "w3") if k % 2 else ("t", "ax", "ay", "az", "p", "q", "r")
+        log = write_log(tmp_path / f"log{k}.csv", t, omega, f, axes, accel, rates, time_unit, names)
+        out = tmp_path / f"path{k}.csv"
+        argv = ["import", "log", str(log), "--axes", ",".join(axes), "--accel-unit", accel, "--rate-unit", rates,
+                "--time-unit", time_unit, "--out", str(out)]
+        if k % 2:
+            argv += ["--time", "time", "--accel", "a1,a2,a3", "--rates", "w1,w2,w3"]
+        assert main(argv) == 0
+        paths.append(profiles.load(out))
+    for path in paths[1:]:
+        np.testing.assert_allclose(path.t, paths[0].t, atol=1e-9)
+        np.testing.assert_allclose(path.S_d, paths[0].S_d, rtol=1e-9, atol=1e-9)
+    # the log's own rate is above 100 Hz: resampled to 100 Hz through the filter, close to the truth
+    np.testing.assert_allclose(np.diff(paths[0].t), 0.01, atol=1e-12)
+    truth = np.column_stack([omega, f])[::2]
+    np.testing.assert_allclose(paths[0].S_d, truth[: len(paths[0].t)], atol=1e-3 * G)
+    text = (tmp_path / "path2.csv").read_text()
+    assert "# source: log log2.csv" in text and "up,left,back" in text and "convention check passed" in text
+
+
+def test_crop_and_modulus(tmp_path):
+    t, omega, f = motion()
+    log = write_log(tmp_path / "log.csv", t, omega, f, ("forward", "right", "down"), "m/s2", "rad/s")
+    out = tmp_path / "m.csv"
+    assert main(["import", "log", str(log), "--accel-unit", "m/s2", "--rate-unit", "rad/s", "--start", "2",
+                 "--end", "5", "--rate", "50", "--modulus", "--out", str(out)]) == 0
+    path = profiles.load(out)
+    assert path.S_d is None and path.t[0] == 0.0 and path.t[-1] == pytest.approx(3.0) and len(path.t) == 151
+    k = np.searchsorted(t, 2.0 + path.t)
+    np.testing.assert_allclose(path.M_d, np.linalg.norm(f[k], axis=1), atol=0.01)
+
+
+def test_lever_arm_adds_centripetal_and_tangential_force():
+    """A constant yaw rate: the head 1 m to the right of the sensor feels omega^2 r towards the centre;
+    a yaw rate growing at alpha adds alpha x r."""
+    t = np.arange(0.0, 4.0, 1.0 / RATE)
+    w, alpha = 0.5, 0.2
+    omega = np.column_stack([0 * t, 0 * t, w + alpha * t])
+    f = np.tile([0.0, 0.0, G], (len(t), 1))
+    r = np.array([1.0, 0.0, 0.0])
+    f_head = head_force(omega, f, r, RATE)
+    inner = slice(200, 600)  # away from the filter's ends
+    np.testing.assert_allclose(f_head[inner, 0], -(w + alpha * t[inner]) ** 2, rtol=1e-9)
+    np.testing.assert_allclose(f_head[inner, 1], alpha, rtol=1e-6)  # alpha x r = alpha z x x = alpha y
+    np.testing.assert_allclose(f_head[inner, 2], G)
+
+
+def test_lever_arm_in_the_logs_axes(tmp_path):
+    t, omega, f = motion()
+    log = write_log(tmp_path / "log.csv", t, omega, f, ("forward", "right", "down"), "m/s2", "rad/s")
+    base = from_log(log, LogFormat())[0]
+    moved = from_log(log, LogFormat(lever_arm=(0.0, 1.0, 0.0)))[0]  # 1 m to the right
+    turning = np.argmax(np.abs(base.S_d[:, 2]))
+    w = base.S_d[turning, :3]
+    expected = np.cross(w, np.cross(w, [1.0, 0.0, 0.0]))[0]
+    assert moved.S_d[turning, 3] - base.S_d[turning, 3] == pytest.approx(expected, rel=0.02)
+    np.testing.assert_allclose(moved.S_d[:150], base.S_d[:150], atol=1e-6)  # still: nothing changes
+
+
+@pytest.mark.parametrize("mistake, declared, words", [
+    ("g declared as m/s^2", dict(accel_unit="g", declared_unit="m/s2"), "in g but declared as m/s^2"),
+    ("m/s^2 declared as g", dict(accel_unit="m/s2", declared_unit="g"), "in m/s^2 but declared as g"),
+    ("z up declared down", dict(axes=("forward", "left", "up"), declared_axes="forward,right,down"),
+     "declared down"),
+    ("a swapped axis", dict(axes=("down", "right", "back"), declared_axes="forward,right,down"),
+     "which axis is vertical?"),
+])
+def test_convention_check_names_the_mistake(tmp_path, capsys, mistake, declared, words):
+    t, omega, f = motion()
+    axes = declared.get("axes", ("forward", "right", "down"))
+    unit = declared.get("accel_unit", "m/s2")
+    log = write_log(tmp_path / "log.csv", t, omega, f, axes, unit, "rad/s")
+    out = tmp_path / "x.csv"
+    assert main(["import", "log", str(log), "--axes", declared.get("declared_axes", ",".join(axes)),
+                 "--accel-unit", declared.get("declared_unit", unit), "--rate-unit", "rad/s", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and words in err, mistake
+    assert list(tmp_path.iterdir()) == [log]
+
+
+def test_kinematic_acceleration_is_not_specific_force(tmp_path, capsys):
+    t, omega, f = motion()
+    log = write_log(tmp_path / "log.csv", t, omega, f - [0.0, 0.0, G], ("right", "forward", "up"), "m/s2", "rad/s")
+    assert main(["import", "log", str(log), "--axes", "right,forward,up", "--accel-unit", "m/s2", "--rate-unit",
+                 "rad/s", "--out", str(tmp_path / "x.csv")]) == 2
+    assert "kinematic acceleration, not specific force?" in capsys.readouterr().err
+
+
+def test_left_handed_axes_are_refused(tmp_path, capsys):
+    t, omega, f = motion()
+    log = write_log(tmp_path / "log.csv", t, omega, f, ("forward", "right", "down"), "m/s2", "rad/s")
+    assert main(["import", "log", str(log), "--axes", "forward,right,up", "--accel-unit", "m/s2", "--rate-unit",
+                 "rad/s", "--out", str(tmp_path / "x.csv")]) == 2
+    err = capsys.readouterr().err
+    assert "left-handed" in err and err.count("\n") == 1
+    with pytest.raises(ProfileError, match="same line"):
+        convert.axes_rotation(("forward", "back", "up"))
+
+
+def test_every_right_handed_assignment_is_a_proper_rotation():
+    names = list(convert.DIRECTIONS)
+    proper = 0
+    for x in names:
+        for y in names:
+            for z in names:
+                try:
+                    R = convert.axes_rotation((x, y, z))
+                except ProfileError:
+                    continue
+                proper += 1
+                np.testing.assert_allclose(R.T @ R, np.eye(3))
+                assert np.linalg.det(R) == pytest.approx(1.0)
+    assert proper == 24  # the rotation group of the cube
+
+
+def test_still_force_against_the_attitude():
+    """Still (or in steady straight flight) the force points along the world's up: cabin +z when level,
+    tilted by the attitude otherwise; the check holds it against the attitude where that is known."""
+    for phi, theta in [(0.0, 0.0), (0.3, -0.2), (-1.0, 0.7)]:
+        up = convert.up_from_attitude(phi, theta)
+        # the world's up, (0, 0, -1) in NED, turned into body axes (x forward, y right, z down), then cabin
+        R_body_ned = (np.array([[1, 0, 0], [0, np.cos(phi), np.sin(phi)], [0, -np.sin(phi), np.cos(phi)]])
+                      @ np.array([[np.cos(theta), 0, -np.sin(theta)], [0, 1, 0], [np.sin(theta), 0, np.cos(theta)]]))
+        np.testing.assert_allclose(up, convert.R_CABIN_BODY @ R_body_ned @ [0.0, 0.0, -1.0], atol=1e-12)
+    pitched = convert.Still(0.0, 1.0, G * convert.up_from_attitude(0.0, np.radians(40.0)))  # a steep climb
+    convert.check_convention(pitched, up=convert.up_from_attitude(0.0, np.radians(40.0)))
+    with pytest.raises(ProfileError, match="which axis is vertical"):
+        convert.check_convention(pitched)
+
+
+def test_no_still_stretch_needs_no_check(tmp_path, capsys):
+    t = np.arange(0.0, 6.0, 1.0 / RATE)
+    omega = np.column_stack([0.2 * np.sin(t), 0.1 + 0 * t, -0.3 * np.cos(0.7 * t)])  # never still
+    f = np.column_stack([0 * t, 0.1 * G * np.sin(2 * t), G + 0 * t])
+    log = write_log(tmp_path / "log.csv", t, omega, f, ("forward", "right", "down"), "g", "deg/s")
+    out = tmp_path / "x.csv"
+    argv = ["import", "log", str(log), "--accel-unit", "g", "--rate-unit", "deg/s", "--out", str(out)]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert "convention check cannot run" in err and "--no-check" in err and not out.exists()
+    assert main(argv + ["--no-check"]) == 0
+    np.testing.assert_allclose(profiles.load(out).S_d[:, 3:].mean(axis=0), [0.0, 0.0, G], atol=0.1)
+    assert "convention check skipped" in out.read_text()
+
+
+def test_missing_columns_are_named_with_the_logs_own(tmp_path, capsys):
+    t, omega, f = motion()
+    log = write_log(tmp_path / "log.csv", t, omega, f, ("forward", "right", "down"), "g", "deg/s",
+                    names=("time", "ax", "ay", "az", "gx", "gy", "gz"))
+    out = tmp_path / "x.csv"
+    assert main(["import", "log", str(log), "--accel-unit", "g", "--rate-unit", "deg/s", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "'t', 'p', 'q', 'r'" in err and "time, ax, ay, az, gx, gy, gz" in err
+    assert not out.exists()
+
+
+def test_bad_rows_and_time(tmp_path, capsys):
+    log = tmp_path / "log.csv"
+    log.write_text("t,ax,ay,az,p,q,r\n0,0,0,-1,0,0,0\n0.1,0,x,-1,0,0,0\n")
+    assert main(["import", "log", str(log), "--accel-unit", "g", "--rate-unit", "deg/s", "--out",
+                 str(tmp_path / "x.csv")]) == 2
+    assert "line 3" in capsys.readouterr().err
+    log.write_text("t,ax,ay,az,p,q,r\n0,0,0,-1,0,0,0\n0.1,0,0,-1,0,0,0\n0.1,0,0,-1,0,0,0\n")
+    assert main(["import", "log", str(log), "--accel-unit", "g", "--rate-unit", "deg/s", "--out",
+                 str(tmp_path / "x.csv")]) == 2
+    assert "does not increase" in capsys.readouterr().err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["log.csv"]
