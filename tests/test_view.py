@@ -1,0 +1,227 @@
+"""The 3D replay page (desdemona.view): self-contained, full-precision joint data, and, in a real
+headless browser (Debian's chromium and chromedriver with selenium; skipped where they are missing), a
+page that loads without a console error, shows the pose of trajectory.csv at the cursor, draws the
+chain of eq. A.7 (the drawn cabin's pose equals kinematics.cabin_pose) and is not blank."""
+
+from __future__ import annotations
+
+import io
+import json
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from desdemona import kinematics, view
+from desdemona.params import JOINT_NAMES, default_params
+
+CHANNELS = ("wx", "wy", "wz", "fx", "fy", "fz")
+
+
+def _motion(t, seed):
+    """Smooth joint motion (K, 6) of seeded random sinusoids, with its exact rates and accelerations."""
+    rng = np.random.default_rng(seed)
+    amp = rng.uniform(0.2, 1.0, 6) * np.array([2.0, 3.0, 0.8, 1.2, 1.2, 1.2])
+    w = rng.uniform(0.3, 1.5, 6)
+    phase = rng.uniform(0, 2 * np.pi, 6)
+    arg = np.outer(t, w) + phase
+    return amp * np.sin(arg), amp * w * np.cos(arg), -amp * w**2 * np.sin(arg)
+
+
+def _table(t, seed, params):
+    q, qd, qdd = _motion(t, seed)
+    S = np.asarray(kinematics.S(q, qd, qdd, params.gravity), float).reshape(len(t), 6)
+    S_d = S + 0.3 * np.sin(t)[:, None]
+    limits = params.to_dict()["joints"]
+    tau = 0.3 * np.array([limits[j]["effort"] for j in JOINT_NAMES]) * np.sin(t)[:, None]
+    cols = {"t": t}
+    for label, values in (("q", q), ("qd", qd), ("qdd", qdd), ("tau", tau), ("power", tau * qd)):
+        cols.update({f"{label}_{j}": values[:, i] for i, j in enumerate(JOINT_NAMES)})
+    cols.update({c: S[:, i] for i, c in enumerate(CHANNELS)})
+    cols.update({f"{c}_d": S_d[:, i] for i, c in enumerate(CHANNELS)})
+    cols["M"], cols["M_d"] = np.linalg.norm(S[:, 3:], axis=1), np.linalg.norm(S_d[:, 3:], axis=1)
+    return cols
+
+
+def _write_csv(path: Path, cols: dict) -> None:
+    with open(path, "w") as fh:
+        fh.write("# units: SI\n" + ",".join(cols) + "\n")
+        np.savetxt(fh, np.column_stack(list(cols.values())), delimiter=",", fmt="%.10g")
+
+
+def make_result(folder: Path, duration: float = 4.0, rate: float = 50.0, classical: bool = True) -> Path:
+    """A result folder of the whole machine moving (every joint free), as `online` writes one."""
+    params = default_params()
+    folder.mkdir(parents=True)
+    t = np.arange(round(duration * rate) + 1) / rate
+    _write_csv(folder / "trajectory.csv", _table(t, 7, params))
+    if classical:
+        _write_csv(folder / view.CLASSICAL_FILE, _table(t, 8, params))
+    summary = {"format": "desdemona result", "path": {"name": "wobble"},
+               "configuration": {"name": "full", "free_joints": list(JOINT_NAMES)},
+               "quality": {"vestibular_model": "thesis"}, "parameters": params.to_dict()}
+    (folder / "summary.json").write_text(json.dumps(summary))
+    return folder
+
+
+@pytest.fixture(scope="module")
+def result(tmp_path_factory):
+    return make_result(tmp_path_factory.mktemp("view") / "run")
+
+
+def _data(text: str) -> dict:
+    found = re.search(r'<script type="application/json" id="desdemona-data">(.*?)</script>', text, re.S)
+    return json.loads(found.group(1))
+
+
+def test_page_is_self_contained_and_small(tmp_path):
+    """Everything inlined: no script, style, font or image from anywhere; a 60 s result at 50 Hz with
+    its classical loop stays well under 5 MB."""
+    folder = make_result(tmp_path / "long", duration=60.0, rate=50.0)
+    text = view.write(folder).read_text()
+    assert re.search(r"<script[^>]*\bsrc\s*=", text, re.I) is None
+    assert re.search(r"<link[^>]*rel=[\"']?stylesheet", text, re.I) is None
+    assert re.search(r"(src|href)\s*=\s*[\"']?\s*(https?:)?//", text, re.I) is None
+    assert re.search(r"url\(\s*[\"']?\s*(https?:)?//|@import|@font-face", text, re.I) is None
+    assert len(text.encode()) < 5e6, len(text.encode())
+    assert len(_data(text)["plots"]["t"]) == 3001  # the plots keep every sample
+
+
+def test_joint_data_keep_the_precision_of_the_trajectory(result):
+    data = _data(view.page_of_folder(result))
+    cols = view.read_table(result / "trajectory.csv")
+    assert data["motion"]["t"] == cols["t"].tolist()
+    for j in JOINT_NAMES:
+        assert data["motion"]["q"][j] == cols[f"q_{j}"].tolist()
+    assert data["classical"]["motion"]["q"]["yaw"] == view.read_table(result / view.CLASSICAL_FILE)["q_yaw"].tolist()
+
+
+def test_a_long_result_thins_the_animation_not_the_plots(result, monkeypatch):
+    monkeypatch.setattr(view, "MAX_FRAMES", 50)
+    data = _data(view.page_of_folder(result))
+    cols = view.read_table(result / "trajectory.csv")
+    t = data["motion"]["t"]
+    assert len(t) <= 51 and t[0] == cols["t"][0] and t[-1] == cols["t"][-1]
+    k = cols["t"].tolist().index(t[1])
+    assert data["motion"]["q"]["cabin"][1] == cols["q_cabin"][k]
+    assert len(data["plots"]["t"]) == len(cols["t"])
+
+
+def test_limit_use_is_one_at_each_limit():
+    limits = default_params().to_dict()["joints"]
+    track = limits["track"]
+    col = {"t": np.arange(3.0), "q_track": np.array([track["position"][1], 0.0, track["position"][0]]),
+           "qd_track": np.array([0.0, track["velocity"], 0.0]), "qdd_track": np.zeros(3),
+           "tau_track": np.array([0.0, 0.0, -track["effort"] / 2]), "power_track": np.zeros(3)}
+    use = view.limit_use(col, limits, ["track"])["track"]
+    assert np.allclose(use["position"], [1.0, 0.0, 1.0])
+    assert np.allclose(use["worst"], [1.0, 1.0, 1.0])
+    assert np.allclose(use["effort"], [0.0, 0.0, 0.5])
+
+
+def test_a_folder_that_is_no_result_is_refused(tmp_path):
+    with pytest.raises(view.ViewError, match="summary.json"):
+        view.page_of_folder(tmp_path)
+
+
+# ---- in a real browser ----
+
+@pytest.fixture(scope="module")
+def browser():
+    try:
+        driver = view.headless_browser()
+    except view.NoBrowser as exc:
+        pytest.skip(str(exc))
+    yield driver
+    driver.quit()
+
+
+@pytest.fixture(scope="module")
+def loaded(browser, result):
+    page = view.write(result)
+    browser.get(page.resolve().as_uri())
+    return browser
+
+
+def test_page_loads_without_console_error(loaded):
+    hook = loaded.execute_script("return window.desdemonaView && {ready: window.desdemonaView.ready, "
+                                 "webgl: window.desdemonaView.webgl}")
+    errors = [e for e in loaded.get_log("browser") if e["level"] == "SEVERE"]
+    assert errors == []
+    assert hook == {"ready": True, "webgl": True}
+
+
+def test_pose_at_the_cursor_is_the_trajectory(loaded, result):
+    cols = view.read_table(result / "trajectory.csv")
+    classical = view.read_table(result / view.CLASSICAL_FILE)
+    for k in (0, 77, len(cols["t"]) - 1):
+        t = float(cols["t"][k])
+        pose = loaded.execute_script("return window.desdemonaView.seek(arguments[0])", t)
+        assert pose["t"] == pytest.approx(t, abs=1e-12)
+        q = np.array([cols[f"q_{j}"][k] for j in JOINT_NAMES])
+        assert np.allclose([pose["q"][j] for j in JOINT_NAMES], q, rtol=0, atol=1e-6)
+        # the drawn chain is eq. A.7: the cabin's world pose is kinematics' H_world_cabin
+        drawn = np.array(loaded.execute_script("return window.desdemonaView.cabinMatrix()")).reshape(4, 4)
+        assert np.allclose(drawn, kinematics.cabin_pose(q), atol=1e-9)
+        # the arrows at the head: the felt and desired specific force, turned from the cabin to the world
+        arrows = loaded.execute_script("return window.desdemonaView.arrows()")
+        R = kinematics.cabin_pose(q)[:3, :3]
+        for name, suffix in (("felt", ""), ("desired", "_d")):
+            f = R @ np.array([cols[f"{c}{suffix}"][k] for c in ("fx", "fy", "fz")])
+            assert np.allclose(arrows[name], f / np.linalg.norm(f), atol=1e-5)
+        # the classical loop's faded machine follows its own trajectory
+        ghost = loaded.execute_script("return window.desdemonaView.pose('classical')")
+        assert np.allclose([ghost["q"][j] for j in JOINT_NAMES], [classical[f"q_{j}"][k] for j in JOINT_NAMES],
+                           rtol=0, atol=1e-6)
+        drawn = np.array(loaded.execute_script("return window.desdemonaView.cabinMatrix('classical')")).reshape(4, 4)
+        assert np.allclose(drawn, kinematics.cabin_pose([classical[f"q_{j}"][k] for j in JOINT_NAMES]), atol=1e-9)
+    # between samples, linear
+    t = 0.5 * (cols["t"][10] + cols["t"][11])
+    pose = loaded.execute_script("return window.desdemonaView.seek(arguments[0])", t)
+    assert pose["q"]["yaw"] == pytest.approx(0.5 * (cols["q_yaw"][10] + cols["q_yaw"][11]), abs=1e-9)
+
+
+def test_play_and_views(loaded):
+    loaded.execute_script("const v = window.desdemonaView; v.seek(v.start); v.setSpeed(4); v.play();")
+    from selenium.webdriver.support.ui import WebDriverWait
+
+    WebDriverWait(loaded, 10).until(lambda d: d.execute_script("return window.desdemonaView.pose().t") > 0.2)
+    t = loaded.execute_script("window.desdemonaView.pause(); return window.desdemonaView.pose().t")
+    assert t == loaded.execute_script("return window.desdemonaView.pose().t")  # paused
+    assert loaded.execute_script("return window.desdemonaView.setSpeed(10)") == 4  # 0.1x to 4x
+    for v in ("cabin", "follow", "orbit"):
+        loaded.execute_script("window.desdemonaView.setView(arguments[0])", v)
+    assert [e for e in loaded.get_log("browser") if e["level"] == "SEVERE"] == []
+
+
+def test_screenshot_is_not_blank(loaded):
+    import matplotlib.image
+
+    loaded.execute_script("window.desdemonaView.seek(1.0)")
+    pixels = matplotlib.image.imread(io.BytesIO(loaded.get_screenshot_as_png()), format="png")[..., :3]
+    stage = pixels[60:-60, 40:pixels.shape[1] // 2]  # the 3D view, left of the plots
+    assert pixels.std() > 0.05
+    assert stage.std() > 0.02
+    assert len(np.unique((stage * 255).astype(np.uint8).reshape(-1, 3), axis=0)) > 50
+
+
+def test_online_folder_keeps_the_classical_loop_and_its_view(tmp_path, capsys):
+    """`online` writes classical.csv (the baseline the summary judges) and view.html with both machines;
+    `view --out` writes the page elsewhere."""
+    from desdemona.cli import main
+
+    out = tmp_path / "live"
+    assert main(["online", "dfs-catapult", "--config", "dfs-yaw", "--horizon", "1", "--step", "0.1", "--replan",
+                 "0.4", "--delay", "--out", str(out)]) in (0, 4)
+    summary = json.loads((out / "summary.json").read_text())
+    classical = view.read_table(out / view.CLASSICAL_FILE)
+    own = view.read_table(out / "trajectory.csv")
+    assert np.array_equal(classical["t"], own["t"])
+    rms = np.sqrt(np.mean((classical["M"] - classical["M_d"]) ** 2))
+    assert rms == pytest.approx(summary["metrics"]["rms_modulus_classical_loop"], rel=0.02)
+    data = _data((out / view.VIEW_FILE).read_text())
+    assert data["classical"]["motion"]["q"]["yaw"] == classical["q_yaw"].tolist()
+    assert main(["view", str(out), "--out", str(tmp_path / "page.html")]) == 0
+    assert (tmp_path / "page.html").read_text() == (out / view.VIEW_FILE).read_text()
+    assert main(["view", str(tmp_path / "nothing")]) == 2
