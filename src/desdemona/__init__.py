@@ -18,27 +18,41 @@ The main jobs from one import::
     result.to_dataframe()                               # with pandas installed
 """
 
-from desdemona import metrics
 from desdemona._version import __version__
-from desdemona.configs import CONFIGURATIONS, Configuration, Limits, get_configuration
-from desdemona.model import Model
-from desdemona.offline import OptimizeOptions, Result, optimize
-from desdemona.online import MPCOptions, OnlineOptions, OnlineResult
-from desdemona.online import run as run_online
-from desdemona.params import (
-    Body,
-    JointLimits,
-    MachineParams,
-    ParameterError,
-    default_params,
-    load_params,
-    thesis_toy_params,
-)
-from desdemona.plan import Plan
-from desdemona.problem import ProblemOptions
-from desdemona.profiles import PROFILES, DesiredPath, ProfileError
-from desdemona.profiles import load as load_path
-from desdemona.simulate import LimitViolation
+
+# The names of the top level, each loaded from its module on first use (PEP 562): `import desdemona`
+# (and the command line, which must answer a Ctrl-C while CasADi and NumPy load) stays fast.
+_EXPORTS = {
+    "CONFIGURATIONS": "configs", "Configuration": "configs", "Limits": "configs", "get_configuration": "configs",
+    "Model": "model",
+    "OptimizeOptions": "offline", "Result": "offline", "optimize": "offline",
+    "MPCOptions": "online", "OnlineOptions": "online", "OnlineResult": "online", "run_online": ("online", "run"),
+    "Body": "params", "JointLimits": "params", "MachineParams": "params", "ParameterError": "params",
+    "default_params": "params", "load_params": "params", "thesis_toy_params": "params",
+    "Plan": "plan",
+    "ProblemOptions": "problem",
+    "PROFILES": "profiles", "DesiredPath": "profiles", "ProfileError": "profiles",
+    "load_path": ("profiles", "load"),
+    "LimitViolation": "simulate",
+}
+
+
+def __getattr__(name: str):
+    import importlib
+
+    if name == "metrics":
+        return importlib.import_module("desdemona.metrics")
+    if name not in _EXPORTS:
+        raise AttributeError(f"module 'desdemona' has no attribute {name!r}")
+    module, attribute = _EXPORTS[name] if isinstance(_EXPORTS[name], tuple) else (_EXPORTS[name], name)
+    value = getattr(importlib.import_module(f"desdemona.{module}"), attribute)
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted([*globals(), *_EXPORTS, "metrics"])
+
 
 __all__ = [
     "CONFIGURATIONS",

@@ -11,6 +11,7 @@ from __future__ import annotations
 import csv
 import dataclasses
 import multiprocessing
+import os
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -29,6 +30,7 @@ class Job:
 
     profile: str
     config: str
+    view: bool = True  # also write view.html, the 3D replay, into the job's folder
 
     @property
     def folder_name(self) -> str:
@@ -50,7 +52,7 @@ class JobResult:
     felt: dict | None = None  # metrics.Metrics.key_figures of the result
 
 
-FELT_COLUMNS = ("peak_false_rotation_deg_s", "felt_force_rms_max", "rms_modulus", "sign_changes_per_s_max")
+FELT_COLUMNS = ("peak_false_rotation_deg_s", "felt_force_rms_max", "rms_modulus", "reversals_per_s_max")
 
 
 def run_job(job: Job, params: MachineParams, options: OptimizeOptions, out_dir: str, weights=None,
@@ -71,7 +73,8 @@ def run_job(job: Job, params: MachineParams, options: OptimizeOptions, out_dir: 
             problem = dataclasses.replace(options.problem, weights=tuple(profiles.weights_for(spec, path)))
             options = dataclasses.replace(options, problem=problem)
         result = optimize(path, Model(params, job.config), options)
-        report.write(result, folder, command=f"desdemona batch ({job.profile} on {job.config})", overwrite=True)
+        report.write(result, folder, command=f"desdemona batch ({job.profile} on {job.config})", overwrite=True,
+                     view=job.view)
         status = "ok" if result.converged else "not converged"
         return JobResult(job.profile, job.config, status, result.check.rms, result.check.worst_use,
                          time.perf_counter() - start, str(folder), "" if result.converged else result.solution.status,
@@ -83,11 +86,52 @@ def run_job(job: Job, params: MachineParams, options: OptimizeOptions, out_dir: 
         return JobResult(job.profile, job.config, "error", None, None, time.perf_counter() - start, "", str(exc))
 
 
-def validate(jobs: list[Job], params: MachineParams, options: OptimizeOptions, out_dir: str | Path) -> None:
-    """Check every job before any runs: its configuration, its path (each CSV read and checked), that
-    the path suits the configuration, that the problem fits in memory, and that its folder is free or
-    an earlier result. Raises ValueError (:class:`~desdemona.profiles.ProfileError`,
-    :class:`~desdemona.sizing.TooLarge`) or :class:`~desdemona.report.ReportError` naming the job."""
+TABLE_COLUMNS = ("profile", "configuration", "status", "rms", "worst_use", *FELT_COLUMNS, "seconds", "folder",
+                 "message")
+
+
+def check_out(out_dir: str | Path, overwrite: bool = False) -> None:
+    """Raise :class:`~desdemona.report.ReportError` unless the batch may write into ``out_dir``: a
+    folder that does not exist yet or is empty, or with ``overwrite`` an earlier batch folder of ours
+    (holding only its ``batch.csv`` and result folders of desdemona), whose files it replaces."""
+    out = Path(out_dir)
+    if not out.exists() and not out.is_symlink():
+        return
+    if out.is_symlink() or not out.is_dir():
+        raise report.ReportError(f"{out}: is not a folder (a file or a link); --out names the batch's folder")
+    if not os.access(out, os.W_OK | os.X_OK):
+        raise report.ReportError(f"{out}: is not a writable folder")
+    items = sorted(out.iterdir())
+    if not items:
+        return
+    if not overwrite:
+        raise report.ReportError(f"{out}: already exists; choose another folder or add --overwrite")
+    foreign = [p.name for p in items if not (p.name == "batch.csv" and _is_table(p))
+               and not (p.is_dir() and not p.is_symlink() and report.is_result_folder(p))]
+    if foreign:
+        raise report.ReportError(f"{out}: --overwrite replaces only an earlier batch folder of desdemona, and this "
+                                 f"one holds other files too ({', '.join(foreign[:3])}); move them first")
+
+
+def _is_table(path: Path) -> bool:
+    """Whether ``path`` is a batch.csv of ours: its header names our first and last columns (the felt
+    ones between have changed between versions)."""
+    try:
+        with open(path, newline="") as fh:
+            header = next(csv.reader(fh), [])
+        return header[:5] == list(TABLE_COLUMNS[:5]) and header[-3:] == list(TABLE_COLUMNS[-3:])
+    except (OSError, UnicodeDecodeError):
+        return False
+
+
+def validate(jobs: list[Job], params: MachineParams, options: OptimizeOptions, out_dir: str | Path,
+             overwrite: bool = False) -> None:
+    """Check every job before any runs: the batch's folder (:func:`check_out`), each job's
+    configuration, its path (each CSV read and checked), that the path suits the configuration, that
+    the problem fits in memory, and that its folder is free or an earlier result. Raises ValueError
+    (:class:`~desdemona.profiles.ProfileError`, :class:`~desdemona.sizing.TooLarge`) or
+    :class:`~desdemona.report.ReportError` naming the job."""
+    check_out(out_dir, overwrite)
     paths = {}
     for job in jobs:
         config = get_configuration(job.config)
@@ -107,50 +151,83 @@ def validate(jobs: list[Job], params: MachineParams, options: OptimizeOptions, o
 
 def run_batch(jobs: list[Job], params: MachineParams, options: OptimizeOptions, out_dir: str | Path,
               processes: int = 2, dask_address: str | None = None, weights=None, gain: float = 1.0,
-              progress=None) -> list[JobResult]:
+              progress=None, overwrite: bool = False) -> list[JobResult]:
     """Run every job, on ``processes`` local processes or on the Dask scheduler at ``dask_address``;
-    ``weights`` and ``gain`` as in :func:`run_job`.
+    ``weights`` and ``gain`` as in :func:`run_job`; ``overwrite``: replace an earlier batch in
+    ``out_dir`` (:func:`check_out`).
 
     Every job is validated (:func:`validate`) before anything runs. progress : optional
     ``progress(done, total, job_result)`` told as each job ends. Returns the jobs' lines in the order
     given and writes them to ``OUT/batch.csv``. Interrupted, it stops the local workers (or cancels the
-    cluster's jobs) and writes no table.
+    cluster's jobs); the jobs done by then keep their folders, and ``batch.csv`` lists them with the
+    others as "interrupted" (the :class:`~desdemona.guard.Interrupted` raised says so).
     """
-    validate(jobs, params, options, out_dir)
+    validate(jobs, params, options, out_dir, overwrite)
     out = Path(out_dir)
     created = not out.exists()
-    out.mkdir(parents=True, exist_ok=True)
     try:
-        results = _run(jobs, [(job, params, options, str(out), weights, gain) for job in jobs], processes,
-                       dask_address, progress)
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise report.ReportError(f"{out}: cannot create it: {exc.strerror or exc}") from None
+    results: list[JobResult | None] = [None] * len(jobs)
+    try:
+        map_jobs(run_job, [(job, params, options, str(out), weights, gain) for job in jobs], processes,
+                 dask_address, progress, results)
+    except guard.Interrupted as exc:
+        done = sum(r is not None for r in results)
+        if done == 0:
+            if created and not any(out.iterdir()):
+                out.rmdir()  # interrupted before any job finished: leave nothing behind
+            raise
+        _write_table(out, [r or JobResult(j.profile, j.config, "interrupted", None, None, 0.0, "")
+                           for j, r in zip(jobs, results)])
+        exc.message = (f"interrupted ({exc.name}): stopped; {done} of {len(jobs)} jobs were done, their folders "
+                       f"and {out / 'batch.csv'} are kept (the others are marked 'interrupted')")
+        raise
     except BaseException:
         if created and not any(out.iterdir()):
-            out.rmdir()  # interrupted before any job finished: leave nothing behind
+            out.rmdir()
         raise
-    with open(out / "batch.csv", "w", newline="") as fh:
+    _write_table(out, results)
+    return results
+
+
+def _write_table(out: Path, results: list[JobResult]) -> None:
+    """Write ``out/batch.csv`` whole or not at all (a temporary file renamed into place)."""
+    tmp = out / ".batch.csv.tmp"
+    with open(tmp, "w", newline="") as fh:
         writer = csv.writer(fh)
-        writer.writerow(["profile", "configuration", "status", "rms", "worst_use", *FELT_COLUMNS, "seconds",
-                         "folder", "message"])
+        writer.writerow(TABLE_COLUMNS)
         for r in results:
             felt = [None if r.felt is None else r.felt[c] for c in FELT_COLUMNS]
             writer.writerow([r.profile, r.config, r.status, r.rms, r.worst_use, *felt, f"{r.seconds:.3f}",
                              r.folder, r.message])
-    return results
+    with guard.deferred():
+        os.replace(tmp, out / "batch.csv")
 
 
-def _run(jobs, args, processes, dask_address, progress) -> list[JobResult]:
-    results: list[JobResult | None] = [None] * len(jobs)
+def map_jobs(function, args: list[tuple], processes: int = 2, dask_address: str | None = None, progress=None,
+             results: list | None = None) -> list:
+    """``function(*a)`` for every tuple ``a`` of ``args``, on ``processes`` local processes (spawned) or
+    on the Dask scheduler at ``dask_address``; the results in the order of ``args``.
+
+    ``function`` must be importable by the workers (a module's top-level function). progress : optional
+    ``progress(done, total, result)`` told as each call ends. results : a list of ``len(args)`` Nones
+    filled as calls end, for a caller that keeps what was done when the run is interrupted; leaving
+    early stops the local workers (or cancels the cluster's calls).
+    """
+    results = [None] * len(args) if results is None else results
 
     def done(index, result):
         results[index] = result
         if progress is not None:
-            progress(sum(r is not None for r in results), len(jobs), result)
+            progress(sum(r is not None for r in results), len(args), result)
 
     if dask_address is not None:
         from distributed import Client, as_completed
 
         with Client(dask_address) as client:
-            futures = [client.submit(run_job, *a, pure=False) for a in args]
+            futures = [client.submit(function, *a, pure=False) for a in args]
             index = {f.key: i for i, f in enumerate(futures)}
             try:
                 for future in as_completed(futures):
@@ -160,35 +237,41 @@ def _run(jobs, args, processes, dask_address, progress) -> list[JobResult]:
                 raise
     else:
         context = multiprocessing.get_context("spawn")
-        # leaving the block terminates the workers, also when the batch is interrupted
-        with context.Pool(max(1, min(processes, len(jobs))), initializer=guard.worker_signals,
+        # leaving the block terminates the workers, also when the run is interrupted
+        with context.Pool(max(1, min(processes, len(args))), initializer=guard.worker_signals,
                           initargs=(True,)) as pool:
-            for i, result in pool.imap_unordered(_indexed_job, list(enumerate(args))):
+            for i, result in pool.imap_unordered(_indexed_call, [(i, function, a) for i, a in enumerate(args)]):
                 done(i, result)
             guard.finish(pool)
     return results
 
 
-def _indexed_job(item):
-    index, args = item
-    return index, run_job(*args)
+def _indexed_call(item):
+    index, function, args = item
+    return index, function(*args)
+
+
+def _negligible(value: float | None, below: float = 1e-3) -> float | None:
+    """0 for a value that is round-off (a false rotation of 1e-20 deg/s on a path without rotation)."""
+    return 0.0 if value is not None and abs(value) < below else value
 
 
 def table(results: list[JobResult]) -> str:
     """The batch's printed table: per job its status, RMS, worst limit use, what is felt (peak false
     rotation [deg/s], worst felt force error RMS [m/s^2], most acceleration reversals per second) and
-    its time."""
+    its time; a second line gives the units (RMS: weighted as the run's --weights, mixed units)."""
     def cell(value, fmt):
         return "-" if value is None else format(value, fmt)
 
     lines = [f"{'profile':<18}{'configuration':<18}{'status':<20}{'RMS':>10}{'worst use':>11}{'false rot':>11}"
-             f"{'felt f':>9}{'flips/s':>9}{'time [s]':>10}"]
+             f"{'felt f':>9}{'rev/s':>9}{'time [s]':>10}",
+             f"{'':<56}{'weighted':>10}{'1 = limit':>11}{'[deg/s]':>11}{'[m/s^2]':>9}"]
     for r in results:
         felt = r.felt or {}
         lines.append(f"{r.profile:<18}{r.config:<18}{r.status:<20}{cell(r.rms, '.4g'):>10}"
-                     f"{cell(r.worst_use, '.4f'):>11}{cell(felt.get('peak_false_rotation_deg_s'), '.3g'):>11}"
+                     f"{cell(r.worst_use, '.4f'):>11}{cell(_negligible(felt.get('peak_false_rotation_deg_s')), '.3g'):>11}"
                      f"{cell(felt.get('felt_force_rms_max'), '.3g'):>9}"
-                     f"{cell(felt.get('sign_changes_per_s_max'), '.3g'):>9}{r.seconds:>10.2f}")
+                     f"{cell(felt.get('reversals_per_s_max'), '.3g'):>9}{r.seconds:>10.2f}")
         if r.message:
             lines.append(f"    {r.message}")
     return "\n".join(lines)

@@ -47,6 +47,10 @@ def load_results(folders, vestibular: perception.VestibularModel | None = None,
     for folder, label in zip(folders, labels):
         if not Path(folder).is_dir():
             raise report.ReportError(f"{folder}: not a folder")
+        if (Path(folder) / "batch.csv").is_file() and not (Path(folder) / "summary.json").exists():
+            jobs = sorted(str(p) for p in Path(folder).iterdir() if report.is_result_folder(p))
+            raise report.ReportError(f"{folder}: is a batch folder; compare its job folders instead: "
+                                     + (" ".join(jobs) if jobs else "(it holds none)"))
         try:
             traj, summary = report.load(folder)
             joints = summary["configuration"]["free_joints"]
@@ -105,9 +109,43 @@ def table(entries) -> str:
     return "\n".join([line(header), "  ".join("-" * w for w in widths)] + [line(r) for r in lines])
 
 
-def write(entries, out_dir: str | Path) -> list[Path]:
-    """Write compare.csv and the overlay figures into ``out_dir`` (created if missing); their paths."""
+def check_out(out_dir: str | Path, overwrite: bool = False) -> None:
+    """Raise :class:`~desdemona.report.ReportError` unless the comparison may be written into
+    ``out_dir``: a folder that does not exist yet or is empty, or with ``overwrite`` an earlier
+    comparison of ours (only ``compare.csv`` and ``compare_*.png`` inside), whose files it replaces."""
     out = Path(out_dir)
+    if not out.exists() and not out.is_symlink():
+        return
+    if out.is_symlink() or not out.is_dir():
+        raise report.ReportError(f"{out}: is not a folder (a file or a link); --out names a folder")
+    items = sorted(out.iterdir())
+    if not items:
+        return
+    if not overwrite:
+        raise report.ReportError(f"{out}: already exists; choose another folder or add --overwrite")
+    foreign = [p.name for p in items if not (p.is_file() and not p.is_symlink() and (
+        (p.name == "compare.csv" and _is_table(p)) or (p.name.startswith("compare_") and p.suffix == ".png")))]
+    if foreign:
+        raise report.ReportError(f"{out}: --overwrite replaces only an earlier comparison of desdemona "
+                                 f"(compare.csv and its figures), and this folder holds other files too "
+                                 f"({', '.join(foreign[:3])}); move them first")
+
+
+def _is_table(path: Path) -> bool:
+    """Whether ``path`` is a compare.csv of ours: its first cells are ``metric,unit``, then the path row."""
+    try:
+        with open(path, newline="") as fh:
+            rows = csv.reader(fh)
+            return next(rows, [])[:2] == ["metric", "unit"] and next(rows, [""])[0] == INFO_ROWS[0][0]
+    except (OSError, UnicodeDecodeError, csv.Error):
+        return False
+
+
+def write(entries, out_dir: str | Path, overwrite: bool = False) -> list[Path]:
+    """Write compare.csv and the overlay figures into ``out_dir`` (created if missing; an existing one
+    as :func:`check_out` allows); their paths."""
+    out = Path(out_dir)
+    check_out(out, overwrite)
     try:
         out.mkdir(exist_ok=True)
         with open(out / "compare.csv", "w", newline="") as fh:

@@ -198,9 +198,20 @@ def _weights(summary: dict):
 
 
 def draw_online(result, out_dir: str | Path) -> list[Path]:
-    """``online.png`` and ``compute_time.png`` of an :class:`desdemona.online.OnlineResult`."""
+    """``online.png``, ``online_felt.png`` and ``compute_time.png`` of an
+    :class:`desdemona.online.OnlineResult`."""
+    lim = result.model.limits
+    return draw_online_run(result.trajectory, result.baseline, lim.effort, lim.power, result.loop.compute_times,
+                           result.deadline, f"{result.path.name} on-line, {result.model.config.name}",
+                           result.quality.vestibular, out_dir)
+
+
+def draw_online_run(traj, classical, effort, power, compute_times, deadline: float, title: str, vestibular,
+                    out_dir: str | Path) -> list[Path]:
+    """The figures of :func:`draw_online` from the values a result folder keeps: the MPC's and the
+    classical loop's (or None) trajectories, the free joints' effort [N*m | N] and power [W] limits,
+    each cycle's compute time [s], the deadline [s] and the vestibular model's name."""
     out = Path(out_dir)
-    traj, classical, lim = result.trajectory, result.baseline, result.model.limits
     fig = _figure(figsize=(11, 9))
     axes = fig.subplots(3, 2, sharex=True)
     axes[0, 0].plot(traj.t, traj.M_d, "k-", label="M_d")
@@ -215,9 +226,9 @@ def draw_online(result, out_dir: str | Path) -> list[Path]:
     axes[1, 1].plot(traj.t, traj.S[:, 4], label="S_y")
     axes[0, 1].set_ylabel("S_x [m/s^2]")
     axes[1, 1].set_ylabel("S_y [m/s^2]")
-    axes[2, 0].plot(traj.t, traj.tau / lim.effort)
+    axes[2, 0].plot(traj.t, traj.tau / np.asarray(effort))
     axes[2, 0].set_ylabel("force / max")
-    axes[2, 1].plot(traj.t, traj.power / lim.power)
+    axes[2, 1].plot(traj.t, traj.power / np.asarray(power))
     axes[2, 1].set_ylabel("power / max")
     for ax in axes.ravel():
         ax.grid(alpha=0.3)
@@ -226,15 +237,14 @@ def draw_online(result, out_dir: str | Path) -> list[Path]:
     for ax in axes[2]:
         _limit_lines(ax)
         ax.set_xlabel("t [s]")
-    title = f"{result.path.name} on-line, {result.model.config.name}"
     paths = [_save(fig, out / "online.png", title)]
     runs = [traj] if classical is None else [traj, classical]
     paths.append(draw_felt(runs, ["MPC", "classical loop"][:len(runs)], out / "online_felt.png",
-                           _vestibular(result.quality.vestibular), title))
+                           _vestibular(vestibular), title))
     fig = _figure(figsize=(8, 4))
     ax = fig.subplots()
-    ax.hist(result.loop.compute_times * 1e3, bins=50)
-    ax.axvline(result.deadline * 1e3, color="r", ls=":", label=f"deadline {result.deadline * 1e3:g} ms")
+    ax.hist(np.asarray(compute_times) * 1e3, bins=50)
+    ax.axvline(deadline * 1e3, color="r", ls=":", label=f"deadline {deadline * 1e3:g} ms")
     ax.set_xlabel("compute time per cycle [ms]")
     ax.set_ylabel("cycles")
     ax.legend()

@@ -63,9 +63,21 @@ class _State:
         self.speak = False  # say why the process ends (the command's own process, not a worker)
         self.reporter = None  # reporter(iteration, cost, seconds) for long solves
         self.every = 10.0
+        self.on_hard_exit = []  # callables run before the process ends with os._exit (release a lock)
 
 
 _state = _State()
+
+
+@contextlib.contextmanager
+def before_hard_exit(action):
+    """Within this block, ``action()`` is called if a signal ends the process at once (``os._exit``
+    inside a solve nothing else stops), as ``finally`` clauses are not run then."""
+    _state.on_hard_exit.append(action)
+    try:
+        yield
+    finally:
+        _state.on_hard_exit.remove(action)
 
 
 def _handler(signum, frame):
@@ -80,6 +92,11 @@ def _handler(signum, frame):
         if _state.speak:
             print(f"desdemona: {Interrupted(signum).message}", file=sys.stderr, flush=True)
         sys.stdout.flush()
+        for action in _state.on_hard_exit:
+            try:
+                action()
+            except Exception:  # ending the process matters more than tidying up
+                pass
         os._exit(128 + signum)
     raise Interrupted(_state.signum)
 

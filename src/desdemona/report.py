@@ -4,9 +4,10 @@ A folder is written to a temporary sibling and renamed into place only when comp
 interrupted run never leaves a half-written result. Its ``summary.json`` carries ``"format":
 "desdemona result"``: only a folder with that mark and nothing but result files in it is ever replaced
 (:func:`check_replaceable`), never a file, the working folder, a folder holding the run's input, or a
-folder of the user's. :func:`write` takes an off-line result, :func:`write_online` an on-line one (both
-values, never live solver objects); :func:`load` reads a folder back. The figures are drawn by
-:mod:`desdemona.figures`.
+folder of the user's; the final rename removes nothing the tool did not write, and a command holds
+its output folder for its whole run (:func:`claim`), so that two runs never write the same one.
+:func:`write` takes an off-line result, :func:`write_online` an on-line one (both values, never live
+solver objects); :func:`load` reads a folder back. The figures are drawn by :mod:`desdemona.figures`.
 
 ``trajectory.csv``: a ``#`` line with the units, then the column names as the first non-comment line
 (so pandas, ``csv.DictReader`` and MATLAB's ``readtable`` name the columns), then the rows.
@@ -14,6 +15,8 @@ values, never live solver objects); :func:`load` reads a folder back. The figure
 
 from __future__ import annotations
 
+import contextlib
+import csv
 import json
 import os
 import platform
@@ -34,7 +37,7 @@ CHANNELS = ("wx", "wy", "wz", "fx", "fy", "fz")
 
 RESULT_FORMAT = "desdemona result"  # the mark in summary.json that makes a folder ours to replace
 # Everything a result folder of ours may hold: replacing one never deletes anything else.
-RESULT_FILES = {"trajectory.csv", "summary.json", "trajectory.mat", "cycles.csv"}
+RESULT_FILES = {"trajectory.csv", "summary.json", "trajectory.mat", "cycles.csv", "classical.csv", "view.html"}
 UNITS = "units: SI (s, rad, m, rad/s, m/s, rad/s^2, m/s^2, N*m, N, W)"
 
 
@@ -48,27 +51,109 @@ def check_replaceable(out_dir: str | Path, protect=()) -> None:
     not the working folder or one of its parents, and holds none of the paths in ``protect`` (the
     run's own inputs)."""
     out = Path(out_dir)
-    refuse = f"{out}: --overwrite replaces only a desdemona result folder, and this is "
+    refuse = f"{out}: --overwrite replaces only a desdemona result folder, and this "
     if not out.exists():
         return
     if out.is_symlink() or not out.is_dir():
-        raise ReportError(refuse + "not a folder (a file or a link)")
+        raise ReportError(refuse + "is not a folder (a file or a link)")
     real = out.resolve()
     cwd = Path.cwd().resolve()
     if real == cwd or real in cwd.parents:
-        raise ReportError(refuse + "the current folder or one of its parents")
+        raise ReportError(refuse + "is the current folder or one of its parents")
     for path in protect:
         if path is not None and real in Path(path).resolve().parents:
-            raise ReportError(refuse + f"the folder of the input {path}")
-    try:
-        mark = json.loads((out / "summary.json").read_text()).get("format")
-    except (OSError, ValueError, AttributeError):
-        mark = None
-    if mark != RESULT_FORMAT:
-        raise ReportError(refuse + "not one (no summary.json written by desdemona)")
-    others = sorted(p.name for p in out.iterdir() if p.name not in RESULT_FILES and p.suffix != ".png")
+            raise ReportError(refuse + f"is the folder of the input {path}")
+    if not is_result_folder(out):
+        raise ReportError(refuse + "is not one (no summary.json written by desdemona)")
+    others = _foreign(out)
     if others:
-        raise ReportError(refuse + f"holds other files too ({', '.join(others[:3])}); move them first")
+        raise ReportError(refuse + f"one holds other files too ({', '.join(others[:3])}); move them first")
+
+
+def is_result_folder(folder: str | Path) -> bool:
+    """Whether ``folder`` carries the mark of a result folder of ours (its summary.json's format)."""
+    try:
+        return json.loads((Path(folder) / "summary.json").read_text()).get("format") == RESULT_FORMAT
+    except (OSError, ValueError, AttributeError):
+        return False
+
+
+def _foreign(folder: Path) -> list[str]:
+    """The names in a result folder that a result of ours never holds, sorted."""
+    return sorted(p.name for p in folder.iterdir()
+                  if (p.name not in RESULT_FILES and p.suffix != ".png") or p.is_dir() or p.is_symlink())
+
+
+LOCK_SUFFIX = ".desdemona-lock"
+
+
+def lock_path(out_dir: str | Path) -> Path:
+    """The lock of an output folder: the hidden sibling ``.<name>.desdemona-lock``."""
+    out = Path(os.path.abspath(out_dir))  # "." and ".." by their names
+    return out.parent / f".{out.name}{LOCK_SUFFIX}"
+
+
+@contextlib.contextmanager
+def claim(out_dir: str | Path, command: str | None = None):
+    """Hold the output folder ``out_dir`` for one run, from before its first check until it ends.
+
+    Two runs writing the same folder at once would mix or lose results: the lock file
+    (:func:`lock_path`) is created atomically (``O_CREAT | O_EXCL``) and holds the run's process id
+    and command; a second run finds it and is refused with :class:`ReportError` naming them. A lock
+    left by a run that no longer exists (killed with SIGKILL, a power cut) is taken over. The lock
+    is removed when the block ends, if it is still this run's."""
+    lock = lock_path(out_dir)
+    if lock.name == f".{LOCK_SUFFIX}":  # the file system's root: never a folder a run may write
+        raise ReportError(f"{out_dir}: is the root folder; choose a folder of its own for the result")
+    text = f"{os.getpid()}\n{command or command_line()}\n"
+    for attempt in range(2):
+        try:
+            fd = os.open(lock, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o644)
+            break
+        except FileExistsError:
+            pid, holder = _lock_holder(lock)
+            if attempt == 0 and pid is not None and not _alive(pid):
+                with contextlib.suppress(FileNotFoundError):
+                    os.unlink(lock)  # stale: its run has ended without removing it
+                continue
+            who = f"process {pid}" if pid is not None else "another run"
+            raise ReportError(f"{out_dir}: another desdemona run is writing it ({who}: {holder or '?'}); "
+                              f"wait until it ends or choose another folder (its lock is {lock})") from None
+        except OSError as exc:
+            raise ReportError(f"{out_dir}: cannot write in {lock.parent}: {exc.strerror or exc}") from None
+    else:  # pragma: no cover - the stale lock was taken over by a third run between the two attempts
+        raise ReportError(f"{out_dir}: another desdemona run is writing it; choose another folder")
+    with os.fdopen(fd, "w") as fh:
+        fh.write(text)
+
+    def release() -> None:
+        with contextlib.suppress(OSError):
+            if lock.read_text() == text:
+                os.unlink(lock)
+
+    try:
+        with guard.before_hard_exit(release):
+            yield lock
+    finally:
+        release()
+
+
+def _lock_holder(lock: Path) -> tuple[int | None, str]:
+    try:
+        pid, _, command = lock.read_text().partition("\n")
+        return int(pid), command.strip()
+    except (OSError, ValueError):
+        return None, ""
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:  # it exists, but belongs to someone else
+        return True
+    return True
 
 
 def versions() -> dict[str, str]:
@@ -116,11 +201,11 @@ def run_description(path, config) -> dict:
 
 
 def write(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False,
-          unreachable: dict | None = None, protect=()) -> Path:
+          unreachable: dict | None = None, protect=(), view: bool = True) -> Path:
     """Write the result folder of an off-line :class:`~desdemona.offline.Result` atomically.
 
     unreachable : :func:`desdemona.sizing.unreachable` of the result's path (computed when not given).
-    protect : see :func:`write_folder`.
+    protect, view : see :func:`write_folder`.
     """
     if unreachable is None:
         from desdemona import sizing
@@ -153,16 +238,17 @@ def write(result, out_dir: str | Path, command: str | None = None, overwrite: bo
         "versions": versions(),
     }
     return write_folder(result.trajectory, summary, result.model.config, out_dir, overwrite,
-                        protect=protect)
+                        protect=protect, view=view)
 
 
 def write_folder(traj: Trajectory, summary: dict, config, out_dir: str | Path, overwrite: bool = False,
-                 extra=None, protect=()) -> Path:
+                 extra=None, protect=(), view: bool = True) -> Path:
     """Write trajectory.csv, summary.json, trajectory.mat and the figures into ``out_dir`` atomically.
 
     overwrite : replace ``out_dir`` if it is a result folder of ours (:func:`check_replaceable`).
     extra : optional ``extra(folder)`` that writes more files into the folder before it is moved in.
     protect : paths (the run's inputs) that the replaced folder must not hold.
+    view : also write view.html, the 3D replay (:mod:`desdemona.view`), from the folder's files.
     """
     import scipy.io
 
@@ -192,38 +278,77 @@ def write_folder(traj: Trajectory, summary: dict, config, out_dir: str | Path, o
         figures.draw_result(traj, summary, tmp)
         if extra is not None:
             extra(tmp)
+        if view:
+            from desdemona import view as result_view
+
+            result_view.write(tmp)
         with guard.deferred():  # an interrupt between the two renames would lose both folders
-            if out.exists():
-                old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old.", dir=parent))
-                os.replace(out, old / out.name)
-                os.replace(tmp, out)
-                shutil.rmtree(old)
-            else:
-                os.replace(tmp, out)
+            _move_into_place(tmp, out, overwrite, protect)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
     return out
 
 
-def load(out_dir: str | Path) -> tuple[Trajectory, dict]:
-    """Read a result folder back: its trajectory and summary."""
-    out = Path(out_dir)
-    try:
-        summary = json.loads((out / "summary.json").read_text())
-        with open(out / "trajectory.csv") as fh:
-            lines = fh.read().splitlines()
-        rows = [line for line in lines if not line.startswith("#")]
-        if rows and rows[0].startswith("t,"):
-            names, rows = rows[0].split(","), rows[1:]
-        else:  # written by earlier versions: the column names in a comment
-            names = next(line.lstrip("# ") for line in lines if line.lstrip("# ").startswith("t,")).split(",")
-        table = np.loadtxt(rows, delimiter=",", ndmin=2)
-    except (OSError, ValueError, StopIteration) as exc:
-        raise ReportError(f"{out}: not a readable result folder: {exc}") from None
-    col = {n: table[:, i] for i, n in enumerate(names)}
-    joints = summary["configuration"]["free_joints"]
+def _move_into_place(tmp: Path, out: Path, overwrite: bool, protect) -> None:
+    """Rename the finished folder ``tmp`` to ``out``, removing nothing this tool did not write.
 
+    ``out`` was checked before the run; it is checked again here, as something may have appeared there
+    while the run worked (os.rename would replace an empty folder, and moving one aside would lose it).
+    An earlier result is moved aside, checked once more, and only its result files are deleted."""
+    if not out.exists() and not out.is_symlink():
+        os.rename(tmp, out)
+        return
+    if not overwrite or not is_result_folder(out):
+        raise ReportError(f"{out}: appeared while this run was writing its result (not made by desdemona); "
+                          f"left as it is and nothing written: choose another folder")
+    try:
+        check_replaceable(out, protect)
+    except ReportError as exc:
+        raise ReportError(f"{exc} (it changed while this run was writing; left as it is, nothing written)") from None
+    old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old.", dir=out.absolute().parent))
+    os.rename(out, old / out.name)
+    if not is_result_folder(old / out.name) or _foreign(old / out.name):  # changed in between: put it back
+        os.rename(old / out.name, out)
+        old.rmdir()
+        raise ReportError(f"{out}: changed while this run was writing its result; left as it is and nothing "
+                          f"written: choose another folder")
+    os.rename(tmp, out)
+    for item in (old / out.name).iterdir():
+        item.unlink()  # result files only (checked above); never a whole tree
+    (old / out.name).rmdir()
+    old.rmdir()
+
+
+# What reading a folder back and drawing its figures needs of its summary.json.
+SUMMARY_KEYS = (("configuration", "free_joints"), ("configuration", "name"), ("path", "name"),
+                ("parameters", "joints"))
+
+
+def _has(value, keys) -> bool:
+    for key in keys:
+        if not isinstance(value, dict) or key not in value:
+            return False
+        value = value[key]
+    return True
+
+
+def _read_table(file: Path) -> dict[str, np.ndarray]:
+    """The columns by name of a file written as trajectory.csv is (also by earlier versions, with the
+    names in a comment)."""
+    with open(file) as fh:
+        lines = fh.read().splitlines()
+    rows = [line for line in lines if not line.startswith("#")]
+    if rows and rows[0].startswith("t,"):
+        names, rows = rows[0].split(","), rows[1:]
+    else:  # written by earlier versions: the column names in a comment
+        names = next(line.lstrip("# ") for line in lines if line.lstrip("# ").startswith("t,")).split(",")
+    table = np.loadtxt(rows, delimiter=",", ndmin=2)
+    return {n: table[:, i] for i, n in enumerate(names)}
+
+
+def _trajectory(col: dict[str, np.ndarray], joints) -> Trajectory:
+    """The :class:`Trajectory` of the columns of :func:`_read_table` (free joints ``joints``)."""
     def block(prefix):
         return np.column_stack([col[f"{prefix}_{j}"] for j in joints])
 
@@ -231,10 +356,51 @@ def load(out_dir: str | Path) -> tuple[Trajectory, dict]:
         keys = [f"{c}{suffix}" for c in CHANNELS]
         return np.column_stack([col[k] for k in keys]) if keys[0] in col else None
 
-    traj = Trajectory(t=col["t"], q=block("q"), qd=block("qd"), qdd=block("qdd"), tau=block("tau"),
+    return Trajectory(t=col["t"], q=block("q"), qd=block("qd"), qdd=block("qdd"), tau=block("tau"),
                       power=block("power"), S=channels(""), S_d=channels("_d"), M=col["M"], M_d=col["M_d"],
                       S_perc=channels("_perc"), S_d_perc=channels("_d_perc"))
-    return traj, summary
+
+
+def load(out_dir: str | Path) -> tuple[Trajectory, dict]:
+    """Read a result folder back: its trajectory and summary."""
+    out = Path(out_dir)
+    try:
+        summary = json.loads((out / "summary.json").read_text())
+        col = _read_table(out / "trajectory.csv")
+    except (OSError, ValueError, StopIteration) as exc:
+        raise ReportError(f"{out}: not a readable result folder: {exc}") from None
+    missing = next((".".join(keys) for keys in SUMMARY_KEYS if not _has(summary, keys)), None)
+    if missing is not None:
+        raise ReportError(f"{out}: not a complete result folder: its summary.json has no {missing!r}")
+    joints = summary["configuration"]["free_joints"]
+    needed = ["t", "M", "M_d"] + [f"{k}_{j}" for k in ("q", "qd", "qdd", "tau", "power") for j in joints]
+    absent = [n for n in needed if n not in col]
+    if absent:
+        raise ReportError(f"{out}: not a complete result folder: its trajectory.csv has no column {absent[0]!r}")
+    return _trajectory(col, joints), summary
+
+
+def redraw_online(traj: Trajectory, summary: dict, out_dir: str | Path) -> list[Path]:
+    """Re-draw the figures of an on-line result folder (``online.png``, ``online_felt.png``,
+    ``compute_time.png``) from its files; nothing for an off-line one. The classical loop is drawn
+    where the folder keeps it (``classical.csv``)."""
+    if "cycles" not in summary:
+        return []
+    out = Path(out_dir)
+    joints = summary["configuration"]["free_joints"]
+    try:
+        classical = None
+        if (out / "classical.csv").exists():
+            classical = _trajectory(_read_table(out / "classical.csv"), joints)
+        with open(out / "cycles.csv", newline="") as fh:
+            times = np.array([float(row["compute_time_s"]) for row in csv.DictReader(fh)])
+    except (OSError, ValueError, StopIteration, KeyError) as exc:
+        raise ReportError(f"{out}: not a readable on-line result folder: {exc}") from None
+    limits = summary["parameters"]["joints"]
+    return figures.draw_online_run(
+        traj, classical, [limits[j]["effort"] for j in joints], [limits[j]["power"] for j in joints], times,
+        summary["cycles"]["deadline_s"], f"{summary['path']['name']} on-line, {summary['configuration']['name']}",
+        (summary.get("quality") or {}).get("vestibular_model"), out)
 
 
 def _plain(value):
@@ -309,11 +475,12 @@ def online_summary(result, command: str | None = None) -> dict:
 
 
 def write_online(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False,
-                 unreachable: dict | None = None, protect=()) -> Path:
+                 unreachable: dict | None = None, protect=(), view: bool = True) -> Path:
     """The result folder of an on-line :class:`~desdemona.online.OnlineResult`: the usual files plus
-    ``cycles.csv`` (per-cycle compute time, source of the command, fallback reason), ``online.png``
+    ``cycles.csv`` (per-cycle compute time, source of the command, fallback reason), ``classical.csv``
+    (the classical loop's run, columns as trajectory.csv's; none where there is no baseline), ``online.png``
     (like thesis figures 7.5/7.6) and ``compute_time.png`` (compute time per cycle against the deadline).
-    unreachable, protect : as in :func:`write`."""
+    unreachable, protect, view : as in :func:`write`."""
     if unreachable is None:
         from desdemona import sizing
 
@@ -326,7 +493,12 @@ def write_online(result, out_dir: str | Path, command: str | None = None, overwr
             fh.write("t,compute_time_s,source,reason\n")
             for t, c, s, r in zip(loop.cycle_times, loop.compute_times, loop.sources, loop.reasons):
                 fh.write(f"{t:.6g},{c:.6g},{s},\"{r}\"\n")
+        if result.baseline is not None:
+            names, table = trajectory_table(result.baseline, result.model.config)
+            with open(folder / "classical.csv", "w") as fh:
+                fh.write(f"# classical loop; {UNITS}\n{','.join(names)}\n")
+                np.savetxt(fh, table, delimiter=",", fmt="%.10g")
         figures.draw_online(result, folder)
 
     return write_folder(result.trajectory, summary, result.model.config, out_dir, overwrite, extra,
-                        protect=protect)
+                        protect=protect, view=view)

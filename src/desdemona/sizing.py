@@ -3,7 +3,7 @@
 :func:`estimate` counts the control intervals and NLP variables of an off-line problem and its memory,
 from figures measured per control interval; :func:`check_fits` refuses a problem that would not fit in
 the memory this machine has available, saying what to change, instead of a ``std::bad_alloc`` after
-minutes. :func:`unreachable` finds the parts of a desired path that no trajectory of the configuration
+minutes; :func:`estimate_online` and :func:`check_fits_online` do the same for an on-line run. :func:`unreachable` finds the parts of a desired path that no trajectory of the configuration
 can give, by construction: a modulus below g on ``dfs`` (with the cabin aligned the modulus is
 sqrt((R qdd)^2 + (R qd^2)^2 + g^2) >= g, thesis 7.2) and a specific force beyond what the machine can
 hold steadily (the centripetal force at the largest radius and the fastest yaw rate its motors can hold).
@@ -98,11 +98,56 @@ def check_fits(path: DesiredPath, config: Configuration, options: ProblemOptions
     fitting = max(1.0, (size.available - BASE_BYTES) / per_interval)
     h_u = path.duration / fitting
     seconds = fitting * options.h_u
+    shorter = f", or a path shorter than {seconds:.0f} s" if seconds >= 1.0 else ""
     raise TooLarge(
         f"{path.name} on {config.name}: {size.intervals:,} control intervals ({path.duration:g} s at --h-u "
-        f"{options.h_u:g} s), {size.variables:,} variables, about {size.memory / 1e9:.1f} GB of memory; "
-        f"{size.available / 1e9:.1f} GB are available. Use --h-u {_round_up(h_u)} or more, or a path "
-        f"shorter than {seconds:.0f} s" + (", or fewer --workers" if workers > 1 else ""))
+        f"{options.h_u:g} s), {size.variables:,} variables, {_memory(size)}. Use --h-u {_round_up(h_u)} or "
+        f"more{shorter}" + (", or fewer --workers" if workers > 1 else ""))
+
+
+def _memory(size: Size) -> str:
+    """How much memory a run needs against what is available, in words a reader takes in at once."""
+    available = f"{size.available / 1e9:.1f} GB are available"
+    if size.memory > 1000 * size.available:
+        return f"more than 1,000 times the memory of this machine ({available})"
+    return f"about {size.memory / 1e9:.1f} GB of memory; {available}"
+
+
+# The on-line controller's peak resident memory, measured on the reference machine with dfs-catapult
+# on dfs (4 free joints; ru_maxrss): 193 MB with 36 plan intervals and 600 closed-loop steps, 293 MB
+# with 100 and 600, 303 MB with 96 and 2,400: about 1.6 MB per interval of the plan (its problem and
+# solver) and 9 kB per closed-loop step (the run, its check on a 10x finer grid).
+ONLINE_BYTES_PER_INTERVAL = 1.6e6 / 4  # per free joint
+ONLINE_BYTES_PER_STEP = 9e3
+ONLINE_STEPS = (0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2)  # the --step values suggested
+
+
+def estimate_online(path: DesiredPath, config: Configuration, mpc) -> Size:
+    """The size of an on-line run of ``path`` on ``config`` with the :class:`~desdemona.online.MPCOptions`
+    ``mpc``: ``intervals`` of one plan, ``variables`` of one plan's problem, and the run's memory."""
+    intervals = len(mpc.grid())
+    steps = max(1, int(round(path.duration / mpc.step)))
+    n = config.n
+    memory = BASE_BYTES + SAFETY * (intervals * ONLINE_BYTES_PER_INTERVAL * n + steps * ONLINE_BYTES_PER_STEP)
+    return Size(intervals, intervals * 4 * n, memory, available_memory())
+
+
+def check_fits_online(path: DesiredPath, config: Configuration, mpc) -> Size:
+    """:func:`estimate_online`, raising :class:`TooLarge` when the run would not fit in memory, with the
+    smallest ``--step`` of :data:`ONLINE_STEPS` that would."""
+    import dataclasses
+
+    size = estimate_online(path, config, mpc)
+    if size.fits:
+        return size
+    fitting = next((s for s in ONLINE_STEPS if s > mpc.step and 2 * s <= mpc.horizon and estimate_online(
+        path, config, dataclasses.replace(mpc, step=s, replan=None, tail_step=mpc.tail_step and max(mpc.tail_step, s))
+    ).fits), None)
+    advice = f"Use --step {fitting:g} or more" if fitting is not None else "Use a larger --step or a shorter --horizon"
+    raise TooLarge(
+        f"{path.name} on-line on {config.name}: {size.intervals:,} intervals in each plan (--step {mpc.step:g} s "
+        f"over {mpc.length:g} s), {int(round(path.duration / mpc.step)):,} closed-loop steps, {_memory(size)}. "
+        f"{advice}")
 
 
 def _round_up(x: float) -> str:

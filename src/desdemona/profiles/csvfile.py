@@ -47,17 +47,24 @@ def read_csv(path: str | Path) -> DesiredPath:
         repeated = [c for c in columns if columns.count(c) > 1]
         detail = (f"unknown column {unknown[0]!r}" if unknown else f"column {repeated[0]!r} twice" if repeated
                   else f"missing column {missing[0]!r}" if missing else "a modulus M with the full path")
+        separator = next((c for c in ";\t|" if c in header), None)
+        if separator is not None:
+            detail += (f" (separator {separator!r}? the file must be comma-separated with '.' as the decimal "
+                       f"point, as a spreadsheet's 'CSV UTF-8' export writes)")
         raise ProfileError(f"{path}: line {header_line}: {detail}; the columns must be "
                            f"'{','.join(PATH_COLUMNS)}' or '{','.join(MODULUS_COLUMNS)}' (SI units, any order)")
     rows = []
     for number, line in lines[1:]:
         cells = next(csv.reader([line]))
         if len(cells) != len(columns):
-            raise ProfileError(f"{path}: line {number}: {len(cells)} values for {len(columns)} columns")
+            hint = (" (a decimal comma? the file must be comma-separated with '.' as the decimal point)"
+                    if len(cells) > len(columns) else "")
+            raise ProfileError(f"{path}: line {number}: {len(cells)} values for {len(columns)} columns{hint}")
         try:
             values = [float(c) for c in cells]
         except ValueError:
-            raise ProfileError(f"{path}: line {number}: not a number in {line.strip()!r}") from None
+            hint = "; the file must be comma-separated with '.' as the decimal point" if ";" in line else ""
+            raise ProfileError(f"{path}: line {number}: not a number in {line.strip()!r}{hint}") from None
         bad = [columns[k] for k, v in enumerate(values) if not math.isfinite(v)]
         if bad:
             raise ProfileError(f"{path}: line {number}: {bad[0]} is not a finite number (NaN or inf)")
@@ -108,18 +115,29 @@ def _header_weights(path, text: str) -> tuple[float, ...]:
         raise ProfileError(f"{path}: line {number}: {detail}") from None
 
 
-# A time column in milliseconds read as seconds: a path of hours sampled at most twice a second. No
-# vehicle recording meant for motion cueing has both (cues live in 0.1-10 Hz and a session lasts
-# minutes), and as seconds it would ask for hundreds of thousands of control intervals.
+# A time column in milliseconds read as seconds. Judged by the sampling step as well as the length: a
+# recording is sampled at 10-1000 Hz, so in milliseconds its median step is 1-100, which read as
+# seconds is 2 Hz or slower, useless for cueing (cues live in 0.1-10 Hz). A few rows that far apart
+# are a hand-written table of breakpoints (t = 0, 2, 5, 10 s), not a recording: the step alone decides
+# from MS_MIN_ROWS samples on; fewer are refused only when they span over an hour (a session lasts
+# minutes, and as seconds either would ask for tens of thousands of control intervals).
 MS_DURATION = 3600.0  # [s]
 MS_MEDIAN_STEP = 0.5  # [s]
+MS_MIN_ROWS = 20
 
 
 def _check_time_unit(path: Path, t: np.ndarray) -> None:
+    """Refuse a time column that spans more than 1000 x MS_DURATION s, or looks like milliseconds: a
+    median step of MS_MEDIAN_STEP s or more over at least MS_MIN_ROWS samples (a recording sampled at
+    2 Hz or slower), or over more than MS_DURATION s."""
     duration, step = float(t[-1] - t[0]), float(np.median(np.diff(t)))
-    if duration > MS_DURATION and step >= MS_MEDIAN_STEP:
-        raise ProfileError(f"{path}: column 't' looks like milliseconds: {duration:g} s ({duration / 3600:.1f} h) "
-                           f"sampled every {step:g} s; the time column must be in seconds (divide it by 1000)")
+    if duration > 1000 * MS_DURATION:  # even read as milliseconds, longer than any session
+        raise ProfileError(f"{path}: column 't' spans {duration:.3g} s ({duration / 86400:.3g} days), far longer "
+                           f"than a session (minutes): the time column must be in seconds")
+    if step >= MS_MEDIAN_STEP and (len(t) >= MS_MIN_ROWS or duration > MS_DURATION):
+        raise ProfileError(f"{path}: column 't' looks like milliseconds: {len(t)} samples every {step:g} s "
+                           f"(median), {duration:g} s in all; a recording is sampled faster than "
+                           f"{1 / MS_MEDIAN_STEP:g} Hz and the time column must be in seconds (divide it by 1000)")
 
 
 def _check_magnitude(path, lines, values, label, limit, unit):
@@ -130,10 +148,13 @@ def _check_magnitude(path, lines, values, label, limit, unit):
                            f"{limit:.4g} {unit}: wrong units? (SI: rad/s and m/s^2 expected)")
 
 
-def write_csv(path_or_file, path: DesiredPath) -> None:
-    """Write a desired path as CSV (the format :func:`read_csv` reads), full precision."""
+def write_csv(path_or_file, path: DesiredPath, comments=()) -> None:
+    """Write a desired path as CSV (the format :func:`read_csv` reads), full precision; each of
+    ``comments`` (e.g. ``"source: ..."``) becomes a ``# `` line after the first."""
     buffer = io.StringIO()
     buffer.write(f"# {path.name}: {path.description}\n")
+    for comment in comments:
+        buffer.write(f"# {comment}\n")
     if path.S_d is None:
         buffer.write(",".join(MODULUS_COLUMNS) + "\n")
         for t, m in zip(path.t, path.modulus):
