@@ -21,7 +21,8 @@ def catapult_folder(tmp_path_factory):
 
 def test_optimize_writes_the_whole_folder(catapult_folder):
     names = {p.name for p in catapult_folder.iterdir()}
-    assert {"trajectory.csv", "summary.json", "trajectory.mat", "path.png", "joints.png", "limits.png"} <= names
+    assert {"trajectory.csv", "summary.json", "trajectory.mat", "path.png", "joints.png", "limits.png",
+            "view.html"} <= names
     summary = json.loads((catapult_folder / "summary.json").read_text())
     assert summary["metrics"]["limits_kept"] is True
     assert summary["metrics"]["worst_use"]["effort"] <= 1 + 1e-6
@@ -42,14 +43,17 @@ def test_trajectory_files_agree(catapult_folder):
 
 def test_plot_redraws_figures(catapult_folder, capsys):
     (catapult_folder / "path.png").unlink()
+    (catapult_folder / "view.html").unlink()
     assert main(["plot", str(catapult_folder)]) == 0
     assert (catapult_folder / "path.png").exists()
+    assert (catapult_folder / "view.html").exists()
 
 
 def test_dfs_modulus_folder_has_the_modulus_figure(tmp_path):
     out = tmp_path / "dfs"
-    assert main(["optimize", "dfs-catapult", "--config", "dfs", "--out", str(out), *FAST]) == 0
+    assert main(["optimize", "dfs-catapult", "--config", "dfs", "--out", str(out), *FAST, "--no-view"]) == 0
     assert (out / "modulus.png").exists()
+    assert not (out / "view.html").exists()
 
 
 def test_profiles_lists_every_builtin(capsys):
@@ -120,15 +124,16 @@ def test_batch_command(tmp_path, capsys):
                  "--starts", "1", "--h-u", "0.1", "--processes", "2"])
     assert code == 0
     table = capsys.readouterr().out
-    assert table.count(" ok ") == 2 and "false rot" in table and "flips/s" in table
+    assert table.count(" ok ") == 2 and "false rot" in table and "rev/s" in table
     assert (out / "catapult--yaw-track" / "summary.json").exists()
+    assert (out / "catapult--yaw-track" / "view.html").exists()
     import csv
     import json
 
     rows = list(csv.DictReader(open(out / "batch.csv")))
     assert [r["profile"] for r in rows] == ["catapult", "cosine"]
     felt = json.loads((out / "catapult--yaw-track" / "summary.json").read_text())["quality"]
-    assert float(rows[0]["sign_changes_per_s_max"]) == pytest.approx(max(felt["joints"]["sign_changes_per_s"].values()))
+    assert float(rows[0]["reversals_per_s_max"]) == pytest.approx(max(felt["joints"]["reversals_per_s"].values()))
     assert main(["batch", "catapult", "--configs", "nope", "--out", str(out)]) == 2
 
 

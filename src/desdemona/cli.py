@@ -3,19 +3,25 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import math
 import os
+import signal
 import sys
 import time
 from pathlib import Path
 
-import numpy as np
+try:  # a Ctrl-C while the libraries load (a second or two) ends the command quietly, as later
+    import numpy as np
 
-from desdemona import __version__, allocator, guard, profiles, sizing
-from desdemona import perception as perception_models
-from desdemona.configs import CONFIGURATIONS, get_configuration
-from desdemona.model import Model
-from desdemona.params import BUILTIN_SETS, ParameterError, load_params
+    from desdemona import __version__, allocator, guard, profiles, sizing
+    from desdemona import perception as perception_models
+    from desdemona.configs import CONFIGURATIONS, get_configuration
+    from desdemona.model import Model
+    from desdemona.params import BUILTIN_SETS, ParameterError, load_params
+except KeyboardInterrupt:
+    print("desdemona: interrupted (SIGINT): stopped, nothing written", file=sys.stderr)
+    raise SystemExit(128 + signal.SIGINT) from None
 
 EXIT_USAGE = 2
 EXIT_UNSAFE = 3  # no trajectory within every limit was found: nothing is written
@@ -23,17 +29,18 @@ EXIT_NOT_CONVERGED = 4  # a result within every limit is written, but the solver
 EXIT_CODES = """exit codes:
   0    done: the result is written
   1    an unexpected error (a bug: please report it with the command)
-  2    bad input (profile, CSV, parameters, options, --out) or a problem too large for this machine's
-       memory; nothing is run and nothing is written
+  2    bad input (profile, CSV, parameters, options, --out), --out being written by another run, or a
+       problem too large for this machine's memory; nothing is run and nothing is written
   3    no trajectory within every limit was found; nothing is written (batch: for some job)
   4    a result within every limit is written, but the solver stopped before converging (for example
        at its iteration cap): its status is in the printed line and summary.json ("converged": false)
        (batch: for some job, and no job ended with 3)
   130  interrupted by Ctrl-C (SIGINT), 143 by SIGTERM: stopped within a second or two, workers too;
-       no partial result is written"""
+       no partial result is written (batch: the jobs done by then are kept and listed in batch.csv)"""
 SEE_EXIT_CODES = "Exit codes: 0 done, 2 bad input, 3 no safe trajectory, 4 not converged, 130 interrupted; " \
                  "see 'desdemona --help'."
 PROGRESS_EVERY = 10.0  # [s] between progress lines inside a long solve (stderr not a terminal)
+MIN_H_U = 1e-3  # [s] the finest --h-u: a drive's accelerations are not commanded faster than 1 kHz
 
 
 class UserError(Exception):
@@ -46,13 +53,23 @@ def main(argv: list[str] | None = None) -> int:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # argparse has printed its message (or --help): report, do not exit
         return int(exc.code or 0)
+    except KeyboardInterrupt:
+        print(f"desdemona: {guard.Interrupted(signal.SIGINT).message}", file=sys.stderr)
+        return 128 + signal.SIGINT
     from desdemona.report import ReportError
     from desdemona.simulate import LimitViolation
 
     allocator.reuse_freed_memory()  # IPOPT's factorisations reuse their workspace (allocator.py)
     try:
-        with guard.interruptible():
+        # args.held: the output folders this run holds (report.claim), released as it ends
+        with guard.interruptible(), contextlib.ExitStack() as args.held:
             return args.run(args)
+    except KeyboardInterrupt:  # a Ctrl-C before the guard was in place (or after it was removed)
+        print(f"desdemona: {guard.Interrupted(signal.SIGINT).message}", file=sys.stderr)
+        return 128 + signal.SIGINT
+    except BrokenPipeError:  # the reader of stdout has gone (`| head`): the rest is not wanted
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # nor a traceback at exit's flush
+        return 0
     except (UserError, ParameterError, profiles.ProfileError, ReportError, sizing.TooLarge) as exc:
         print(f"desdemona: error: {exc}", file=sys.stderr)
         return EXIT_USAGE
@@ -105,6 +122,7 @@ def _parser() -> argparse.ArgumentParser:
     _add_overwrite_option(opt)
     opt.add_argument("--quiet", action="store_true",
                      help="no progress on stderr (default: a bar on a terminal, else a line per start)")
+    _add_view_option(opt)
     opt.set_defaults(run=_run_optimize)
 
     batch = sub.add_parser(
@@ -124,7 +142,11 @@ def _parser() -> argparse.ArgumentParser:
                        help="local processes when no --dask is given (default: 2)")
     batch.add_argument("--dask", metavar="ADDRESS", default=None,
                        help="Dask scheduler address (tcp://host:8786): run the jobs on that cluster")
+    batch.add_argument("--overwrite", action="store_true",
+                       help="write into DIR if it is an earlier batch folder of desdemona (only its batch.csv "
+                            "and result folders inside): its jobs' folders and batch.csv are replaced")
     batch.add_argument("--quiet", action="store_true", help="no line on stderr as each job ends")
+    _add_view_option(batch)
     batch.set_defaults(run=_run_batch)
 
     online = sub.add_parser(
@@ -187,17 +209,40 @@ def _parser() -> argparse.ArgumentParser:
                              "plan is made every step, nlp when --replan spans several steps, as the "
                              "thesis solves to convergence in its T_c (default: auto)")
     _add_overwrite_option(online)
+    _add_view_option(online)
     online.set_defaults(run=_run_online)
 
-    prof = sub.add_parser("profiles", help="list the built-in desired paths",
-                          description="List the built-in desired paths with a one-line description.")
+    _add_import_parser(sub)
+
+    prof = sub.add_parser("profiles", help="list the built-in desired paths, or write one to CSV",
+                          description="List the built-in desired paths with a one-line description; with a "
+                                      "NAME and --csv, write that path as a CSV file to edit or to start from "
+                                      "(e.g. 'desdemona profiles catapult --csv my-motion.csv').")
+    prof.add_argument("name", nargs="?", metavar="NAME", help="a built-in path to write (with --csv)")
+    prof.add_argument("--csv", metavar="FILE", default=None,
+                      help="write the path NAME to this CSV file (columns t,wx,wy,wz,fx,fy,fz or t,M, SI units, "
+                           "its weights in a '# weights:' line)")
+    prof.add_argument("--overwrite", action="store_true", help="replace FILE if it exists")
     prof.set_defaults(run=_run_profiles)
 
     plot = sub.add_parser("plot", help="re-draw the figures of a result folder",
-                          description="Re-draw the PNG figures of a result folder from its trajectory.csv "
-                                      "and summary.json.")
+                          description="Re-draw the PNG figures and view.html of a result folder from its "
+                                      "trajectory.csv and summary.json.")
     plot.add_argument("folder", metavar="DIR")
     plot.set_defaults(run=_run_plot)
+
+    show = sub.add_parser(
+        "view", help="a 3D replay of a result in the browser: one self-contained HTML file",
+        description="Write one HTML file that replays a result folder in 3D in any browser, from disk and "
+                    "with no network: the arm, track, heave, gimbal rings and cabin moving as the "
+                    "trajectory moves them, the felt and desired specific force as arrows at the head, "
+                    "and beside it S against S_d, the felt direction and rotation against their "
+                    "thresholds and each joint's use of its limits on one time cursor (an on-line "
+                    "result's classical loop as a second, faded machine). Play, pause, scrub, speed "
+                    "0.1x to 4x, orbit the camera (drag, wheel) or ride inside the cabin.")
+    show.add_argument("folder", metavar="RESULT", help="a result folder (of optimize, online or batch)")
+    show.add_argument("--out", metavar="FILE.html", default=None, help="where to write it (default: RESULT/view.html)")
+    show.set_defaults(run=_run_view)
 
     cmp = sub.add_parser(
         "compare", help="judge result folders side by side: one table of quality metrics, overlay figures",
@@ -209,12 +254,72 @@ def _parser() -> argparse.ArgumentParser:
     cmp.add_argument("folders", nargs="+", metavar="DIR", help="result folders (of optimize, online or batch)")
     cmp.add_argument("--out", metavar="DIR", default=None,
                      help="also write compare.csv and overlay figures (path, felt error, joint accelerations) here")
+    cmp.add_argument("--overwrite", action="store_true",
+                     help="write into DIR if it holds an earlier comparison of desdemona (only compare.csv and "
+                          "its figures), replacing them")
     cmp.add_argument("--perception", choices=tuple(perception_models.MODELS), default="thesis",
                      help="vestibular model for the felt error (default: thesis)")
     cmp.add_argument("--lag-window", type=float, default=2.0, metavar="SECONDS", dest="lag_window",
                      help="largest delay searched for the lag (default: 2)")
     cmp.set_defaults(run=_run_compare)
     return parser
+
+
+def _add_import_parser(sub) -> None:
+    imp = sub.add_parser(
+        "import", help="make a desired path CSV from a JSBSim flight or a logged motion",
+        description="Make a desired path (CSV, t,wx,wy,wz,fx,fy,fz in the cabin frame: x right, y forward, "
+                    "z up; SI) from a vehicle's motion, with '# source:' lines saying where it came from.")
+    kinds = imp.add_subparsers(title="sources", required=True, metavar="SOURCE")
+    js = kinds.add_parser(
+        "jsbsim", help="a JSBSim flight: what the pilot feels",
+        description="Run a JSBSim script (a shipped one by name, e.g. b737_runway_new, or a script file) as "
+                    "fast as it computes and write what the pilot feels: the pilot station's specific force "
+                    "and the body rates, turned into the cabin frame. Needs the jsbsim package: pip install "
+                    "'desdemona[jsbsim]'. A flight above 20 g (a crash) is refused.")
+    js.add_argument("script", nargs="?", metavar="SCRIPT", help="shipped script name or script file (.xml)")
+    js.add_argument("--list", action="store_true", help="list the shipped scripts and stop")
+    js.add_argument("--rate", type=float, default=None, metavar="HZ",
+                    help="samples per second of the path, through an anti-alias filter (default: 100; "
+                         "JSBSim steps at 120)")
+    _add_import_options(js, "sim time")
+    js.set_defaults(run=_run_import_jsbsim)
+    lg = kinds.add_parser(
+        "log", help="a logged motion (IMU or simulator output, CSV)",
+        description="Read a CSV log of accelerometer readings (specific force: +1 g up at rest, not kinematic "
+                    "acceleration) and angular rates, in declared units and axes, into a desired path. Where "
+                    "the log is still for 1 s the force must read +1 g up (the convention check).")
+    lg.add_argument("file", metavar="FILE", help="CSV log, the first non-# line naming the columns")
+    lg.add_argument("--time", default="t", metavar="COL", help="time column (default: t)")
+    lg.add_argument("--accel", default="ax,ay,az", metavar="X,Y,Z",
+                    help="accelerometer columns, the log's x,y,z (default: ax,ay,az)")
+    lg.add_argument("--rates", default="p,q,r", metavar="X,Y,Z",
+                    help="angular rate columns, the log's x,y,z (default: p,q,r)")
+    lg.add_argument("--accel-unit", required=True, choices=("g", "m/s2"), dest="accel_unit")
+    lg.add_argument("--rate-unit", required=True, choices=("deg/s", "rad/s"), dest="rate_unit")
+    lg.add_argument("--time-unit", default="s", choices=("s", "ms"), dest="time_unit", help="(default: s)")
+    lg.add_argument("--axes", default="forward,right,down", metavar="X,Y,Z",
+                    help="direction of the log's x,y,z: each one of forward/back/right/left/up/down, "
+                         "right-handed (default: forward,right,down, vehicle body axes)")
+    lg.add_argument("--lever-arm", default="0,0,0", metavar="X,Y,Z", dest="lever_arm",
+                    help="from the sensor to the head, the log's axes [m] (default: 0,0,0)")
+    lg.add_argument("--rate", type=float, default=None, metavar="HZ",
+                    help="samples per second of the path, through an anti-alias filter (default: the log's, "
+                         "at most 100)")
+    lg.add_argument("--no-check", action="store_false", dest="check",
+                    help="skip the convention check (for a log that is nowhere still)")
+    _add_import_options(lg, "the log's time")
+    lg.set_defaults(run=_run_import_log)
+
+
+def _add_import_options(parser: argparse.ArgumentParser, clock: str) -> None:
+    parser.add_argument("--out", metavar="PATH.csv", help="the desired path CSV to write")
+    parser.add_argument("--start", type=float, default=None, metavar="SECONDS",
+                        help=f"crop from here [s of {clock}]; it becomes t = 0 (default: the start)")
+    parser.add_argument("--end", type=float, default=None, metavar="SECONDS",
+                        help=f"crop to here [s of {clock}] (default: the end)")
+    parser.add_argument("--modulus", action="store_true", help="write the dfs form t,M (M = |f|)")
+    parser.add_argument("--overwrite", action="store_true", help="replace an existing --out file")
 
 
 def _add_machine_options(parser: argparse.ArgumentParser, default_config: str = "full") -> None:
@@ -301,7 +406,10 @@ def parse_state(text: str, model: Model) -> tuple[np.ndarray, np.ndarray]:
         raise UserError(f"--initial-state {text!r}: give {model.n} positions, ';', {model.n} rates "
                         f"(joints {', '.join(names)}; SI units)")
     for k, name in enumerate(names):
-        if not (np.isfinite(q[k]) and lim.position_min[k] <= q[k] <= lim.position_max[k]):
+        if not (np.isfinite(q[k]) and np.isfinite(qd[k])):
+            raise UserError(f"--initial-state: {name}'s position and rate must be finite numbers, got "
+                            f"{q[k]:g} and {qd[k]:g}")
+        if not lim.position_min[k] <= q[k] <= lim.position_max[k]:
             raise UserError(f"--initial-state: {name} position {q[k]:g} is outside "
                             f"[{lim.position_min[k]:g}, {lim.position_max[k]:g}]")
         if not (np.isfinite(qd[k]) and abs(qd[k]) <= lim.velocity[k]):
@@ -328,21 +436,31 @@ def _inputs(args) -> tuple:
     return tuple(p for p in (args.profile, args.params) if p is not None and os.path.exists(p))
 
 
+def _claim_out(args) -> Path:
+    """``args.out``, checked to be creatable and held for this run (:func:`desdemona.report.claim`)
+    until it ends: a second run on the same folder is refused."""
+    from desdemona import report
+
+    out = Path(args.out)
+    parent = out.absolute().parent
+    if not parent.is_dir():
+        raise UserError(f"{out}: cannot create it: the folder {parent} does not exist")
+    if not os.access(parent, os.W_OK):
+        raise UserError(f"{out}: cannot create it: {parent} is not a writable folder")
+    args.held.enter_context(report.claim(out))
+    return out
+
+
 def _run_inputs(args):
     """The machine, the desired path and the output folder of a run, each checked before any work."""
     from desdemona import report
 
     model = _machine(args)
     path = profiles.load(args.profile)
-    out = Path(args.out)
+    out = _claim_out(args)
     if out.exists() and not args.overwrite:
         raise UserError(f"{out}: already exists; choose another folder or add --overwrite")
     report.check_replaceable(out, protect=_inputs(args))
-    parent = out.resolve().parent
-    if not parent.is_dir():
-        raise UserError(f"{out}: cannot create it: the folder {parent} does not exist")
-    if not os.access(parent, os.W_OK):
-        raise UserError(f"{out}: cannot create it: {parent} is not a writable folder")
     if not model.config.takes_modulus and path.S_d is None:
         raise UserError(f"configuration {model.config.name!r} needs a full path t,wx,wy,wz,fx,fy,fz; "
                         f"{args.profile} gives only the modulus (use --config dfs)")
@@ -358,8 +476,9 @@ def _run_optimize(args) -> int:
     model, path, out = _run_inputs(args)
     if args.starts < 1 or args.workers < 1:
         raise UserError("--starts and --workers must be at least 1")
-    if not 0 < args.h_u <= path.duration:
-        raise UserError(f"--h-u {args.h_u:g}: must be positive and at most the path's {path.duration:g} s")
+    if not MIN_H_U <= args.h_u <= path.duration:
+        raise UserError(f"--h-u {args.h_u:g}: must be at least {MIN_H_U:g} s and at most the path's "
+                        f"{path.duration:g} s")
     if model.config.modulus_cost and args.perception:
         raise UserError("--perception applies to the full path S, not to the dfs modulus")
     if args.method == "thesis":
@@ -383,7 +502,7 @@ def _run_optimize(args) -> int:
                                       refine=args.refine)
             result = optimize(path, model, options, progress=None if progress is None else progress.start_done)
     report.write(result, out, command=report.command_line(), overwrite=args.overwrite, unreachable=unreachable,
-                 protect=_inputs(args))
+                 protect=_inputs(args), view=args.view)
     c = result.check
     perceived = f" (perceived {c.rms_perceived:.4g})" if c.rms_perceived is not None else ""
     if model.config.aligned:
@@ -430,6 +549,8 @@ def _run_batch(args) -> int:
     from desdemona.offline import OptimizeOptions
     from desdemona.problem import ProblemOptions
 
+    out = _claim_out(args)
+    batch.check_out(out, args.overwrite)
     for name in args.configs:
         try:
             get_configuration(name)
@@ -438,23 +559,23 @@ def _run_batch(args) -> int:
     for name in args.profiles:
         if name not in profiles.PROFILES and not os.path.isfile(name):
             profiles.load(name)  # raises with the list of built-in profiles, or file not found
-    if args.starts < 1 or args.processes < 1 or not args.h_u > 0:
-        raise UserError("--starts and --processes must be at least 1 and --h-u positive")
+    if args.starts < 1 or args.processes < 1 or not args.h_u >= MIN_H_U:
+        raise UserError(f"--starts and --processes must be at least 1 and --h-u at least {MIN_H_U:g} s")
     params = load_params(args.params, base=args.base)
     for name in args.profiles:  # the weights and gain, checked on every path before any job runs
         _session(args, None, profiles.load(name))
     options = OptimizeOptions(ProblemOptions(h_u=args.h_u, initial=args.initial or "rest", final=args.final),
                               starts=args.starts, seed=args.seed)
-    jobs = [batch.Job(p, c) for p in args.profiles for c in args.configs]
+    jobs = [batch.Job(p, c, view=args.view) for p in args.profiles for c in args.configs]
     begin = time.perf_counter()
 
     def progress(done, total, job):
         print(f"desdemona: job {done}/{total} done, {time.perf_counter() - begin:.1f} s: {job.profile} on "
               f"{job.config}: {job.status}", file=sys.stderr, flush=True)
 
-    results = batch.run_batch(jobs, params, options, args.out, args.processes, args.dask,
+    results = batch.run_batch(jobs, params, options, out, args.processes, args.dask,
                               weights=args.weights or "auto", gain=args.gain,
-                              progress=None if args.quiet else progress)
+                              progress=None if args.quiet else progress, overwrite=args.overwrite)
     print(batch.table(results))
     if any(r.status not in ("ok", "not converged") for r in results):
         return EXIT_UNSAFE
@@ -487,6 +608,7 @@ def _run_online(args) -> int:
                                 weights=weights, reach=args.reach)
     except ValueError as exc:
         raise UserError(f"--replan: {exc}") from None
+    sizing.check_fits_online(model.config.cue_path(path), model.config, mpc)
     reference = None
     if args.predictor == "route":
         if args.reference is None:
@@ -501,7 +623,7 @@ def _run_online(args) -> int:
     result = online.run(path, model, options)
     unreachable = sizing.unreachable(path, model)
     report.write_online(result, out, report.command_line(), args.overwrite, unreachable=unreachable,
-                        protect=_inputs(args))
+                        protect=_inputs(args), view=args.view)
     c, times, sources = result.check, result.loop.compute_times, result.loop.sources
     classical = "" if result.baseline_check is None else f" (classical loop {result.baseline_check.rms:.4g})"
     modulus = ""
@@ -535,6 +657,25 @@ def _online_start(args, model: Model) -> dict:
 
 
 def _run_profiles(args) -> int:
+    if (args.name is None) != (args.csv is None):
+        raise UserError("give a built-in path and --csv FILE to write it, e.g. 'desdemona profiles catapult "
+                        "--csv my-motion.csv'; or neither to list them")
+    if args.name is not None:
+        if args.name not in profiles.PROFILES:
+            raise UserError(f"unknown built-in path {args.name!r}; one of: {', '.join(profiles.PROFILES)}")
+        target = Path(args.csv)
+        if target.is_dir():
+            raise UserError(f"{target}: is a folder; --csv names the file to write")
+        if target.exists() and not args.overwrite:
+            raise UserError(f"{target}: already exists; choose another name or add --overwrite")
+        if not target.absolute().parent.is_dir():
+            raise UserError(f"{target}: cannot create it: the folder {target.absolute().parent} does not exist")
+        try:
+            profiles.write_csv(target, profiles.get_profile(args.name))
+        except OSError as exc:
+            raise UserError(f"{target}: cannot write it: {exc.strerror or exc}") from None
+        print(target)
+        return 0
     for name in profiles.PROFILES:
         path = profiles.get_profile(name)
         kind = "modulus only (dfs)" if path.S_d is None else "full path"
@@ -542,13 +683,76 @@ def _run_profiles(args) -> int:
     return 0
 
 
+def _run_import_jsbsim(args) -> int:
+    from desdemona.profiles import convert, jsbsim
+
+    if args.list:
+        print("\n".join(jsbsim.shipped_scripts()))
+        return 0
+    if args.script is None or args.out is None:
+        raise UserError("import jsbsim needs SCRIPT and --out PATH.csv (or --list)")
+    _check_import_out(args.out, args.overwrite)
+    path, comments = jsbsim.from_jsbsim(args.script, args.start, args.end, args.rate, args.modulus)
+    _say_imported(convert.write_path(args.out, path, comments, args.overwrite), path)
+    return 0
+
+
+def _run_import_log(args) -> int:
+    from desdemona.profiles import convert, log
+
+    if args.out is None:
+        raise UserError("import log needs --out PATH.csv")
+    _check_import_out(args.out, args.overwrite)
+    try:
+        lever_arm = tuple(float(x) for x in args.lever_arm.split(","))
+    except ValueError:
+        raise UserError(f"--lever-arm {args.lever_arm!r}: give three numbers x,y,z in metres") from None
+    names = lambda text: tuple(c.strip() for c in text.split(","))  # noqa: E731
+    fmt = log.LogFormat(args.time.strip(), names(args.accel), names(args.rates), args.accel_unit, args.rate_unit,
+                        args.time_unit, names(args.axes), lever_arm)
+    path, comments = log.from_log(args.file, fmt, args.start, args.end, args.rate, args.modulus, args.check)
+    _say_imported(convert.write_path(args.out, path, comments, args.overwrite), path)
+    return 0
+
+
+def _check_import_out(out: str, overwrite: bool) -> None:
+    """Refuse an --out that exists before any work is done."""
+    if Path(out).exists() and not overwrite:
+        raise UserError(f"{out}: already exists; choose another file or add --overwrite")
+
+
+def _say_imported(out: Path, path: profiles.DesiredPath) -> None:
+    peak = float(np.max(path.M_d)) / profiles.G
+    print(f"{out}: {path.duration:.6g} s, {len(path.t)} samples, {'t,M' if path.S_d is None else 'S'}, "
+          f"peak |f| {peak:.2f} g")
+
+
 def _run_plot(args) -> int:
-    from desdemona import figures, report
+    from desdemona import figures, report, view
 
     traj, summary = report.load(args.folder)
-    for figure in figures.draw_result(traj, summary, args.folder):
+    try:
+        drawn = figures.draw_result(traj, summary, args.folder)
+        drawn += report.redraw_online(traj, summary, args.folder)
+    except (KeyError, TypeError, IndexError) as exc:
+        raise report.ReportError(f"{args.folder}: not a complete result folder: its summary.json or "
+                                 f"trajectory.csv lacks {exc}") from None
+    for figure in drawn:
         print(figure)
+    print(view.write(args.folder))
     return 0
+
+
+def _run_view(args) -> int:
+    from desdemona import view
+
+    print(view.write(args.folder, args.out))
+    return 0
+
+
+def _add_view_option(parser) -> None:
+    parser.add_argument("--no-view", action="store_false", dest="view",
+                        help="do not write view.html (the 3D replay, see 'desdemona view') into the result folder")
 
 
 def _run_compare(args) -> int:
@@ -556,10 +760,12 @@ def _run_compare(args) -> int:
 
     if not args.lag_window > 0:
         raise UserError("--lag-window must be positive")
+    if args.out is not None:
+        compare.check_out(_claim_out(args), args.overwrite)
     entries = compare.load_results(args.folders, perception_models.get_model(args.perception), args.lag_window)
     print(compare.table(entries))
     if args.out is not None:
-        for written in compare.write(entries, args.out):
+        for written in compare.write(entries, args.out, args.overwrite):
             print(written)
     return 0
 
