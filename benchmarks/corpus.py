@@ -24,6 +24,7 @@ corpus takes a few seconds.
 from __future__ import annotations
 
 import argparse
+import hashlib
 import json
 import sys
 import time
@@ -87,9 +88,24 @@ def build(out: Path, names: list[str] | None = None) -> dict:
             entries.append({"name": name, "file": file, "form": form, "duration_s": round(path.duration, 6),
                             "peak_g": round(peak, 3), "source": source, "description": what})
         timings[name] = round(time.perf_counter() - tic, 3)
-    index = {"cases": entries, "build_s": round(time.perf_counter() - started, 2), "case_s": timings}
-    (out / "index.json").write_text(json.dumps(index, indent=1) + "\n")
+    earlier = out / "index.json"
+    if names is not None and earlier.exists():  # the other cases stay as they were built
+        kept = json.loads(earlier.read_text())
+        entries = [e for e in kept["cases"] if e["name"] not in names] + entries
+        timings = {**{k: v for k, v in kept["case_s"].items() if k not in names}, **timings}
+    index = {"cases": entries, "build_s": round(time.perf_counter() - started, 2), "case_s": timings,
+             "definition": definition()}
+    earlier.write_text(json.dumps(index, indent=1) + "\n")
     return index
+
+
+def definition() -> str:
+    """A fingerprint of what the corpus is made from (this script and our JSBSim scripts): a corpus
+    built from another definition is stale (``benchmarks/real.py`` builds it again)."""
+    digest = hashlib.sha256(Path(__file__).read_bytes())
+    for script in sorted(SCRIPTS.glob("*.xml")):
+        digest.update(script.read_bytes())
+    return digest.hexdigest()[:16]
 
 
 def main(argv: list[str] | None = None) -> int:

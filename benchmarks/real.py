@@ -1,0 +1,250 @@
+"""Real inputs: every corpus case on every configuration that suits it, off-line and on-line, in one table.
+
+    python benchmarks/real.py                          # build the corpus if missing, run every job, write the table
+    python benchmarks/real.py --cases f16-turn --configs dfs --modes offline hold
+    python benchmarks/real.py --table-only             # re-read the result folders, rewrite the table
+    python benchmarks/real.py --dask tcp://scheduler:8786   # the jobs on a Dask cluster
+
+The corpus (``benchmarks/corpus.py``) holds flights from JSBSim's shipped scripts and aircraft, each
+in the six-channel form (``t,wx,wy,wz,fx,fy,fz``) and the modulus form (``t,M``). A six-channel case
+runs on ``yaw-track-cabin`` and ``full``, a modulus case on ``dfs``; each off-line (``desdemona
+optimize`` with its defaults) and on-line (``desdemona online --predictor hold`` and ``perfect``, the
+command's defaults otherwise). Every job is the command a user would type, run as its own process
+(so its peak memory is its own: ``ru_maxrss`` of the process; ``--no-view``: the page is not
+timed), stopped with SIGINT after
+``--timeout`` seconds; the jobs go through :func:`desdemona.batch.map_jobs` (local processes, or a
+Dask cluster whose workers see the corpus and the output folder at the same paths).
+
+Per job the table gives: the exit code (0 converged, 4 not converged, 3 no safe trajectory, 2
+refused, "timeout"), the wall time and its ratio to the recording's duration, the peak memory, and
+what the occupant feels, read from the result's ``summary.json`` ("quality"):
+
+- felt force RMS [m/s^2]: RMS of the vector ``|f - f_d|`` (on ``dfs``: against (0, 0, M_d) in the
+  cabin, the force along the occupant's vertical), the same for every configuration and mode;
+- correlation and lag [s] of the dominant force channel (the one whose desired value varies most; on
+  ``dfs`` f_z against M_d);
+- felt direction RMS and peak [deg], peak felt rotation through the canals [deg/s], acceleration
+  reversals per second of the worst joint (swings across 5 % of its peak);
+- on-line rows: the p99 compute time per cycle [ms] and the deadlines missed; and the classical
+  loop's felt force RMS, correlation, felt direction peak and felt rotation peak from the same run
+  (it reads only the present sample, as ``hold``), with MPC / classical for the felt force.
+
+The machine's load average is recorded before and after the run.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import corpus  # benchmarks/corpus.py: the script's own folder is on the path
+import numpy as np
+
+from desdemona import batch, profiles
+
+HERE = Path(__file__).resolve().parent
+CORPUS = HERE / "corpus"
+RESULTS = HERE / "real-results"
+DOCS = HERE.parent / "docs" / "benchmarks.md"
+BEGIN, END = "<!-- real.py table: begin -->", "<!-- real.py table: end -->"
+
+CONFIGS = {"six": ("yaw-track-cabin", "full"), "modulus": ("dfs",)}
+MODES = ("offline", "hold", "perfect")
+FORCE = ("fx", "fy", "fz")
+
+
+def corpus_cases(folder: Path) -> list[dict]:
+    """The corpus index: one entry per file (name, file, form "six" or "modulus", duration_s, source),
+    the corpus built first where it is missing or made from another definition (:func:`corpus.definition`)."""
+    index = folder / "index.json"
+    if not index.exists() or json.loads(index.read_text()).get("definition") != corpus.definition():
+        subprocess.run([sys.executable, str(HERE / "corpus.py"), "--out", str(folder)], check=True)
+    return json.loads(index.read_text())["cases"]
+
+
+def command(case: dict, config: str, mode: str, out: Path) -> list[str]:
+    """The command line of one job, as a user would type it."""
+    base = [sys.executable, "-m", "desdemona"]
+    if mode == "offline":
+        return [*base, "optimize", case["file"], "--config", config, "--out", str(out), "--overwrite", "--quiet", "--no-view"]
+    return [*base, "online", case["file"], "--config", config, "--predictor", mode, "--out", str(out), "--overwrite",
+            "--no-view"]
+
+
+def run_job(case: dict, config: str, mode: str, out: str, timeout: float) -> dict:
+    """Run one job as its own process; its exit, wall time [s] and peak memory [MB]."""
+    folder = Path(out) / f"{case['name']}--{config}--{mode}"
+    start = time.perf_counter()
+    process = subprocess.Popen(command(case, config, mode, folder), stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, text=True)
+    deadline, stopped, status = start + timeout, False, None
+    while status is None:
+        pid, wait_status, usage = os.wait4(process.pid, os.WNOHANG)
+        if pid:
+            status = wait_status
+            break
+        if not stopped and time.perf_counter() > deadline:
+            process.send_signal(signal.SIGINT)  # the tool stops within a second or two, writing nothing
+            stopped, deadline = True, time.perf_counter() + 30.0
+        elif stopped and time.perf_counter() > deadline:
+            process.kill()
+        time.sleep(0.2)
+    process.returncode = os.waitstatus_to_exitcode(status)
+    output = process.stdout.read()
+    return {"case": case["name"], "form": case["form"], "duration_s": case["duration_s"], "config": config, "mode": mode,
+            "exit": "timeout" if stopped else process.returncode, "wall_s": time.perf_counter() - start,
+            "peak_mb": usage.ru_maxrss / 1024.0, "load": os.getloadavg()[0], "date": time.strftime("%Y-%m-%d"),
+            "folder": str(folder), "output": output[-2000:]}
+
+
+def dominant_force(path: profiles.DesiredPath) -> str:
+    """The force channel whose desired value varies most (fz, the modulus, for a modulus path)."""
+    if path.S_d is None:
+        return "fz"
+    return FORCE[int(np.argmax(np.std(path.S_d[:, 3:], axis=0)))]
+
+
+def felt_figures(quality: dict | None, channel: str) -> dict:
+    """The table's felt figures of one summary's ``quality`` block."""
+    if quality is None or quality["channels"] is None:
+        return {}
+    rms = quality["channels"]["rms"]
+    rotation = quality["felt_rotation"]["peak_deg_s"].values()
+    reversals = quality["joints"].get("reversals_per_s", {}).values()
+    return {"force_rms": float(np.sqrt(sum(rms[c] ** 2 for c in FORCE))),
+            "correlation": quality["channels"]["correlation"][channel],
+            "lag_s": quality["channels"]["lag_s"][channel],
+            "direction_rms": quality["felt_direction"]["rms_deg"],
+            "direction_peak": quality["felt_direction"]["peak_deg"],
+            "rotation_peak": max((r for r in rotation if r is not None), default=None),
+            "reversals": max(reversals, default=None)}
+
+
+def read_result(job: dict, channel: str) -> dict:
+    """A job's figures from its result folder (none where nothing was written)."""
+    summary_file = Path(job["folder"]) / "summary.json"
+    if job["exit"] not in (0, 4) or not summary_file.exists():
+        return job
+    summary = json.loads(summary_file.read_text())
+    row = {**job, **felt_figures(summary["quality"], channel), "channel": channel}
+    if "cycles" in summary:
+        cycles = summary["cycles"]
+        row.update(p99_ms=1e3 * cycles["compute_time_s"]["p99"], misses=cycles["deadline_misses"],
+                   cycles=cycles["count"])
+        row.update({f"classical_{k}": v for k, v in
+                    felt_figures(summary["quality_classical_loop"], channel).items()})
+    return row
+
+
+def cell(value, fmt: str) -> str:
+    return "-" if value is None else format(value, fmt)
+
+
+def table(rows: list[dict]) -> str:
+    """The markdown table of every job's row."""
+    lines = ["| case | s | configuration | mode | exit | wall [s] | wall / s | peak [MB] | felt force RMS | "
+             "corr | lag [s] | dir RMS / peak [deg] | rot peak [deg/s] | rev/s | p99 [ms] | missed | "
+             "classical: force RMS | corr | dir peak | rot peak | MPC / classical |",
+             "| --- " * 21 + "|"]
+    for r in rows:
+        ratio = (r["force_rms"] / r["classical_force_rms"]
+                 if r.get("force_rms") is not None and r.get("classical_force_rms") else None)
+        lines.append(
+            f"| {r['case']} | {r['duration_s']:.0f} | {r['config']} | {r['mode']} | {r['exit']} | "
+            f"{r['wall_s']:.1f} | {r['wall_s'] / r['duration_s']:.2f} | {r['peak_mb']:.0f} | "
+            f"{cell(r.get('force_rms'), '.3f')} | {cell(r.get('correlation'), '.2f')} | {cell(r.get('lag_s'), '.2f')} | "
+            f"{cell(r.get('direction_rms'), '.1f')} / {cell(r.get('direction_peak'), '.0f')} | "
+            f"{cell(r.get('rotation_peak'), '.0f')} | {cell(r.get('reversals'), '.2f')} | "
+            f"{cell(r.get('p99_ms'), '.1f')} | {cell(r.get('misses'), 'd')} | "
+            f"{cell(r.get('classical_force_rms'), '.3f')} | {cell(r.get('classical_correlation'), '.2f')} | "
+            f"{cell(r.get('classical_direction_peak'), '.0f')} | {cell(r.get('classical_rotation_peak'), '.0f')} | "
+            f"{cell(ratio, '.2f')} |")
+    return "\n".join(lines)
+
+
+def write_docs(text: str) -> None:
+    """Replace the table between the markers in docs/benchmarks.md (append the section if missing)."""
+    doc = DOCS.read_text()
+    if BEGIN in doc:
+        head, rest = doc.split(BEGIN, 1)
+        doc = head + BEGIN + "\n" + text + "\n" + END + rest.split(END, 1)[1]
+    else:
+        doc += f"\n## Real inputs\n\n{BEGIN}\n{text}\n{END}\n"
+    DOCS.write_text(doc)
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--corpus", type=Path, default=CORPUS, help="corpus folder (built if missing)")
+    parser.add_argument("--out", type=Path, default=RESULTS, help="folder of the jobs' result folders")
+    parser.add_argument("--cases", nargs="+", default=None, help="only these cases (names in the index)")
+    parser.add_argument("--configs", nargs="+", default=None, help="only these configurations")
+    parser.add_argument("--modes", nargs="+", choices=MODES, default=MODES)
+    parser.add_argument("--timeout", type=float, default=900.0, help="seconds per job before it is stopped")
+    parser.add_argument("--processes", type=int, default=2)
+    parser.add_argument("--dask", default=None, metavar="ADDRESS")
+    parser.add_argument("--table-only", action="store_true", help="re-read the jobs of an earlier run")
+    parser.add_argument("--no-docs", action="store_true", help="print the table, leave docs/benchmarks.md")
+    args = parser.parse_args(argv)
+
+    cases = [c for c in corpus_cases(args.corpus) if args.cases is None or c["name"] in args.cases]
+    for case in cases:
+        case["file"] = str((args.corpus / case["file"]).resolve())
+    cases.sort(key=lambda c: c["duration_s"])  # the short cases' rows first: a long run shows them early
+    jobs = [(case, config, mode) for case in cases for config in CONFIGS[case["form"]]
+            if args.configs is None or config in args.configs for mode in args.modes]
+    args.out.mkdir(parents=True, exist_ok=True)
+    record = args.out / "jobs.jsonl"
+    load_before = os.getloadavg()
+    started = time.perf_counter()
+    if args.table_only:
+        latest = {(j["case"], j["config"], j["mode"]): j for j in map(json.loads, record.read_text().splitlines())}
+        done = [latest[(c["name"], config, mode)] for c, config, mode in jobs if (c["name"], config, mode) in latest]
+    else:
+        def progress(count, total, job):
+            print(f"[{count}/{total}] {job['case']} on {job['config']} ({job['mode']}): exit {job['exit']}, "
+                  f"{job['wall_s']:.1f} s, {job['peak_mb']:.0f} MB", file=sys.stderr, flush=True)
+            with open(record, "a") as fh:
+                fh.write(json.dumps(job) + "\n")
+
+        done = batch.map_jobs(run_job, [(c, config, mode, str(args.out), args.timeout) for c, config, mode in jobs],
+                              args.processes, args.dask, progress)
+    paths = {(c["name"], c["form"]): profiles.load(c["file"]) for c in cases}
+    order = {(c["name"], config, mode): k for k, (c, config, mode) in enumerate(jobs)}
+    rows = sorted((read_result(j, dominant_force(paths[(j["case"], j["form"])])) for j in done),
+                  key=lambda r: order[(r["case"], r["config"], r["mode"])])
+    online = {(r["case"], r["config"]): r for r in rows if r["mode"] != "offline" and "classical_force_rms" in r}
+    for r in rows:  # the off-line rows beside the same classical loop
+        if r["mode"] == "offline" and (r["case"], r["config"]) in online:
+            r.update({k: v for k, v in online[(r["case"], r["config"])].items() if k.startswith("classical_")})
+    with open(args.out / "real.csv", "w", newline="") as fh:
+        keys = sorted({k for r in rows for k in r} - {"output"})
+        writer = csv.DictWriter(fh, keys, extrasaction="ignore")
+        writer.writeheader()
+        writer.writerows(rows)
+    load_after = os.getloadavg()
+    text = table(rows)
+    loads = [r["load"] for r in rows if "load" in r]
+    during = f"; 1-minute load average at the jobs' ends {min(loads):.1f}-{max(loads):.1f}" if loads else ""
+    dates = sorted({r.get("date", "") for r in rows} - {""})
+    if args.table_only:
+        text = f"Measured {', '.join(dates) or 'earlier'} with `python benchmarks/real.py` ({len(rows)} jobs{during}).\n\n" + text
+    else:
+        text = (f"Measured {time.strftime('%Y-%m-%d')} with `python benchmarks/real.py` "
+                f"({len(rows)} jobs, {args.processes} at a time, {time.perf_counter() - started:.0f} s in all; "
+                f"load average {load_before[0]:.2f} before, {load_after[0]:.2f} after{during}).\n\n" + text)
+    print(text)
+    if not args.no_docs:
+        write_docs(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
