@@ -11,7 +11,7 @@ import time
 from pathlib import Path
 
 import desdemona
-from desdemona import cli, problem, profiles, report
+from desdemona import cli, guard, problem, profiles, report
 from desdemona.cli import main
 
 SHORT = ["cosine", "--config", "yaw-track", "--h-u", "0.1", "--starts", "1"]
@@ -163,3 +163,45 @@ def test_fatrop_status_in_words():
     result = optimize(profiles.cosine(duration=1.0), Model(config="yaw-track"),
                       options=OptimizeOptions(problem.ProblemOptions(h_u=0.1, solver="fatrop"), starts=1))
     assert result.solution.status == "Solve_Succeeded" and result.converged
+
+
+def _guarded(tmp_path, body: str) -> subprocess.Popen:
+    """A process that runs ``body`` inside guard.interruptible() and exits as the command line does."""
+    script = tmp_path / "guarded.py"
+    script.write_text(
+        "import sys\nimport numpy as np\nfrom desdemona import guard\n"
+        "a = np.random.default_rng(0).random((2500, 2500))\n"
+        "print('ready', flush=True)\n"
+        "try:\n    with guard.interruptible():\n" + "".join(f"        {line}\n" for line in body.splitlines())
+        + "except guard.Interrupted as exc:\n    sys.exit(exc.code)\n")
+    proc = subprocess.Popen([sys.executable, str(script)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    assert proc.stdout.readline().strip() == "ready"
+    return proc
+
+
+def test_sigint_inside_compiled_code_that_never_returns_ends_the_process_within_two_seconds(tmp_path):
+    """One long call into compiled code (an eigen-decomposition of 10 s or more here) keeps Python's
+    handler from running; the watchdog ends the process GRACE seconds after the signal."""
+    proc = _guarded(tmp_path, "np.linalg.eigvals(a)\nprint('finished', flush=True)")
+    time.sleep(0.5)
+    sent = time.perf_counter()
+    proc.send_signal(signal.SIGINT)
+    out, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130 and "finished" not in out
+    assert time.perf_counter() - sent < guard.GRACE + 1.0
+    assert err.strip() == "desdemona: interrupted (SIGINT): stopped, no partial result written"
+
+
+def test_the_watchdog_waits_for_a_block_that_holds_signals_back(tmp_path):
+    """A signal inside guard.deferred() (renaming a result into place) is delivered when it ends, by the
+    main thread, however long the block takes: the watchdog does not cut it in two."""
+    # the signals are held back inside the block, so its Python loop is one piece: longer than GRACE
+    proc = _guarded(tmp_path, "import time\nwith guard.deferred():\n    start = time.perf_counter()\n"
+                              f"    while time.perf_counter() - start < {guard.GRACE + 1.0}:\n"
+                              "        np.linalg.eigvals(a[:300, :300])\n"
+                              "    print('block done', flush=True)\nprint('after', flush=True)")
+    time.sleep(0.3)
+    proc.send_signal(signal.SIGINT)
+    out, _ = proc.communicate(timeout=60)
+    assert proc.returncode == 130
+    assert out.split() == ["block", "done"]

@@ -16,6 +16,12 @@ or two, write nothing, and leave the command to exit 128 + the signal number. Th
 - Other compiled code (the on-line controller's QP solver) may swallow the exception the same way.
   After the first signal a repeating timer raises :class:`Interrupted` again every :data:`REPEAT`
   seconds until it reaches Python code that lets it through.
+- Compiled code that runs for long without returning to the interpreter (CasADi building or
+  factorising a problem of a million variables) keeps even the handler from running: a Python handler
+  runs between bytecodes. A watchdog thread hears the signal at once through the interpreter's wakeup
+  file descriptor (:func:`signal.set_wakeup_fd`) and, if the command has not ended :data:`GRACE`
+  seconds later with the handler never run (:data:`GRACE_ACTING` once it has: the command is
+  stopping), ends the process as above, unless the signal is held back (:func:`deferred`).
 - Worker processes: they ignore SIGINT (:func:`worker_signals`), so only the parent decides, and the
   parent terminates them (``multiprocessing.Pool`` sends SIGTERM on leaving its ``with`` block), which
   stops them the same way. A pool whose work is done is ended by :func:`finish` instead.
@@ -32,6 +38,7 @@ from __future__ import annotations
 import contextlib
 import os
 import signal
+import socket
 import sys
 import threading
 import time
@@ -39,6 +46,13 @@ import time
 import casadi as ca
 
 REPEAT = 0.2  # [s] re-raise period once a signal was received and something swallowed the exception
+#: [s] after a signal, how long the command has to end by itself before the watchdog ends the process:
+#: a command stops within a second or two of Ctrl-C, whatever compiled code it is in.
+GRACE = 1.5
+#: [s] the same once the handler has run: the command is then ending by itself (an interrupted batch
+#: stops its workers and writes its table), unless compiled code swallowed the exception and runs on.
+GRACE_ACTING = 10.0
+STOPPING = (signal.SIGINT, signal.SIGTERM)
 
 
 class Interrupted(SystemExit):
@@ -64,6 +78,9 @@ class _State:
         self.reporter = None  # reporter(iteration, cost, seconds) for long solves
         self.every = 10.0
         self.on_hard_exit = []  # callables run before the process ends with os._exit (release a lock)
+        self.deferring = 0  # depth of blocks that must not be cut in two (deferred)
+        self.acted = False  # the handler has run since the signal: the main thread knows of it
+        self.held = False  # a signal arrived inside a deferred block: it is acted on as the block ends
 
 
 _state = _State()
@@ -81,28 +98,58 @@ def before_hard_exit(action):
 
 
 def _handler(signum, frame):
+    _state.acted = True
     if _state.signum is None:
         _state.signum = signum
         # a backstop for exceptions swallowed by compiled code: raise again until one gets through
         signal.signal(signal.SIGALRM, _repeat)
         signal.setitimer(signal.ITIMER_REAL, REPEAT, REPEAT)
+    if _state.deferring:
+        _state.held = True  # deferred() raises as it ends
+        return
     if _state.monitored:
         return  # the solve's monitor stops IPOPT cleanly; solving() raises after it returns
     if _state.unstoppable:
-        if _state.speak:
-            print(f"desdemona: {Interrupted(signum).message}", file=sys.stderr, flush=True)
-        sys.stdout.flush()
-        for action in _state.on_hard_exit:
-            try:
-                action()
-            except Exception:  # ending the process matters more than tidying up
-                pass
-        os._exit(128 + signum)
+        _hard_exit(signum)
     raise Interrupted(_state.signum)
 
 
+def _hard_exit(signum: int) -> None:
+    """End the process at once with 128 + ``signum``, saying why and releasing what it holds."""
+    if _state.speak:
+        print(f"desdemona: {Interrupted(signum).message}", file=sys.stderr, flush=True)
+    sys.stdout.flush()
+    for action in list(_state.on_hard_exit):
+        try:
+            action()
+        except Exception:  # ending the process matters more than tidying up
+            pass
+    os._exit(128 + signum)
+
+
+def _watchdog(wakeup: socket.socket, ended: threading.Event) -> None:
+    """Thread: on SIGINT or SIGTERM (read from the wakeup socket), end the process if the command has
+    not ended (``ended``) within :data:`GRACE` seconds. It blocks the signals itself, so that they reach
+    the main thread, and while the main thread holds them back (:func:`deferred`) none is read here."""
+    signal.pthread_sigmask(signal.SIG_BLOCK, STOPPING)
+    while not ended.is_set():
+        try:
+            received = wakeup.recv(64)
+        except OSError:  # closed as the command ended
+            return
+        signums = [s for s in received if s in STOPPING]
+        if not received or ended.is_set():
+            return
+        if not signums:
+            continue
+        while _state.deferring and not ended.is_set():  # a block that must not be cut in two
+            ended.wait(0.05)
+        if not ended.wait(GRACE) and not (_state.acted and ended.wait(GRACE_ACTING - GRACE)):
+            _hard_exit(signums[0])
+
+
 def _repeat(signum, frame):
-    if _state.signum is not None and not _state.monitored:
+    if _state.signum is not None and not _state.monitored and not _state.deferring:
         raise Interrupted(_state.signum)
 
 
@@ -113,12 +160,23 @@ def interruptible():
         yield
         return
     saved = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM, signal.SIGALRM)}
-    _state.signum, _state.speak = None, True
+    _state.signum, _state.speak, _state.acted, _state.held = None, True, False, False
     for s in (signal.SIGINT, signal.SIGTERM):
         signal.signal(s, _handler)
+    listen, wakeup = socket.socketpair()
+    wakeup.setblocking(False)
+    saved_wakeup = signal.set_wakeup_fd(wakeup.fileno(), warn_on_full_buffer=False)
+    ended = threading.Event()
+    watchdog = threading.Thread(target=_watchdog, args=(listen, ended), name="desdemona-watchdog", daemon=True)
+    watchdog.start()
     try:
         yield
     finally:
+        ended.set()
+        signal.set_wakeup_fd(saved_wakeup)
+        wakeup.close()  # the watchdog's recv returns empty: it ends
+        watchdog.join()
+        listen.close()
         signal.setitimer(signal.ITIMER_REAL, 0)
         for s, h in saved.items():
             signal.signal(s, h)
@@ -155,13 +213,19 @@ def solving(monitor: SolveMonitor | None):
 @contextlib.contextmanager
 def deferred():
     """Hold SIGINT and SIGTERM back for a short block that must not be cut in two (renaming a result
-    folder into place); they are delivered when it ends."""
-    blocked = {signal.SIGINT, signal.SIGTERM}
-    previous = signal.pthread_sigmask(signal.SIG_BLOCK, blocked)
+    folder into place); they are acted on when it ends. Blocking them in this thread is not enough:
+    a signal may reach another thread (a BLAS worker), and the interpreter then runs the handler here
+    all the same; the handler and the watchdog leave a deferred block alone, and its end raises."""
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, STOPPING)
+    _state.deferring += 1
     try:
         yield
     finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+        _state.deferring -= 1
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)  # a signal held back is delivered now
+    if not _state.deferring and _state.held:
+        _state.held = False
+        check()
 
 
 def worker_signals(writes: bool = False) -> None:
