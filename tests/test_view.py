@@ -139,8 +139,13 @@ def browser():
 
 @pytest.fixture(scope="module")
 def loaded(browser, result):
+    from selenium.webdriver.support.ui import WebDriverWait
+
     page = view.write(result)
     browser.get(page.resolve().as_uri())
+    # the page's module script runs after the load event; on a busy machine that takes seconds
+    WebDriverWait(browser, 60).until(lambda d: d.execute_script(
+        "return !!(window.desdemonaView && window.desdemonaView.ready)"))
     return browser
 
 
@@ -225,3 +230,87 @@ def test_online_folder_keeps_the_classical_loop_and_its_view(tmp_path, capsys):
     assert main(["view", str(out), "--out", str(tmp_path / "page.html")]) == 0
     assert (tmp_path / "page.html").read_text() == (out / view.VIEW_FILE).read_text()
     assert main(["view", str(tmp_path / "nothing")]) == 2
+
+
+# ---- `view --out` never replaces what it did not write; a batch folder is named as one ----
+
+def _files(folder: Path) -> dict[str, bytes]:
+    return {p.name: p.read_bytes() for p in folder.iterdir()}
+
+
+def test_view_out_never_replaces_a_file_it_did_not_write(tmp_path, capsys):
+    """A user's page, the result's own files (with or without --overwrite), a non-.html file and a page
+    inside a result folder are refused in one line naming the file, and left as they were."""
+    from desdemona.cli import main
+
+    folder = make_result(tmp_path / "run", classical=False)
+    view.write(folder)
+    mine = tmp_path / "mine.html"
+    mine.write_text("<html>my notes</html>")
+    before = _files(folder)
+    for out in (mine, folder / "trajectory.csv", folder / "summary.json", tmp_path / "page.txt",
+                tmp_path / "page", folder / "other.html"):
+        for extra in ([], ["--overwrite"]):
+            assert main(["view", str(folder), "--out", str(out), *extra]) == 2, (out, extra)
+            err = capsys.readouterr().err
+            assert err.count("\n") == 1 and str(out) in err, err
+    assert mine.read_text() == "<html>my notes</html>"
+    assert _files(folder) == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["mine.html", "run"]  # no page.txt, no temporary
+
+
+def test_view_overwrite_replaces_an_earlier_page_of_ours(tmp_path, capsys):
+    from desdemona.cli import main
+
+    folder = make_result(tmp_path / "run", classical=False)
+    page = tmp_path / "page.html"
+    assert main(["view", str(folder), "--out", str(page)]) == 0
+    assert view.MARK in page.read_text()[:1000] and view.is_page(page)
+    assert main(["view", str(folder), "--out", str(page)]) == 2
+    err = capsys.readouterr().err
+    assert "already exists" in err and "--overwrite" in err
+    page.write_text(page.read_text() + "<!-- old -->")
+    assert main(["view", str(folder), "--out", str(page), "--overwrite"]) == 0
+    assert "<!-- old -->" not in page.read_text() and view.is_page(page)
+    # the result's own page: always the tool's to redraw, by default or named
+    (folder / view.VIEW_FILE).write_text("stale")
+    assert main(["view", str(folder)]) == 0 and view.is_page(folder / view.VIEW_FILE)
+    assert main(["view", str(folder), "--out", str(folder / view.VIEW_FILE)]) == 0
+    # a page without the mark (not ours, or written before the mark) is not replaced
+    page.write_text(page.read_text().replace(view.MARK, "<meta name=\"generator\" content=\"someone"))
+    text = page.read_text()
+    assert main(["view", str(folder), "--out", str(page), "--overwrite"]) == 2
+    assert "only a page written by desdemona view" in capsys.readouterr().err
+    assert page.read_text() == text
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["page.html", "run"]
+
+
+def test_page_is_never_half_written(tmp_path, monkeypatch):
+    """The page goes to a temporary file beside it; a failure while writing leaves nothing behind and the
+    earlier page as it was."""
+    folder = make_result(tmp_path / "run", classical=False)
+    page = view.write(folder, tmp_path / "page.html")
+    text = page.read_text()
+
+    def broken(*args, **kwargs):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(view.os, "replace", broken)
+    with pytest.raises(view.ViewError, match="No space left"):
+        view.write(folder, page, overwrite=True)
+    assert page.read_text() == text
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["page.html", "run"]
+
+
+def test_view_and_plot_on_a_batch_folder_name_its_job_folders(tmp_path, capsys):
+    from desdemona.cli import main
+
+    batch = tmp_path / "runs"
+    job = make_result(batch / "cosine--full", classical=False)
+    (batch / "batch.csv").write_text("path,configuration,status,folder\ncosine,full,ok,cosine--full\n")
+    for argv in (["view", str(batch)], ["plot", str(batch)], ["view", str(batch), "--out", str(tmp_path / "p.html")]):
+        assert main(argv) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "is a batch folder" in err and str(job) in err, err
+        assert "Errno" not in err
+    assert not (tmp_path / "p.html").exists()

@@ -47,10 +47,7 @@ def load_results(folders, vestibular: perception.VestibularModel | None = None,
     for folder, label in zip(folders, labels):
         if not Path(folder).is_dir():
             raise report.ReportError(f"{folder}: not a folder")
-        if (Path(folder) / "batch.csv").is_file() and not (Path(folder) / "summary.json").exists():
-            jobs = sorted(str(p) for p in Path(folder).iterdir() if report.is_result_folder(p))
-            raise report.ReportError(f"{folder}: is a batch folder; compare its job folders instead: "
-                                     + (" ".join(jobs) if jobs else "(it holds none)"))
+        report.refuse_batch_folder(folder, "compare")
         try:
             traj, summary = report.load(folder)
             joints = summary["configuration"]["free_joints"]

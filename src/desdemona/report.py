@@ -78,6 +78,16 @@ def is_result_folder(folder: str | Path) -> bool:
         return False
 
 
+def refuse_batch_folder(folder: str | Path, verb: str) -> None:
+    """Raise :class:`ReportError` if ``folder`` is a batch folder (batch.csv, no summary.json): one line
+    naming its job folders, to ``verb`` instead."""
+    folder = Path(folder)
+    if (folder / "batch.csv").is_file() and not (folder / "summary.json").exists():
+        jobs = sorted(str(p) for p in folder.iterdir() if is_result_folder(p))
+        raise ReportError(f"{folder}: is a batch folder; {verb} its job folders instead: "
+                          + (" ".join(jobs) if jobs else "(it holds none)"))
+
+
 def _foreign(folder: Path) -> list[str]:
     """The names in a result folder that a result of ours never holds, sorted."""
     return sorted(p.name for p in folder.iterdir()

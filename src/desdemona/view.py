@@ -27,14 +27,17 @@ from __future__ import annotations
 import html
 import json
 import math
+import os
 import re
 import shutil
+import tempfile
 from importlib import resources
 from pathlib import Path
 
 import numpy as np
 
-from desdemona import metrics, perception
+from desdemona import metrics, perception, report
+from desdemona._version import __version__
 from desdemona.params import JOINT_NAMES
 from desdemona.report import ReportError
 
@@ -45,6 +48,8 @@ MAX_FRAMES = 12_000  # animation samples kept; beyond, every k-th (the plots kee
 PLOT_DIGITS = 6  # significant digits of plotted values (the joint positions keep full precision)
 LIMIT_KINDS = ("position", "velocity", "acceleration", "effort", "power")
 _VENDOR = ("vendor/three.min.js", "vendor/uPlot.iife.min.js", "vendor/uPlot.min.css")
+# The mark in the head of every page of ours: `view --out FILE --overwrite` replaces only a file carrying it.
+MARK = '<meta name="generator" content="desdemona view'
 
 
 class ViewError(ReportError):
@@ -243,7 +248,8 @@ def page(col: dict, summary: dict, classical: dict | None = None) -> str:
     """The self-contained HTML page of a result (see the module's notes)."""
     data = scene_data(col, summary, classical)
     three, uplot, uplot_css = (_asset(name) for name in _VENDOR)
-    parts = {"TITLE": html.escape(f"desdemona: {data['title']}"), "STYLE": uplot_css,
+    parts = {"GENERATOR": html.escape(f"desdemona view {__version__}"),  # first: it is the first in the head
+             "TITLE": html.escape(f"desdemona: {data['title']}"), "STYLE": uplot_css,
              "UPLOT": _script(uplot), "THREE": _script(three), "DATA": _json(data).replace("<", "\\u003c"),
              "VIEW": _script(_asset("view.js"))}
     text = _asset("view.html")
@@ -256,6 +262,7 @@ def page_of_folder(folder: str | Path) -> str:
     """:func:`page` of a result folder (its trajectory.csv, summary.json and, where present,
     classical.csv)."""
     folder = Path(folder)
+    report.refuse_batch_folder(folder, "view")
     try:
         summary = json.loads((folder / "summary.json").read_text())
     except (OSError, ValueError) as exc:
@@ -271,14 +278,81 @@ def page_of_folder(folder: str | Path) -> str:
     return page(col, summary, classical)
 
 
-def write(folder: str | Path, out: str | Path | None = None) -> Path:
-    """Write the view of the result folder ``folder`` to ``out`` (default ``folder/view.html``)."""
-    out = Path(folder) / VIEW_FILE if out is None else Path(out)
-    text = page_of_folder(folder)
+def is_page(path: str | Path) -> bool:
+    """Whether the file ``path`` is a page written by :func:`write` (its head carries :data:`MARK`)."""
     try:
-        out.write_text(text, encoding="utf-8")
+        with open(path, encoding="utf-8", errors="replace") as fh:
+            return MARK in fh.read(4096)
+    except OSError:
+        return False
+
+
+def check_out(folder: str | Path, out: str | Path | None, overwrite: bool = False) -> tuple[Path, str]:
+    """Where :func:`write` may put the page of ``folder`` and how: ``"own"`` (the folder's own
+    view.html, ``out`` None or naming it, always the tool's to replace), ``"new"`` (an .html file outside
+    every result folder, absent) or ``"ours"`` (with ``overwrite``, such a file that is an earlier page
+    of ours, :func:`is_page`). Anything else is a :class:`ViewError`, raised before any work."""
+    own = Path(folder) / VIEW_FILE
+    if out is None or Path(out).resolve() == own.resolve():
+        return own, "own"
+    out = Path(out)
+    parent = out.resolve().parent
+    if out.suffix.lower() != ".html":
+        raise ViewError(f"{out}: --out must name an .html file (the page), e.g. {out.with_suffix('.html').name}")
+    in_result = all((parent / name).exists() for name in ("summary.json", "trajectory.csv"))
+    if in_result or report.is_result_folder(parent):
+        raise ViewError(f"{out}: is inside the result folder {parent}, where view writes only its own "
+                        f"{VIEW_FILE} ('desdemona view {parent}'); choose a file elsewhere")
+    if out.exists() or out.is_symlink():
+        if not overwrite:
+            raise ViewError(f"{out}: already exists; choose another file or add --overwrite")
+        if out.is_symlink() or not out.is_file() or not is_page(out):
+            raise ViewError(f"{out}: --overwrite replaces only a page written by desdemona view, and this is not "
+                            f"one; left as it is: choose another file")
+        return out, "ours"
+    if not parent.is_dir():
+        raise ViewError(f"{out}: the folder {parent} does not exist")
+    return out, "new"
+
+
+def _put(out: Path, text: str, kind: str) -> None:
+    """Write ``text`` to a temporary file beside ``out`` and rename it into place (never half-written):
+    over the folder's own page (``kind`` "own"), over an earlier page of ours only while it still is
+    one ("ours"), else only while ``out`` is still absent ("new")."""
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.absolute().parent)
     except OSError as exc:
         raise ViewError(f"{out}: cannot write: {exc.strerror or exc}") from None
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+            fh.write(text)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes it private (0600); the page is an ordinary file
+        if kind == "own" or (kind == "ours" and is_page(out)):
+            os.replace(tmp, out)
+        elif kind == "new" and not (out.exists() or out.is_symlink()):
+            try:
+                os.link(tmp, out)  # fails if out appeared meanwhile: never replaced
+            except FileExistsError:
+                raise ViewError(f"{out}: appeared while the page was written; left as it is") from None
+            except OSError:  # no hard links on this file system
+                os.replace(tmp, out)
+        else:
+            raise ViewError(f"{out}: changed while the page was written; left as it is: choose another file")
+    except OSError as exc:
+        raise ViewError(f"{out}: cannot write: {exc.strerror or exc}") from None
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+
+
+def write(folder: str | Path, out: str | Path | None = None, overwrite: bool = False) -> Path:
+    """Write the view of the result folder ``folder`` to ``out`` (default ``folder/view.html``, the
+    folder's own page, always replaced); any other ``out`` as :func:`check_out` allows it."""
+    report.refuse_batch_folder(folder, "view")
+    out, kind = check_out(folder, out, overwrite)
+    _put(out, page_of_folder(folder), kind)
     return out
 
 
