@@ -38,12 +38,13 @@ def runway(tmp_path_factory):
 def test_runway_reads_back_still_then_braking(runway):
     path = profiles.load(runway)
     assert path.S_d is not None and path.t[0] == 0.0
-    assert path.t[-1] == pytest.approx(60.0)
+    start = 60.0 - path.t[-1]  # the default start: after the script's on-ground trim at 0.26 s
+    assert 0.2 < start < 0.3
     np.testing.assert_allclose(np.diff(path.t), 0.01, atol=1e-9)  # the default 100 Hz
     still = (path.t > 10) & (path.t < 40)  # standing on the runway, engines spooling
     np.testing.assert_allclose(path.S_d[still, 3:].mean(axis=0), [0.0, 0.0, G], atol=0.1)
     np.testing.assert_allclose(path.S_d[still, :3], 0.0, atol=1e-3)
-    braking = path.t > 59.0
+    braking = path.t > path.t[-1] - 1.0
     assert path.S_d[braking, 4].min() < -2.0  # braking pushes the pilot forward: f_y < 0
 
 
@@ -52,7 +53,8 @@ def test_runway_carries_its_source(runway):
     sources = [line for line in text.splitlines() if line.startswith("# source:")]
     assert len(sources) == 3
     joined = " ".join(sources)
-    for word in ("b737_runway_new", "aircraft 737", "JSBSim 1.", "crop 0-60 s", "100 Hz"):
+    for word in ("b737_runway_new", "aircraft 737", "JSBSim 1.", "crop 0.258333-59.9983 s", "start after the "
+                 "script's trim", "100 Hz"):
         assert word in joined
 
 
@@ -84,6 +86,74 @@ def test_crop_starts_at_zero_and_modulus_form(tmp_path):
     assert path.t[0] == 0.0 and path.t[-1] == pytest.approx(2.0) and len(path.t) == 101
     np.testing.assert_allclose(path.M_d, 1.151 * G, rtol=0.01)
     assert "t,M" in out.read_text().splitlines()[4]
+    assert "crop 10-12 s of sim time (t = 0 here; start as given)" in out.read_text()  # an explicit start is kept
+
+
+def test_runway_default_start_is_settled_on_its_gear(runway):
+    """Before its on-ground trim the 737 drops onto its gear (up to 1.6 g at 0.1-0.3 s), and the sample
+    before JSBSim's first step reads 0 g: the default start is after the trim, 1 g up from t = 0."""
+    path = profiles.load(runway)
+    np.testing.assert_allclose(path.S_d[0, 3:], [0.0, 0.0, G], atol=0.1)
+    assert np.abs(path.S_d[path.t < 1.0, 3:] - [0.0, 0.0, G]).max() < 0.1
+
+
+def test_no_sample_before_the_first_step():
+    flight = jsbsim.fly("b737_runway_new", 0.5)
+    assert flight.t[0] == pytest.approx(1 / 120, rel=1e-3)
+    assert flight.trimmed is not None and not flight.trimmed[0] and flight.trimmed[-1]
+
+
+def test_steady_turn_default_start_is_after_its_trim(tmp_path):
+    """737_cruise_steady_turn flies at 0.65 g until its script trims it at 5.1 s."""
+    out = tmp_path / "turn.csv"
+    assert main(["import", "jsbsim", "737_cruise_steady_turn", "--end", "7", "--out", str(out)]) == 0
+    S = profiles.load(out).S_d
+    assert np.all(S[:, 5] > 1.1 * G)
+    assert "crop 5.11646-" in out.read_text() and "start after the script's trim" in out.read_text()
+
+
+def _flight(t, f, omega):
+    return jsbsim.Flight(Path("x.xml"), "x", "0", t, omega, f, np.zeros((len(t), 2)), np.zeros(len(t), bool))
+
+
+def test_default_start_without_a_trim_is_after_the_settling():
+    """No trim: the first time from which the force and the rates stop jumping for SETTLE_SECONDS."""
+    t = np.arange(1, 600) / 120
+    f = np.tile([0.0, 0.0, -G], (len(t), 1))
+    f[t < 0.3, 2] = -G * (1 + 0.6 * np.sin(40 * t[t < 0.3]))  # dropping onto the gear: jumps of ~0.2 g a step
+    omega = np.zeros((len(t), 3))
+    start, why = jsbsim.default_start(_flight(t, f, omega))
+    assert 0.29 < start < 0.31 and "transient" in why
+    f[:, 2] = -G * (1 + 0.6 * np.sin(40 * t))  # never settled within the run: the first sample
+    assert jsbsim.default_start(_flight(t, f, omega))[0] == t[0]
+    trimmed = _flight(t, f, omega)
+    trimmed.trimmed[240:] = True
+    assert jsbsim.default_start(trimmed) == (t[240], "after the script's trim")
+
+
+def test_ballistic_flight_is_no_still_stretch(tmp_path):
+    """A ball in free fall reads 0 g, still: not the 'kinematic acceleration' mistake of a log; the
+    convention check skips a stretch far from 1 g."""
+    out = tmp_path / "ball.csv"
+    assert main(["import", "jsbsim", "ball", "--end", "5", "--out", str(out)]) == 0
+    np.testing.assert_allclose(profiles.load(out).S_d[:, 3:], 0.0, atol=1e-6)
+
+
+def test_diverged_simulation_is_named(tmp_path, capsys):
+    """cannonball's force turns NaN at 217 s (after a runaway to 3.7e5 g): the simulation diverged."""
+    out = tmp_path / "x.csv"
+    assert main(["import", "jsbsim", "cannonball", "--start", "200", "--end", "230", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "simulation diverged" in err and "t = 217.1" in err and "nan g" not in err
+    assert not out.exists()
+    t = np.arange(5.0)
+    f = np.tile([0.0, 0.0, G], (5, 1))
+    f[3] = np.nan
+    with pytest.raises(profiles.ProfileError, match="diverged.*from t = 3.00 s"):
+        convert.check_no_crash(t, f, "x")
+    f[1] = [0.0, 0.0, 50 * G]  # a crash 2 s before: a crash, the divergence said too
+    with pytest.raises(profiles.ProfileError, match="reaches 50 g at t = 1.00 s.*diverges later"):
+        convert.check_no_crash(t, f, "x")
 
 
 def test_jsbsim_printing_is_silenced(tmp_path, capfd):

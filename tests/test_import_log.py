@@ -9,7 +9,7 @@ import pytest
 from desdemona import profiles
 from desdemona.cli import main
 from desdemona.profiles import convert
-from desdemona.profiles.log import LogFormat, from_log, head_force
+from desdemona.profiles.log import STANDARD_GRAVITY, LogFormat, from_log, head_force
 from desdemona.profiles.path import G, ProfileError
 
 RATE = 200.0  # [Hz] of the synthetic logs
@@ -34,7 +34,7 @@ def motion(still=2.0):
 def write_log(file, t, omega, f, axes, accel_unit, rate_unit, time_unit="s", names=("t", "ax", "ay", "az", "p", "q", "r")):
     """The motion as a log would hold it: in the log's axes (v_log = R^T v_cabin) and units."""
     R = convert.axes_rotation(axes)
-    scale_f = {"g": 1.0 / G, "m/s2": 1.0}[accel_unit]
+    scale_f = {"g": 1.0 / STANDARD_GRAVITY, "m/s2": 1.0}[accel_unit]
     scale_w = {"deg/s": 180.0 / math.pi, "rad/s": 1.0}[rate_unit]
     scale_t = {"s": 1.0, "ms": 1000.0}[time_unit]
     data = np.column_stack([t * scale_t, f @ R * scale_f, omega @ R * scale_w])
@@ -224,3 +224,29 @@ def test_bad_rows_and_time(tmp_path, capsys):
                  str(tmp_path / "x.csv")]) == 2
     assert "does not increase" in capsys.readouterr().err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["log.csv"]
+
+
+def test_milliseconds_declared_as_seconds_are_refused(tmp_path, capsys):
+    """A 100 Hz log with t in ms (0, 10, 20, ...) read as seconds would be a 0.1 Hz path of hours: refused
+    at import, pointing to --time-unit ms, by the CSV reader's rule; declared as ms it imports."""
+    t = np.arange(0.0, 8.0, 0.01)
+    omega, f = np.zeros((len(t), 3)), np.tile([0.0, 0.0, G], (len(t), 1))
+    log = write_log(tmp_path / "log.csv", t, omega, f, ("right", "forward", "up"), "m/s2", "rad/s", "ms")
+    out = tmp_path / "x.csv"
+    argv = ["import", "log", str(log), "--axes", "right,forward,up", "--accel-unit", "m/s2", "--rate-unit", "rad/s",
+            "--out", str(out)]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "looks like milliseconds" in err and "--time-unit ms" in err
+    assert "divide it by 1000" not in err and not out.exists()
+    assert main(argv + ["--time-unit", "ms"]) == 0
+    assert profiles.load(out).duration == pytest.approx(7.99)
+
+
+def test_one_g_reading_converts_with_standard_gravity(tmp_path):
+    """A sensor's g unit is standard gravity, 9.80665 m/s^2 (not the simulator's G = 9.81)."""
+    t = np.arange(0.0, 3.0, 0.01)
+    log = tmp_path / "log.csv"
+    log.write_text("t,ax,ay,az,p,q,r\n" + "".join(f"{float(x)!r},0,0,-1,0,0,0\n" for x in t))
+    path = from_log(log, LogFormat(accel_unit="g"))[0]
+    np.testing.assert_allclose(path.S_d[:, 5], 9.80665, rtol=1e-12)

@@ -34,6 +34,8 @@ DIRECTIONS = {"right": (1.0, 0.0, 0.0), "left": (-1.0, 0.0, 0.0),
 #: Above this specific force [g] a flight has crashed (ground contact, a spin gone numerically wild):
 #: no person or motion simulator takes it, and it is no path to cue.
 CRASH_G = 20.0
+#: A force above CRASH_G this little [s] before it turns NaN is the simulation running away, not a crash.
+DIVERGE_SECONDS = 1.0
 
 # The convention check (DESIGN.md: where the vehicle is still, the felt force is +1 g up).
 STILL_SECONDS = 1.0          # [s] the shortest still stretch the check uses
@@ -108,15 +110,17 @@ def lowpass(X, rate_hz: float, cutoff_hz: float) -> np.ndarray:
     return signal.sosfiltfilt(sos, X, axis=0)
 
 
-def resample(t, X, rate_hz: float) -> tuple[np.ndarray, np.ndarray]:
-    """X (N, k) at uniform times ``t`` [s] resampled to ``rate_hz`` [Hz] from ``t[0]``: low-passed at
-    :data:`CUTOFF_PER_RATE` x ``rate_hz`` first when the new rate is lower (anti-alias), then
-    interpolated linearly (the filtered signal is smooth on the finer grid)."""
+def resample(t, X, rate_hz: float, t0: float | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """X (N, k) at uniform times ``t`` [s] resampled to ``rate_hz`` [Hz] from ``t0`` (None: ``t[0]``;
+    before ``t[0]`` the first value is held): low-passed at :data:`CUTOFF_PER_RATE` x ``rate_hz`` first
+    when the new rate is lower (anti-alias), then interpolated linearly (the filtered signal is smooth on
+    the finer grid)."""
     t = np.asarray(t, dtype=float)
+    t0 = float(t[0]) if t0 is None else float(t0)
     native = 1.0 / float(np.median(np.diff(t)))
     X = lowpass(X, native, CUTOFF_PER_RATE * rate_hz)
-    n = int(np.floor((t[-1] - t[0]) * rate_hz + 1e-6)) + 1
-    grid = t[0] + np.arange(n) / rate_hz
+    n = int(np.floor((t[-1] - t0) * rate_hz + 1e-6)) + 1
+    grid = t0 + np.arange(max(n, 1)) / rate_hz
     return grid, np.column_stack([np.interp(grid, t, X[:, i]) for i in range(X.shape[1])])
 
 
@@ -144,13 +148,26 @@ def crop(t, X, start: float | None, end: float | None, what: str) -> tuple[np.nd
 
 def check_no_crash(t, f_cabin, what: str) -> None:
     """Refuse a motion whose specific force exceeds :data:`CRASH_G` anywhere (``t`` (N,) [s], ``f_cabin``
-    (N, 3) [m/s^2]), naming the time and the value."""
-    n = np.linalg.norm(f_cabin, axis=1) / G
-    if np.any(n > CRASH_G):
-        k = int(np.argmax(n))
+    (N, 3) [m/s^2]), naming the time and the value; a force that turns into not a number (NaN or inf)
+    is named as a simulation that diverged, as is a force above CRASH_G less than
+    :data:`DIVERGE_SECONDS` before it."""
+    with np.errstate(over="ignore", invalid="ignore"):  # a diverged simulation overflows to inf and NaN
+        n = np.linalg.norm(f_cabin, axis=1) / G
+    broken = ~np.isfinite(n)
+    crashed = np.where(broken, False, n > CRASH_G)
+    b = int(np.argmax(broken))
+    k = int(np.argmax(crashed))
+    if np.any(crashed) and (not np.any(broken) or t[k] < t[b] - DIVERGE_SECONDS):
+        later = (f"; the simulation diverges later, its force not a number from t = {t[b]:.2f} s"
+                 if np.any(broken) else "")
         raise ProfileError(f"{what}: the specific force reaches {n[k]:.0f} g at t = {t[k]:.2f} s (above "
-                           f"{CRASH_G:g} g: a crash or ground impact, not a motion to cue); crop it away "
-                           f"with --start/--end or choose another stretch")
+                           f"{CRASH_G:g} g: a crash or ground impact, not a motion to cue{later}); crop it "
+                           f"away with --start/--end or choose another stretch")
+    if np.any(broken):
+        runaway = f" (after {n[k]:.3g} g at t = {t[k]:.2f} s)" if np.any(crashed) else ""
+        raise ProfileError(f"{what}: the simulation diverged: the specific force is not a number ({n[b]}) "
+                           f"from t = {t[b]:.2f} s{runaway}, no motion to cue; crop it away with --end or "
+                           f"choose another stretch")
 
 
 @dataclass(frozen=True)
@@ -163,11 +180,12 @@ class Still:
     f_cabin: np.ndarray
 
 
-def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE) -> Still | None:
+def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=None) -> Still | None:
     """The stillest stretch of at least :data:`STILL_SECONDS` where the rates are near zero
     (|omega| < ``max_rate`` [rad/s]) and the force nearly constant (RMS about its mean below
     :data:`STILL_SPREAD` of its size plus :data:`STILL_SPREAD_ABS`), or None. Uniform ``t`` [s]; the
-    criteria are relative so a log in the wrong unit is still found still (and then diagnosed)."""
+    criteria are relative so a log in the wrong unit is still found still (and then diagnosed).
+    ``usable`` (N,) bool, if given: a stretch holding any sample not usable is not still."""
     t = np.asarray(t, dtype=float)
     step = float(np.median(np.diff(t)))
     w = int(round(STILL_SECONDS / step)) + 1
@@ -183,6 +201,8 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE) -> Still |
     spread = np.sqrt(var)
     size = np.linalg.norm(mean, axis=1)
     still = (windows_rate < max_rate) & (spread < STILL_SPREAD * size + STILL_SPREAD_ABS)
+    if usable is not None:
+        still &= np.lib.stride_tricks.sliding_window_view(np.asarray(usable, dtype=bool), w).all(axis=1)
     if not np.any(still):
         return None
     score = np.where(still, spread / (size + STILL_SPREAD_ABS) + windows_rate / max_rate, np.inf)

@@ -130,14 +130,32 @@ def _check_time_unit(path: Path, t: np.ndarray) -> None:
     """Refuse a time column that spans more than 1000 x MS_DURATION s, or looks like milliseconds: a
     median step of MS_MEDIAN_STEP s or more over at least MS_MIN_ROWS samples (a recording sampled at
     2 Hz or slower), or over more than MS_DURATION s."""
-    duration, step = float(t[-1] - t[0]), float(np.median(np.diff(t)))
-    if duration > 1000 * MS_DURATION:  # even read as milliseconds, longer than any session
+    problem = time_unit_problem(t)
+    if problem == "days":
+        duration = float(t[-1] - t[0])
         raise ProfileError(f"{path}: column 't' spans {duration:.3g} s ({duration / 86400:.3g} days), far longer "
                            f"than a session (minutes): the time column must be in seconds")
+    if problem == "ms":
+        raise ProfileError(f"{path}: column 't' looks like milliseconds: {describe_steps(t)}; a recording is "
+                           f"sampled faster than {1 / MS_MEDIAN_STEP:g} Hz and the time column must be in seconds "
+                           f"(divide it by 1000)")
+
+
+def time_unit_problem(t: np.ndarray) -> str | None:
+    """The rule of :func:`_check_time_unit` for times ``t`` [s] (increasing): ``"days"`` (longer than any
+    session even read as milliseconds), ``"ms"`` (looks like milliseconds read as seconds) or None."""
+    duration, step = float(t[-1] - t[0]), float(np.median(np.diff(t)))
+    if duration > 1000 * MS_DURATION:  # even read as milliseconds, longer than any session
+        return "days"
     if step >= MS_MEDIAN_STEP and (len(t) >= MS_MIN_ROWS or duration > MS_DURATION):
-        raise ProfileError(f"{path}: column 't' looks like milliseconds: {len(t)} samples every {step:g} s "
-                           f"(median), {duration:g} s in all; a recording is sampled faster than "
-                           f"{1 / MS_MEDIAN_STEP:g} Hz and the time column must be in seconds (divide it by 1000)")
+        return "ms"
+    return None
+
+
+def describe_steps(t: np.ndarray) -> str:
+    """``N samples every S s (median), D s in all`` for times ``t`` [s]."""
+    return (f"{len(t)} samples every {float(np.median(np.diff(t))):g} s (median), "
+            f"{float(t[-1] - t[0]):g} s in all")
 
 
 def _check_magnitude(path, lines, values, label, limit, unit):

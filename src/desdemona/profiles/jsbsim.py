@@ -31,6 +31,18 @@ FILTER_MARGIN = 1.0
 FORCE = ("accelerations/n-pilot-x-norm", "accelerations/n-pilot-y-norm", "accelerations/n-pilot-z-norm")
 RATES = ("velocities/p-rad_sec", "velocities/q-rad_sec", "velocities/r-rad_sec")
 ATTITUDE = ("attitude/phi-rad", "attitude/theta-rad")
+#: Set to 1 by JSBSim when a trim (a script's ``simulation/do_simple_trim`` event) has succeeded.
+TRIMMED = "simulation/trim-completed"
+# The default start of a flight without a trim: the end of its start-up transient (the aircraft
+# dropping onto its gear, the model's first steps). Settled from the first sample after which, for
+# SETTLE_SECONDS, the specific force changes by less than SETTLE_JERK and the body rates by less than
+# SETTLE_ALPHA from step to step (a settled JSBSim run stays below 1 m/s^3 and 0.1 rad/s^2; the settling
+# jumps by hundreds of m/s^3); looked for in the first SETTLE_WITHIN s only (later motion is the
+# flight's own), else the first sample.
+SETTLE_SECONDS = 0.5   # [s]
+SETTLE_JERK = 5.0      # [m/s^3]
+SETTLE_ALPHA = 0.5     # [rad/s^2]
+SETTLE_WITHIN = 10.0   # [s]
 #: Still, for the convention check [rad/s]: a simulation has no gyro noise; slower than any turn that
 #: banks the aircraft by more than the check's tolerance.
 STILL_RATE = np.radians(0.2)
@@ -70,9 +82,10 @@ def script_file(script: str | Path) -> Path:
 
 @dataclass(frozen=True)
 class Flight:
-    """A JSBSim run sampled at every step: ``t`` (N,) [s] of sim time, ``omega_body`` (N, 3) [rad/s]
-    (p, q, r), ``f_body`` (N, 3) [m/s^2] at the pilot station, body axes (x forward, y right, z down),
-    ``attitude`` (N, 2) [rad] bank and pitch (phi, theta)."""
+    """A JSBSim run sampled after every step (none before the first: the model has not computed its
+    accelerations yet): ``t`` (N,) [s] of sim time, ``omega_body`` (N, 3) [rad/s] (p, q, r), ``f_body``
+    (N, 3) [m/s^2] at the pilot station, body axes (x forward, y right, z down), ``attitude`` (N, 2)
+    [rad] bank and pitch (phi, theta), ``trimmed`` (N,) bool: a trim has completed (:data:`TRIMMED`)."""
 
     script: Path
     aircraft: str
@@ -81,6 +94,7 @@ class Flight:
     omega_body: np.ndarray
     f_body: np.ndarray
     attitude: np.ndarray
+    trimmed: np.ndarray | None = None
 
 
 @contextlib.contextmanager
@@ -163,11 +177,14 @@ def fly(script: str | Path, end: float | None = None) -> Flight:
                 else:
                     fdm.disable_output()
                     fdm.run_ic()
-                    props = [fdm.get_property_manager().get_node(name) for name in RATES + FORCE + ATTITUDE]
-                    while True:
+                    manager = fdm.get_property_manager()
+                    props = [manager.get_node(name) for name in RATES + FORCE + ATTITUDE]
+                    trimmed = manager.get_node(TRIMMED)  # None if this JSBSim has no such property
+                    while fdm.run():  # sampled after each step: before the first, no accelerations
                         t = fdm.get_sim_time()
-                        rows.append([t, *(node.get_double_value() for node in props)])
-                        if end is not None and t > end or not fdm.run():
+                        rows.append([t, *(node.get_double_value() for node in props),
+                                     trimmed.get_double_value() if trimmed is not None else 0.0])
+                        if end is not None and t > end:
                             break
             except (jsbsim.BaseError, OSError) as exc:  # a trim that fails, a file that does not exist, ...
                 at = f" at t = {rows[-1][0]:.2f} s" if rows else ""
@@ -178,23 +195,49 @@ def fly(script: str | Path, end: float | None = None) -> Flight:
             detail = f"{failure} ({said[-1]})" if said and not rows else failure
             raise ProfileError(f"JSBSim script {path}: cannot be run: {detail}")
     data = np.array(rows)
-    keep = np.concatenate([[True], np.diff(data[:, 0]) > 0])  # a trim may repeat a time
-    data = data[keep]
     if len(data) < 2:
         raise ProfileError(f"JSBSim script {path}: ran no time")
-    return Flight(path, aircraft, jsbsim.__version__, data[:, 0], data[:, 1:4], data[:, 4:7] * G, data[:, 7:9])
+    keep = np.concatenate([np.diff(data[:, 0]) > 0, [True]])  # a trim may repeat a time: its last sample
+    data = data[keep]
+    return Flight(path, aircraft, jsbsim.__version__, data[:, 0], data[:, 1:4], data[:, 4:7] * G, data[:, 7:9],
+                  data[:, 9] > 0.5)
+
+
+def default_start(flight: Flight) -> tuple[float, str]:
+    """Where a flight is settled, the path's start when none is given, and why: the first sample after
+    the script's first trim in the run, else the end of the start-up transient (see
+    :data:`SETTLE_SECONDS`), else the first sample."""
+    t = flight.t
+    if flight.trimmed is not None and np.any(flight.trimmed):
+        return float(t[int(np.argmax(flight.trimmed))]), "after the script's trim"
+    dt = np.diff(t)
+    with np.errstate(over="ignore", invalid="ignore"):  # a diverged flight: not calm (refused later)
+        calm = ((np.linalg.norm(np.diff(flight.f_body, axis=0), axis=1) < SETTLE_JERK * dt)
+                & (np.linalg.norm(np.diff(flight.omega_body, axis=0), axis=1) < SETTLE_ALPHA * dt))
+    w = int(np.ceil(SETTLE_SECONDS / float(np.median(dt))))
+    if len(calm) >= w:
+        settled = np.lib.stride_tricks.sliding_window_view(calm, w).all(axis=1)
+        settled &= t[: len(settled)] <= t[0] + SETTLE_WITHIN
+        if np.any(settled):
+            return float(t[int(np.argmax(settled))]), "settled after the start-up transient"
+    return float(t[0]), "the first step"
 
 
 def from_jsbsim(script: str | Path, start: float | None = None, end: float | None = None,
                 rate: float | None = None, modulus: bool = False) -> tuple[DesiredPath, list[str]]:
-    """The desired path of a JSBSim flight from ``start`` to ``end`` [s of sim time] (None: the script's
-    own), resampled to ``rate`` [Hz] (None: :data:`DEFAULT_RATE`) with an anti-alias filter, its time 0
-    at ``start``; with ``modulus``
-    its ``t,M`` form. Returns the path and its ``source:`` comment lines.
+    """The desired path of a JSBSim flight from ``start`` to ``end`` [s of sim time], resampled to
+    ``rate`` [Hz] (None: :data:`DEFAULT_RATE`) with an anti-alias filter, its time 0 at ``start``; with
+    ``modulus`` its ``t,M`` form. Returns the path and its ``source:`` comment lines.
+
+    ``start`` None: where the flight is settled (:func:`default_start`: after the script's first trim in
+    the run, else after the start-up transient), the filter seeing nothing before it; an explicit
+    ``start`` is kept as given. ``end`` None: the script's own.
 
     Refused (:class:`ProfileError`): an unknown script, a crop outside the flight, a specific force above
-    :data:`.convert.CRASH_G` g anywhere in the crop (raw samples), a still stretch that does not read
-    +1 g up (the convention check; a flight without one is not checked, its axes being JSBSim's own).
+    :data:`.convert.CRASH_G` g or not a number (a diverged simulation) anywhere in the crop (raw samples),
+    a still stretch that does not read +1 g up (the convention check; it looks only at stretches whose
+    |f| is within :data:`.convert.MAGNITUDE_TOLERANCE` of 1 g, a ballistic or weightless stretch being no
+    rest, and JSBSim's units its own; a flight without one is not checked).
     """
     rate = DEFAULT_RATE if rate is None else float(rate)
     if not rate > 0:
@@ -205,12 +248,18 @@ def from_jsbsim(script: str | Path, start: float | None = None, end: float | Non
     f = convert.turn_to_cabin(flight.f_body, convert.R_CABIN_BODY)
     if start is not None and not start < flight.t[-1]:
         raise ProfileError(f"JSBSim script {name}: --start {start:g} s is past its end at {flight.t[-1]:.4g} s")
-    lo = flight.t[0] if start is None else start
+    lo, why = (float(start), "as given") if start is not None else default_start(flight)
+    if start is None and end is not None and not end > lo:
+        raise ProfileError(f"JSBSim script {name}: it is settled from {lo:.4g} s ({why}), after --end {end:g}; "
+                           f"give a later --end or a --start")
     t_raw, f_raw = convert.crop(flight.t, f, lo, end, f"JSBSim script {name}")
     convert.check_no_crash(t_raw + lo, f_raw, f"JSBSim script {name}")
-    t, X = convert.resample(*convert.uniform_grid(flight.t, np.column_stack([omega, f])), rate)
+    use = slice(None) if start is not None else flight.t >= lo - 1e-9  # the default: no transient filtered in
+    t, X = convert.resample(*convert.uniform_grid(flight.t[use], np.column_stack([omega, f])[use]), rate, lo)
     t, X = convert.crop(t, X, lo, end, f"JSBSim script {name}")
-    still = convert.find_still(t, X[:, :3], X[:, 3:], STILL_RATE)
+    g_ratio = np.linalg.norm(X[:, 3:], axis=1) / G
+    near_1g = (g_ratio >= convert.MAGNITUDE_TOLERANCE[0]) & (g_ratio <= convert.MAGNITUDE_TOLERANCE[1])
+    still = convert.find_still(t, X[:, :3], X[:, 3:], STILL_RATE, usable=near_1g)
     if still is not None:  # the accelerometer agrees with the attitude (a check of the axes turn)
         during = (flight.t >= lo + still.t0) & (flight.t <= lo + still.t1)
         phi, theta = flight.attitude[during].mean(axis=0)
@@ -221,7 +270,7 @@ def from_jsbsim(script: str | Path, start: float | None = None, end: float | Non
     comments = [f"source: JSBSim {flight.version} script {flight.script.name} ({'shipped with JSBSim' if _shipped(flight.script) else 'a script file'}), aircraft {flight.aircraft}",
                 "source: pilot station specific force accelerations/n-pilot-{x,y,z}-norm and body rates "
                 "velocities/{p,q,r}-rad_sec, body (forward,right,down) -> cabin (right,forward,up)",
-                f"source: crop {span} of sim time (t = 0 here), "
+                f"source: crop {span} of sim time (t = 0 here; start {why}), "
                 f"{convert.filter_note(1 / float(np.median(np.diff(flight.t))), rate)}"
                 + ("; modulus |f| only" if modulus else "")]
     return path, comments

@@ -20,10 +20,13 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona.profiles import convert
-from desdemona.profiles.path import G, DesiredPath, ProfileError
+from desdemona.profiles import convert, csvfile
+from desdemona.profiles.path import DesiredPath, ProfileError
 
-ACCEL_UNITS = {"g": G, "m/s2": 1.0, "m/s^2": 1.0}
+#: Standard gravity [m/s^2], what a sensor's "g" unit means (ISO 80000-3); the simulator's own gravity
+#: (:data:`.path.G`, 9.81) stays what the paths and the convention check use.
+STANDARD_GRAVITY = 9.80665
+ACCEL_UNITS = {"g": STANDARD_GRAVITY, "m/s2": 1.0, "m/s^2": 1.0}
 RATE_UNITS = {"deg/s": math.pi / 180.0, "rad/s": 1.0}
 TIME_UNITS = {"s": 1.0, "ms": 1e-3}
 #: The written path's rate when none is given: the log's own, at most this [Hz].
@@ -119,6 +122,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
         k = int(np.argmax(steps <= 0))
         raise ProfileError(f"{file}: column {fmt.time!r}: time {t[k + 1]:g} s at data row {k + 2} does not "
                            f"increase (previous {t[k]:g} s)")
+    _check_time_unit(file, fmt, t)
     R = convert.axes_rotation(fmt.axes)
     f = convert.turn_to_cabin(np.column_stack([data[c] for c in fmt.accel]) * ACCEL_UNITS[fmt.accel_unit], R)
     omega = convert.turn_to_cabin(np.column_stack([data[c] for c in fmt.rates]) * RATE_UNITS[fmt.rate_unit], R)
@@ -155,6 +159,25 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
                 f"convention check {'passed' if check else 'skipped (--no-check)'}"
                 + ("; modulus |f| only" if modulus else "")]
     return path, comments
+
+
+def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray) -> None:
+    """Refuse a time column in a unit 1000 times smaller than declared (milliseconds declared as seconds):
+    the CSV reader's rule (:func:`.csvfile.time_unit_problem`), on the times in seconds ``t``."""
+    problem = csvfile.time_unit_problem(t)
+    if problem is None:
+        return
+    where = f"{file}: column {fmt.time!r} [{fmt.time_unit}]"
+    if problem == "days":
+        duration = float(t[-1] - t[0])
+        raise ProfileError(f"{where} spans {duration:.3g} s ({duration / 86400:.3g} days), far longer than a "
+                           f"session (minutes): wrong time column or --time-unit?")
+    if fmt.time_unit == "s":
+        raise ProfileError(f"{where} looks like milliseconds: {csvfile.describe_steps(t)}; a recording is sampled "
+                           f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: declare --time-unit ms")
+    raise ProfileError(f"{where}: {csvfile.describe_steps(t)} read as milliseconds; a recording is sampled "
+                       f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: is the column in microseconds? "
+                       f"Convert it to s or ms")
 
 
 def head_force(omega, f_sensor, r, rate_hz: float) -> np.ndarray:
