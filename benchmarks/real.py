@@ -60,11 +60,12 @@ MODES = ("offline", "hold", "perfect")
 FORCE = ("fx", "fy", "fz")
 
 
-def corpus_cases(folder: Path) -> list[dict]:
+def corpus_cases(folder: Path, build: bool = True) -> list[dict]:
     """The corpus index: one entry per file (name, file, form "six" or "modulus", duration_s, source),
-    the corpus built first where it is missing or made from another definition (:func:`corpus.definition`)."""
+    the corpus built first (``build``) where it is missing or made from another definition
+    (:func:`corpus.definition`)."""
     index = folder / "index.json"
-    if not index.exists() or json.loads(index.read_text()).get("definition") != corpus.definition():
+    if build and (not index.exists() or json.loads(index.read_text()).get("definition") != corpus.definition()):
         subprocess.run([sys.executable, str(HERE / "corpus.py"), "--out", str(folder)], check=True)
     return json.loads(index.read_text())["cases"]
 
@@ -194,7 +195,8 @@ def main(argv=None) -> int:
     parser.add_argument("--no-docs", action="store_true", help="print the table, leave docs/benchmarks.md")
     args = parser.parse_args(argv)
 
-    cases = [c for c in corpus_cases(args.corpus) if args.cases is None or c["name"] in args.cases]
+    cases = [c for c in corpus_cases(args.corpus, build=not args.table_only)
+             if args.cases is None or c["name"] in args.cases]
     for case in cases:
         case["file"] = str((args.corpus / case["file"]).resolve())
     cases.sort(key=lambda c: c["duration_s"])  # the short cases' rows first: a long run shows them early

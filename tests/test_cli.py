@@ -92,3 +92,43 @@ def test_bad_session_options_exit_2(tmp_path, capsys, args, fragment):
     assert main(["optimize", "cosine", *QUICK, *args, "--out", str(out)]) == 2
     assert fragment in capsys.readouterr().err
     assert not out.exists()
+
+
+# ---- import: --out is required (jsbsim: or --list); the summary line in words ----
+
+def test_import_help_says_out_is_required(capsys):
+    assert main(["import", "log", "--help"]) == 0
+    usage = capsys.readouterr().out.split("\n\n")[0]
+    assert " --out PATH.csv" in " ".join(usage.split()) and "[--out" not in usage
+    assert main(["import", "jsbsim", "--help"]) == 0
+    assert "(--list | --out PATH.csv)" in capsys.readouterr().out
+    assert main(["import", "log", "imu.csv", "--accel-unit", "g", "--rate-unit", "deg/s"]) == 2
+    assert "required: --out" in capsys.readouterr().err
+    assert main(["import", "jsbsim", "b737_runway_new"]) == 2
+    assert "--list --out is required" in capsys.readouterr().err
+
+
+def test_import_line_says_six_channels_or_modulus(tmp_path, capsys):
+    """A 3 s log at rest (forward, right, down axes: the force reads -1 g on z)."""
+    log = tmp_path / "imu.csv"
+    t = np.arange(301) / 100
+    rows = np.column_stack([t, 0 * t, 0 * t, -1 + 0 * t, 0 * t, 0 * t, 0 * t])
+    np.savetxt(log, rows, delimiter=",", header="t,ax,ay,az,p,q,r", comments="", fmt="%.6g")
+    argv = ["import", "log", str(log), "--accel-unit", "g", "--rate-unit", "deg/s", "--out"]
+    assert main([*argv, str(tmp_path / "six.csv")]) == 0
+    line = capsys.readouterr().out
+    assert "3 s, 301 samples, six channels, peak |f| 1.00 g" in line and ", S," not in line
+    assert main([*argv, str(tmp_path / "m.csv"), "--modulus"]) == 0
+    assert "samples, modulus (t,M), peak" in capsys.readouterr().out
+
+
+def test_headline_prints_no_negative_zero_lag():
+    from dataclasses import replace
+
+    from desdemona import metrics
+
+    t = np.arange(201) * 0.01
+    S = np.column_stack([np.sin(t + k) for k in range(6)])
+    m = metrics.of_arrays(t, S, S + 0.01 * np.cos(3 * t)[:, None], np.zeros((201, 1)), np.zeros((201, 1)), ["yaw"])
+    assert "lag 0.00 s" in replace(m, lag_s=np.full(6, -0.001)).headline()
+    assert "lag -0.01 s" in replace(m, lag_s=np.full(6, -0.01)).headline()

@@ -241,7 +241,11 @@ def _parser() -> argparse.ArgumentParser:
                     "result's classical loop as a second, faded machine). Play, pause, scrub, speed "
                     "0.1x to 4x, orbit the camera (drag, wheel) or ride inside the cabin.")
     show.add_argument("folder", metavar="RESULT", help="a result folder (of optimize, online or batch)")
-    show.add_argument("--out", metavar="FILE.html", default=None, help="where to write it (default: RESULT/view.html)")
+    show.add_argument("--out", metavar="FILE.html", default=None,
+                      help="where to write it: a new .html file outside any result folder (default: "
+                           "RESULT/view.html, the result's own page, replaced)")
+    show.add_argument("--overwrite", action="store_true",
+                      help="replace FILE.html if it is an earlier page of 'desdemona view' (never another file)")
     show.set_defaults(run=_run_view)
 
     cmp = sub.add_parser(
@@ -276,13 +280,16 @@ def _add_import_parser(sub) -> None:
         description="Run a JSBSim script (a shipped one by name, e.g. b737_runway_new, or a script file) as "
                     "fast as it computes and write what the pilot feels: the pilot station's specific force "
                     "and the body rates, turned into the cabin frame. Needs the jsbsim package: pip install "
-                    "'desdemona[jsbsim]'. A flight above 20 g (a crash) is refused.")
+                    "'desdemona[jsbsim]'. A flight above 20 g (a crash) or diverged (NaN) is refused. Without "
+                    "--start the path starts where the flight is settled: after the script's first trim, "
+                    "else after its start-up transient.")
     js.add_argument("script", nargs="?", metavar="SCRIPT", help="shipped script name or script file (.xml)")
-    js.add_argument("--list", action="store_true", help="list the shipped scripts and stop")
+    out_or_list = js.add_mutually_exclusive_group(required=True)  # --out, unless only --list
+    out_or_list.add_argument("--list", action="store_true", help="list the shipped scripts and stop")
+    _add_import_options(js, "sim time", out_or_list)  # --out right after --list: usage (--list | --out ...)
     js.add_argument("--rate", type=float, default=None, metavar="HZ",
                     help="samples per second of the path, through an anti-alias filter (default: 100; "
                          "JSBSim steps at 120)")
-    _add_import_options(js, "sim time")
     js.set_defaults(run=_run_import_jsbsim)
     lg = kinds.add_parser(
         "log", help="a logged motion (IMU or simulator output, CSV)",
@@ -312,8 +319,11 @@ def _add_import_parser(sub) -> None:
     lg.set_defaults(run=_run_import_log)
 
 
-def _add_import_options(parser: argparse.ArgumentParser, clock: str) -> None:
-    parser.add_argument("--out", metavar="PATH.csv", help="the desired path CSV to write")
+def _add_import_options(parser: argparse.ArgumentParser, clock: str, out_group=None) -> None:
+    """The options of every import; --out required, or in ``out_group`` (required: it or another)."""
+    (out_group or parser).add_argument("--out", metavar="PATH.csv", required=out_group is None,
+                                       help="the desired path CSV to write (required"
+                                            + (")" if out_group is None else " unless --list)"))
     parser.add_argument("--start", type=float, default=None, metavar="SECONDS",
                         help=f"crop from here [s of {clock}]; it becomes t = 0 (default: the start)")
     parser.add_argument("--end", type=float, default=None, metavar="SECONDS",
@@ -689,8 +699,8 @@ def _run_import_jsbsim(args) -> int:
     if args.list:
         print("\n".join(jsbsim.shipped_scripts()))
         return 0
-    if args.script is None or args.out is None:
-        raise UserError("import jsbsim needs SCRIPT and --out PATH.csv (or --list)")
+    if args.script is None:
+        raise UserError("import jsbsim needs SCRIPT: a shipped script's name (see --list) or a script file")
     _check_import_out(args.out, args.overwrite)
     path, comments = jsbsim.from_jsbsim(args.script, args.start, args.end, args.rate, args.modulus)
     _say_imported(convert.write_path(args.out, path, comments, args.overwrite), path)
@@ -700,8 +710,6 @@ def _run_import_jsbsim(args) -> int:
 def _run_import_log(args) -> int:
     from desdemona.profiles import convert, log
 
-    if args.out is None:
-        raise UserError("import log needs --out PATH.csv")
     _check_import_out(args.out, args.overwrite)
     try:
         lever_arm = tuple(float(x) for x in args.lever_arm.split(","))
@@ -723,13 +731,15 @@ def _check_import_out(out: str, overwrite: bool) -> None:
 
 def _say_imported(out: Path, path: profiles.DesiredPath) -> None:
     peak = float(np.max(path.M_d)) / profiles.G
-    print(f"{out}: {path.duration:.6g} s, {len(path.t)} samples, {'t,M' if path.S_d is None else 'S'}, "
+    print(f"{out}: {path.duration:.6g} s, {len(path.t)} samples, "
+          f"{'modulus (t,M)' if path.S_d is None else 'six channels'}, "
           f"peak |f| {peak:.2f} g")
 
 
 def _run_plot(args) -> int:
     from desdemona import figures, report, view
 
+    report.refuse_batch_folder(args.folder, "plot")
     traj, summary = report.load(args.folder)
     try:
         drawn = figures.draw_result(traj, summary, args.folder)
@@ -746,7 +756,7 @@ def _run_plot(args) -> int:
 def _run_view(args) -> int:
     from desdemona import view
 
-    print(view.write(args.folder, args.out))
+    print(view.write(args.folder, args.out, args.overwrite))
     return 0
 
 

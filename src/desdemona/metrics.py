@@ -419,7 +419,7 @@ class Metrics:
             i = int(np.argmax(self.rms))
             parts.append(f"worst RMS {self.rms[i]:.3g} {CHANNEL_UNITS[i]} ({CHANNELS[i]})")
             if np.isfinite(self.correlation[i]):
-                parts.append(f"correlation {self.correlation[i]:.2f}, lag {self.lag_s[i]:.2f} s ({CHANNELS[i]})")
+                parts.append(f"correlation {self.correlation[i]:.2f}, lag {self.lag_s[i]:z.2f} s ({CHANNELS[i]})")
             i = int(np.argmax(self.above_threshold_pct))
             parts.append(f"felt above threshold {self.above_threshold_pct[i]:.0f}% of the time ({CHANNELS[i]})")
             rotation = self.peak_false_cue[:3]
@@ -429,7 +429,7 @@ class Metrics:
         elif self.modulus_rms is not None:
             parts.append(f"RMS(M - M_d) {self.modulus_rms:.3g} m/s^2")
             if self.modulus_correlation is not None and np.isfinite(self.modulus_correlation):
-                parts.append(f"correlation {self.modulus_correlation:.2f}, lag {self.modulus_lag_s:.2f} s")
+                parts.append(f"correlation {self.modulus_correlation:.2f}, lag {self.modulus_lag_s:z.2f} s")
             i = int(np.argmax(self.rotation_peak))
             parts.append(f"peak felt rotation {math.degrees(self.rotation_peak[i]):.3g} deg/s ({CHANNELS[i]})")
         if np.isfinite(self.direction_rms):
