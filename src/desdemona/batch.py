@@ -94,23 +94,14 @@ def check_out(out_dir: str | Path, overwrite: bool = False) -> None:
     """Raise :class:`~desdemona.report.ReportError` unless the batch may write into ``out_dir``: a
     folder that does not exist yet or is empty, or with ``overwrite`` an earlier batch folder of ours
     (holding only its ``batch.csv`` and result folders of desdemona), whose files it replaces."""
-    out = Path(out_dir)
-    if not out.exists() and not out.is_symlink():
-        return
-    if out.is_symlink() or not out.is_dir():
-        raise report.ReportError(f"{out}: is not a folder (a file or a link); --out names the batch's folder")
-    if not os.access(out, os.W_OK | os.X_OK):
-        raise report.ReportError(f"{out}: is not a writable folder")
-    items = sorted(out.iterdir())
-    if not items:
-        return
-    if not overwrite:
-        raise report.ReportError(f"{out}: already exists; choose another folder or add --overwrite")
-    foreign = [p.name for p in items if not (p.name == "batch.csv" and _is_table(p))
-               and not (p.is_dir() and not p.is_symlink() and report.is_result_folder(p))]
-    if foreign:
-        raise report.ReportError(f"{out}: --overwrite replaces only an earlier batch folder of desdemona, and this "
-                                 f"one holds other files too ({', '.join(foreign[:3])}); move them first")
+    report.check_out_folder(out_dir, overwrite, _ours, "batch folder")
+
+
+def _ours(path: Path) -> bool:
+    """Whether ``path`` in a batch folder is something a batch wrote: its table or a job's result folder."""
+    if path.name == "batch.csv":
+        return _is_table(path)
+    return path.is_dir() and not path.is_symlink() and report.is_result_folder(path)
 
 
 def _is_table(path: Path) -> bool:

@@ -110,22 +110,14 @@ def check_out(out_dir: str | Path, overwrite: bool = False) -> None:
     """Raise :class:`~desdemona.report.ReportError` unless the comparison may be written into
     ``out_dir``: a folder that does not exist yet or is empty, or with ``overwrite`` an earlier
     comparison of ours (only ``compare.csv`` and ``compare_*.png`` inside), whose files it replaces."""
-    out = Path(out_dir)
-    if not out.exists() and not out.is_symlink():
-        return
-    if out.is_symlink() or not out.is_dir():
-        raise report.ReportError(f"{out}: is not a folder (a file or a link); --out names a folder")
-    items = sorted(out.iterdir())
-    if not items:
-        return
-    if not overwrite:
-        raise report.ReportError(f"{out}: already exists; choose another folder or add --overwrite")
-    foreign = [p.name for p in items if not (p.is_file() and not p.is_symlink() and (
-        (p.name == "compare.csv" and _is_table(p)) or (p.name.startswith("compare_") and p.suffix == ".png")))]
-    if foreign:
-        raise report.ReportError(f"{out}: --overwrite replaces only an earlier comparison of desdemona "
-                                 f"(compare.csv and its figures), and this folder holds other files too "
-                                 f"({', '.join(foreign[:3])}); move them first")
+    report.check_out_folder(out_dir, overwrite, _ours, "comparison")
+
+
+def _ours(path: Path) -> bool:
+    """Whether ``path`` in a comparison's folder is something ``compare`` wrote: its table or a figure."""
+    if not path.is_file() or path.is_symlink():
+        return False
+    return (path.name == "compare.csv" and _is_table(path)) or (path.name.startswith("compare_") and path.suffix == ".png")
 
 
 def _is_table(path: Path) -> bool:

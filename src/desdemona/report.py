@@ -70,6 +70,29 @@ def check_replaceable(out_dir: str | Path, protect=()) -> None:
         raise ReportError(refuse + f"one holds other files too ({', '.join(others[:3])}); move them first")
 
 
+def check_out_folder(out_dir: str | Path, overwrite: bool, ours, what: str) -> None:
+    """Raise :class:`ReportError` unless a command may write its files into the folder ``out_dir``
+    (``batch``, ``compare``): one that does not exist yet or is empty, or with ``overwrite`` one that
+    holds only what ``ours(path)`` recognises as written by an earlier run of the command, whose files
+    it then replaces. what : the folder's kind in the messages ("batch folder", "comparison")."""
+    out = Path(out_dir)
+    if not out.exists() and not out.is_symlink():
+        return
+    if out.is_symlink() or not out.is_dir():
+        raise ReportError(f"{out}: is not a folder (a file or a link); --out names the {what}'s folder")
+    if not os.access(out, os.W_OK | os.X_OK):
+        raise ReportError(f"{out}: is not a writable folder")
+    items = sorted(out.iterdir())
+    if not items:
+        return
+    if not overwrite:
+        raise ReportError(f"{out}: already exists; choose another folder or add --overwrite")
+    foreign = [p.name for p in items if not ours(p)]
+    if foreign:
+        raise ReportError(f"{out}: --overwrite replaces only an earlier {what} of desdemona, and this folder "
+                          f"holds files it did not write ({', '.join(foreign[:3])}); move them first")
+
+
 def is_result_folder(folder: str | Path) -> bool:
     """Whether ``folder`` carries the mark of a result folder of ours (its summary.json's format)."""
     try:
