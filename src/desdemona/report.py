@@ -287,7 +287,9 @@ def write_folder(traj: Trajectory, summary: dict, config, out_dir: str | Path, o
 
     out = Path(out_dir)
     if out.exists() and not overwrite:
-        raise ReportError(f"{out}: already exists; choose another folder or allow overwriting")
+        raise ReportError(f"{out}: already exists (it appeared while this run worked, or was not checked); "
+                          f"left as it is, nothing written: choose another folder, or --overwrite for an "
+                          f"earlier result of desdemona")
     check_replaceable(out, protect)
     summary = {"format": RESULT_FORMAT, **summary}
     parent = out.resolve().parent
