@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from desdemona import kinematics, view
+from desdemona import kinematics, report, view
 from desdemona.params import JOINT_NAMES, default_params
 
 CHANNELS = ("wx", "wy", "wz", "fx", "fy", "fz")
@@ -90,17 +90,17 @@ def test_page_is_self_contained_and_small(tmp_path):
 
 def test_joint_data_keep_the_precision_of_the_trajectory(result):
     data = _data(view.page_of_folder(result))
-    cols = view.read_table(result / "trajectory.csv")
+    cols = report.read_table(result / "trajectory.csv")
     assert data["motion"]["t"] == cols["t"].tolist()
     for j in JOINT_NAMES:
         assert data["motion"]["q"][j] == cols[f"q_{j}"].tolist()
-    assert data["classical"]["motion"]["q"]["yaw"] == view.read_table(result / view.CLASSICAL_FILE)["q_yaw"].tolist()
+    assert data["classical"]["motion"]["q"]["yaw"] == report.read_table(result / view.CLASSICAL_FILE)["q_yaw"].tolist()
 
 
 def test_a_long_result_thins_the_animation_not_the_plots(result, monkeypatch):
     monkeypatch.setattr(view, "MAX_FRAMES", 50)
     data = _data(view.page_of_folder(result))
-    cols = view.read_table(result / "trajectory.csv")
+    cols = report.read_table(result / "trajectory.csv")
     t = data["motion"]["t"]
     assert len(t) <= 51 and t[0] == cols["t"][0] and t[-1] == cols["t"][-1]
     k = cols["t"].tolist().index(t[1])
@@ -158,8 +158,8 @@ def test_page_loads_without_console_error(loaded):
 
 
 def test_pose_at_the_cursor_is_the_trajectory(loaded, result):
-    cols = view.read_table(result / "trajectory.csv")
-    classical = view.read_table(result / view.CLASSICAL_FILE)
+    cols = report.read_table(result / "trajectory.csv")
+    classical = report.read_table(result / view.CLASSICAL_FILE)
     for k in (0, 77, len(cols["t"]) - 1):
         t = float(cols["t"][k])
         pose = loaded.execute_script("return window.desdemonaView.seek(arguments[0])", t)
@@ -220,8 +220,8 @@ def test_online_folder_keeps_the_classical_loop_and_its_view(tmp_path, capsys):
     assert main(["online", "dfs-catapult", "--config", "dfs-yaw", "--horizon", "1", "--step", "0.1", "--replan",
                  "0.4", "--delay", "--out", str(out)]) in (0, 4)
     summary = json.loads((out / "summary.json").read_text())
-    classical = view.read_table(out / view.CLASSICAL_FILE)
-    own = view.read_table(out / "trajectory.csv")
+    classical = report.read_table(out / view.CLASSICAL_FILE)
+    own = report.read_table(out / "trajectory.csv")
     assert np.array_equal(classical["t"], own["t"])
     rms = np.sqrt(np.mean((classical["M"] - classical["M_d"]) ** 2))
     assert rms == pytest.approx(summary["metrics"]["rms_modulus_classical_loop"], rel=0.02)

@@ -368,22 +368,43 @@ def _has(value, keys) -> bool:
     return True
 
 
-def _read_table(file: Path) -> dict[str, np.ndarray]:
-    """The columns by name of a file written as trajectory.csv is (also by earlier versions, with the
-    names in a comment)."""
-    with open(file) as fh:
-        lines = fh.read().splitlines()
-    rows = [line for line in lines if not line.startswith("#")]
-    if rows and rows[0].startswith("t,"):
-        names, rows = rows[0].split(","), rows[1:]
-    else:  # written by earlier versions: the column names in a comment
-        names = next(line.lstrip("# ") for line in lines if line.lstrip("# ").startswith("t,")).split(",")
-    table = np.loadtxt(rows, delimiter=",", ndmin=2)
+def read_table(file: str | Path) -> dict[str, np.ndarray]:
+    """The columns by name of a file written as trajectory.csv is (``classical.csv`` too; also by
+    earlier versions, with the names in a comment); :class:`ReportError` naming the file if it cannot
+    be read or its rows do not match its names."""
+    file = Path(file)
+    try:
+        with open(file) as fh:
+            lines = fh.read().splitlines()
+        rows = [line for line in lines if line and not line.startswith("#")]
+        if rows and rows[0].startswith("t,"):
+            names, rows = rows[0].split(","), rows[1:]
+        else:  # written by earlier versions: the column names in a comment
+            names = next(line.lstrip("# ") for line in lines if line.lstrip("# ").startswith("t,")).split(",")
+        table = np.loadtxt(rows, delimiter=",", ndmin=2)
+    except (OSError, ValueError, StopIteration) as exc:
+        raise ReportError(f"{file}: not a readable table: {exc}") from None
+    if table.shape[1] != len(names):
+        raise ReportError(f"{file}: {table.shape[1]} values per row under {len(names)} column names")
     return {n: table[:, i] for i, n in enumerate(names)}
 
 
+def read_summary(out_dir: str | Path) -> dict:
+    """The summary.json of a result folder, with every key that reading it back needs
+    (:data:`SUMMARY_KEYS`); :class:`ReportError` naming what is missing."""
+    out = Path(out_dir)
+    try:
+        summary = json.loads((out / "summary.json").read_text())
+    except (OSError, ValueError) as exc:
+        raise ReportError(f"{out}: not a readable result folder: {exc}") from None
+    missing = next((".".join(keys) for keys in SUMMARY_KEYS if not _has(summary, keys)), None)
+    if missing is not None:
+        raise ReportError(f"{out}: not a complete result folder: its summary.json has no {missing!r}")
+    return summary
+
+
 def _trajectory(col: dict[str, np.ndarray], joints) -> Trajectory:
-    """The :class:`Trajectory` of the columns of :func:`_read_table` (free joints ``joints``)."""
+    """The :class:`Trajectory` of the columns of :func:`read_table` (free joints ``joints``)."""
     def block(prefix):
         return np.column_stack([col[f"{prefix}_{j}"] for j in joints])
 
@@ -399,14 +420,8 @@ def _trajectory(col: dict[str, np.ndarray], joints) -> Trajectory:
 def load(out_dir: str | Path) -> tuple[Trajectory, dict]:
     """Read a result folder back: its trajectory and summary."""
     out = Path(out_dir)
-    try:
-        summary = json.loads((out / "summary.json").read_text())
-        col = _read_table(out / "trajectory.csv")
-    except (OSError, ValueError, StopIteration) as exc:
-        raise ReportError(f"{out}: not a readable result folder: {exc}") from None
-    missing = next((".".join(keys) for keys in SUMMARY_KEYS if not _has(summary, keys)), None)
-    if missing is not None:
-        raise ReportError(f"{out}: not a complete result folder: its summary.json has no {missing!r}")
+    summary = read_summary(out)
+    col = read_table(out / "trajectory.csv")
     joints = summary["configuration"]["free_joints"]
     needed = ["t", "M", "M_d"] + [f"{k}_{j}" for k in ("q", "qd", "qdd", "tau", "power") for j in joints]
     absent = [n for n in needed if n not in col]
@@ -423,13 +438,13 @@ def redraw_online(traj: Trajectory, summary: dict, out_dir: str | Path) -> list[
         return []
     out = Path(out_dir)
     joints = summary["configuration"]["free_joints"]
+    classical = None
+    if (out / "classical.csv").exists():
+        classical = _trajectory(read_table(out / "classical.csv"), joints)
     try:
-        classical = None
-        if (out / "classical.csv").exists():
-            classical = _trajectory(_read_table(out / "classical.csv"), joints)
         with open(out / "cycles.csv", newline="") as fh:
             times = np.array([float(row["compute_time_s"]) for row in csv.DictReader(fh)])
-    except (OSError, ValueError, StopIteration, KeyError) as exc:
+    except (OSError, ValueError, KeyError) as exc:
         raise ReportError(f"{out}: not a readable on-line result folder: {exc}") from None
     limits = summary["parameters"]["joints"]
     return figures.draw_online_run(

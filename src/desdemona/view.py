@@ -56,20 +56,6 @@ class ViewError(ReportError):
     """The result folder cannot be shown; the message says which file and why (the command exits 2)."""
 
 
-def read_table(path: str | Path) -> dict[str, np.ndarray]:
-    """Columns of a trajectory.csv-like file: ``#`` comment lines, a header line, numeric rows."""
-    path = Path(path)
-    try:
-        lines = [line for line in path.read_text().splitlines() if line and not line.startswith("#")]
-        names = lines[0].split(",")
-        table = np.loadtxt(lines[1:], delimiter=",", ndmin=2)
-    except (OSError, IndexError, ValueError) as exc:
-        raise ViewError(f"{path}: not a readable trajectory: {exc}") from None
-    if table.shape[1] != len(names):
-        raise ViewError(f"{path}: {table.shape[1]} values per row under {len(names)} column names")
-    return {name: table[:, i] for i, name in enumerate(names)}
-
-
 def _numbers(values, digits: int | None = None) -> str:
     """A JSON array of floats: shortest round-trip text (``digits`` None) or ``digits`` significant
     digits; NaN and infinities as null."""
@@ -206,7 +192,7 @@ def _plots(col: dict, summary: dict, joints, baseline: bool = False) -> dict:
 def scene_data(col: dict, summary: dict, classical: dict | None = None) -> dict:
     """The page's data: the machine's sizes, the motion to animate and the series to plot.
 
-    col, classical : columns of trajectory.csv and of the classical loop's (:func:`read_table`);
+    col, classical : columns of trajectory.csv and of the classical loop's (:func:`desdemona.report.read_table`);
     summary : the result's summary.json."""
     missing = [n for n in ["t", *(f"q_{j}" for j in JOINT_NAMES)] if n not in col]
     if missing:
@@ -264,17 +250,11 @@ def page_of_folder(folder: str | Path) -> str:
     folder = Path(folder)
     report.refuse_batch_folder(folder, "view")
     try:
-        summary = json.loads((folder / "summary.json").read_text())
-    except (OSError, ValueError) as exc:
-        raise ViewError(f"{folder}: not a result folder: {exc}") from None
-    for keys in (("configuration", "free_joints"), ("parameters", "joints")):
-        value = summary
-        for key in keys:
-            if not isinstance(value, dict) or key not in value:
-                raise ViewError(f"{folder}: its summary.json has no {'.'.join(keys)!r}")
-            value = value[key]
-    col = read_table(folder / "trajectory.csv")
-    classical = read_table(folder / CLASSICAL_FILE) if (folder / CLASSICAL_FILE).exists() else None
+        summary = report.read_summary(folder)
+        col = report.read_table(folder / "trajectory.csv")
+        classical = report.read_table(folder / CLASSICAL_FILE) if (folder / CLASSICAL_FILE).exists() else None
+    except ReportError as exc:
+        raise ViewError(str(exc)) from None
     return page(col, summary, classical)
 
 
