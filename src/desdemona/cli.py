@@ -673,18 +673,9 @@ def _run_profiles(args) -> int:
     if args.name is not None:
         if args.name not in profiles.PROFILES:
             raise UserError(f"unknown built-in path {args.name!r}; one of: {', '.join(profiles.PROFILES)}")
-        target = Path(args.csv)
-        if target.is_dir():
-            raise UserError(f"{target}: is a folder; --csv names the file to write")
-        if target.exists() and not args.overwrite:
-            raise UserError(f"{target}: already exists; choose another name or add --overwrite")
-        if not target.absolute().parent.is_dir():
-            raise UserError(f"{target}: cannot create it: the folder {target.absolute().parent} does not exist")
-        try:
-            profiles.write_csv(target, profiles.get_profile(args.name))
-        except OSError as exc:
-            raise UserError(f"{target}: cannot write it: {exc.strerror or exc}") from None
-        print(target)
+        from desdemona.profiles import convert
+
+        print(convert.write_path(args.csv, profiles.get_profile(args.name), overwrite=args.overwrite))
         return 0
     for name in profiles.PROFILES:
         path = profiles.get_profile(name)
@@ -701,7 +692,7 @@ def _run_import_jsbsim(args) -> int:
         return 0
     if args.script is None:
         raise UserError("import jsbsim needs SCRIPT: a shipped script's name (see --list) or a script file")
-    _check_import_out(args.out, args.overwrite)
+    convert.check_out(args.out, args.overwrite)  # before the flight is flown
     path, comments = jsbsim.from_jsbsim(args.script, args.start, args.end, args.rate, args.modulus)
     _say_imported(convert.write_path(args.out, path, comments, args.overwrite), path)
     return 0
@@ -710,7 +701,7 @@ def _run_import_jsbsim(args) -> int:
 def _run_import_log(args) -> int:
     from desdemona.profiles import convert, log
 
-    _check_import_out(args.out, args.overwrite)
+    convert.check_out(args.out, args.overwrite)
     try:
         lever_arm = tuple(float(x) for x in args.lever_arm.split(","))
     except ValueError:
@@ -721,12 +712,6 @@ def _run_import_log(args) -> int:
     path, comments = log.from_log(args.file, fmt, args.start, args.end, args.rate, args.modulus, args.check)
     _say_imported(convert.write_path(args.out, path, comments, args.overwrite), path)
     return 0
-
-
-def _check_import_out(out: str, overwrite: bool) -> None:
-    """Refuse an --out that exists before any work is done."""
-    if Path(out).exists() and not overwrite:
-        raise UserError(f"{out}: already exists; choose another file or add --overwrite")
 
 
 def _say_imported(out: Path, path: profiles.DesiredPath) -> None:

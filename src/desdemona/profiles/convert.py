@@ -261,26 +261,36 @@ def make_path(name: str, t, omega_cabin, f_cabin, description: str, modulus: boo
     return modulus_version(path) if modulus else path
 
 
-def write_path(out, path: DesiredPath, comments=(), overwrite: bool = False) -> Path:
-    """Write ``path`` as CSV to ``out`` with ``# comments`` lines, never half: into a temporary file in
-    the same folder, then renamed. An existing ``out`` is replaced only with ``overwrite``."""
+def check_out(out, overwrite: bool = False) -> Path:
+    """Where :func:`write_path` may write, checked before any work: :class:`ProfileError` for an
+    existing ``out`` without ``overwrite``, a folder, or a folder to write into that does not exist."""
     out = Path(out)
     if out.exists() and not overwrite:
         raise ProfileError(f"{out}: already exists; choose another file or add --overwrite")
     if out.is_dir():
         raise ProfileError(f"{out}: is a folder; give a CSV file name")
-    folder = out.parent if str(out.parent) else Path(".")
-    if not folder.is_dir():
-        raise ProfileError(f"{out}: cannot write it: the folder {folder} does not exist")
-    fd, tmp = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".tmp", dir=folder)
-    os.close(fd)
+    if not out.absolute().parent.is_dir():
+        raise ProfileError(f"{out}: cannot write it: the folder {out.absolute().parent} does not exist")
+    return out
+
+
+def write_path(out, path: DesiredPath, comments=(), overwrite: bool = False) -> Path:
+    """Write ``path`` as CSV to ``out`` with ``# comments`` lines, never half: into a temporary file in
+    the same folder, then renamed. An existing ``out`` is replaced only with ``overwrite``
+    (:func:`check_out`); a folder it cannot write in is a :class:`ProfileError` too."""
+    out = check_out(out, overwrite)
     umask = os.umask(0)
     os.umask(umask)
+    tmp = None
     try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.absolute().parent)
+        os.close(fd)
         write_csv(tmp, path, comments=comments)
         os.chmod(tmp, 0o666 & ~umask)  # as a plain open() would create it
         os.replace(tmp, out)
+    except OSError as exc:
+        raise ProfileError(f"{out}: cannot write it: {exc.strerror or exc}") from None
     finally:
-        if os.path.exists(tmp):
+        if tmp is not None and os.path.exists(tmp):
             os.unlink(tmp)
     return out
