@@ -16,8 +16,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from desdemona import guard, profiles, report, sizing
-from desdemona.configs import get_configuration
+from desdemona import guard, profiles, report, session
 from desdemona.model import Model
 from desdemona.offline import OptimizeOptions, optimize
 from desdemona.params import MachineParams
@@ -55,24 +54,20 @@ class JobResult:
 FELT_COLUMNS = ("peak_false_rotation_deg_s", "felt_force_rms_max", "rms_modulus", "reversals_per_s_max")
 
 
-def run_job(job: Job, params: MachineParams, options: OptimizeOptions, out_dir: str, weights=None,
-            gain: float = 1.0) -> JobResult:
+def run_job(job: Job, params: MachineParams, choices: session.Choices, options: OptimizeOptions,
+            out_dir: str) -> JobResult:
     """Optimise one job and write its folder; failures become a table line, not an exception.
 
-    weights : a spec of :func:`profiles.weights_for`, resolved for the job's path (after its ``gain``),
-    "auto" for the configuration's default (:attr:`Configuration.default_weights`), or None for
-    ``options.problem.weights``.
+    choices : the session's (:func:`desdemona.session.offline`, resolved for the job's path and
+    configuration); options : the starts and workers (its ``problem`` is the session's).
     """
     start = time.perf_counter()
     folder = Path(out_dir) / job.folder_name
     try:
-        config = get_configuration(job.config)
-        path = config.cue_path(profiles.load(job.profile).with_gain(gain))
-        if weights is not None:
-            spec = config.default_weights if weights == "auto" else weights
-            problem = dataclasses.replace(options.problem, weights=tuple(profiles.weights_for(spec, path)))
-            options = dataclasses.replace(options, problem=problem)
-        result = optimize(path, Model(params, job.config), options)
+        resolved = session.offline(profiles.load(job.profile), Model(params, job.config), choices,
+                                   workers=options.workers)
+        options = dataclasses.replace(options, problem=resolved.options)
+        result = optimize(resolved.path, resolved.model, options)
         report.write(result, folder, command=f"desdemona batch ({job.profile} on {job.config})", overwrite=True,
                      view=job.view)
         status = "ok" if result.converged else "not converged"
@@ -115,36 +110,32 @@ def _is_table(path: Path) -> bool:
         return False
 
 
-def validate(jobs: list[Job], params: MachineParams, options: OptimizeOptions, out_dir: str | Path,
-             overwrite: bool = False) -> None:
+def validate(jobs: list[Job], params: MachineParams, choices: session.Choices, options: OptimizeOptions,
+             out_dir: str | Path, overwrite: bool = False) -> None:
     """Check every job before any runs: the batch's folder (:func:`check_out`), each job's
-    configuration, its path (each CSV read and checked), that the path suits the configuration, that
-    the problem fits in memory, and that its folder is free or an earlier result. Raises ValueError
-    (:class:`~desdemona.profiles.ProfileError`, :class:`~desdemona.sizing.TooLarge`) or
-    :class:`~desdemona.report.ReportError` naming the job."""
+    configuration, its path (each CSV read and checked) and its session (:func:`desdemona.session.offline`:
+    the path suits the configuration, the choices are valid for it, the problem fits in memory), and
+    that its folder is free or an earlier result. Raises ValueError
+    (:class:`~desdemona.profiles.ProfileError`, :class:`~desdemona.session.ChoiceError`,
+    :class:`~desdemona.sizing.TooLarge`) or :class:`~desdemona.report.ReportError` naming the job."""
     check_out(out_dir, overwrite)
     paths = {}
     for job in jobs:
-        config = get_configuration(job.config)
         if job.profile not in paths:
             paths[job.profile] = profiles.load(job.profile)
-        path = paths[job.profile]
-        if not config.takes_modulus and path.S_d is None:
-            raise profiles.ProfileError(f"{job.profile}: gives only the modulus t,M; configuration "
-                                        f"{config.name!r} needs the full path t,wx,wy,wz,fx,fy,fz")
-        if not options.problem.h_u <= path.duration:
-            raise profiles.ProfileError(f"{job.profile}: h_u {options.problem.h_u:g} s is longer than the path "
-                             f"({path.duration:g} s)")
-        sizing.check_fits(path, config, options.problem, options.workers)
+        try:
+            session.offline(paths[job.profile], Model(params, job.config), choices, workers=options.workers)
+        except (session.ChoiceError, profiles.ProfileError) as exc:
+            raise type(exc)(f"{job.profile} on {job.config}: {exc}") from None
         folder = Path(out_dir) / job.folder_name
         report.check_replaceable(folder, protect=[job.profile] if Path(job.profile).is_file() else [])
 
 
-def run_batch(jobs: list[Job], params: MachineParams, options: OptimizeOptions, out_dir: str | Path,
-              processes: int = 2, dask_address: str | None = None, weights=None, gain: float = 1.0,
-              progress=None, overwrite: bool = False) -> list[JobResult]:
+def run_batch(jobs: list[Job], params: MachineParams, choices: session.Choices, options: OptimizeOptions,
+              out_dir: str | Path, processes: int = 2, dask_address: str | None = None, progress=None,
+              overwrite: bool = False) -> list[JobResult]:
     """Run every job, on ``processes`` local processes or on the Dask scheduler at ``dask_address``;
-    ``weights`` and ``gain`` as in :func:`run_job`; ``overwrite``: replace an earlier batch in
+    ``choices`` and ``options`` as in :func:`run_job`; ``overwrite``: replace an earlier batch in
     ``out_dir`` (:func:`check_out`).
 
     Every job is validated (:func:`validate`) before anything runs. progress : optional
@@ -153,7 +144,7 @@ def run_batch(jobs: list[Job], params: MachineParams, options: OptimizeOptions, 
     cluster's jobs); the jobs done by then keep their folders, and ``batch.csv`` lists them with the
     others as "interrupted" (the :class:`~desdemona.guard.Interrupted` raised says so).
     """
-    validate(jobs, params, options, out_dir, overwrite)
+    validate(jobs, params, choices, options, out_dir, overwrite)
     out = Path(out_dir)
     created = not out.exists()
     try:
@@ -162,7 +153,7 @@ def run_batch(jobs: list[Job], params: MachineParams, options: OptimizeOptions, 
         raise report.ReportError(f"{out}: cannot create it: {exc.strerror or exc}") from None
     results: list[JobResult | None] = [None] * len(jobs)
     try:
-        map_jobs(run_job, [(job, params, options, str(out), weights, gain) for job in jobs], processes,
+        map_jobs(run_job, [(job, params, choices, options, str(out)) for job in jobs], processes,
                  dask_address, progress, results)
     except guard.Interrupted as exc:
         done = sum(r is not None for r in results)

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import math
 import os
 import signal
 import sys
@@ -14,7 +13,7 @@ from pathlib import Path
 try:  # a Ctrl-C while the libraries load (a second or two) ends the command quietly, as later
     import numpy as np
 
-    from desdemona import __version__, allocator, guard, profiles, sizing
+    from desdemona import __version__, allocator, guard, profiles, session, sizing
     from desdemona import perception as perception_models
     from desdemona.configs import CONFIGURATIONS, get_configuration
     from desdemona.model import Model
@@ -40,7 +39,6 @@ EXIT_CODES = """exit codes:
 SEE_EXIT_CODES = "Exit codes: 0 done, 2 bad input, 3 no safe trajectory, 4 not converged, 130 interrupted; " \
                  "see 'desdemona --help'."
 PROGRESS_EVERY = 10.0  # [s] between progress lines inside a long solve (stderr not a terminal)
-MIN_H_U = 1e-3  # [s] the finest --h-u: a drive's accelerations are not commanded faster than 1 kHz
 
 
 class UserError(Exception):
@@ -70,7 +68,8 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:  # the reader of stdout has gone (`| head`): the rest is not wanted
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # nor a traceback at exit's flush
         return 0
-    except (UserError, ParameterError, profiles.ProfileError, ReportError, sizing.TooLarge) as exc:
+    except (UserError, ParameterError, profiles.ProfileError, session.ChoiceError, ReportError,
+            sizing.TooLarge) as exc:
         print(f"desdemona: error: {exc}", file=sys.stderr)
         return EXIT_USAGE
     except LimitViolation as exc:
@@ -189,7 +188,7 @@ def _parser() -> argparse.ArgumentParser:
                              "--reference) (default: perfect)")
     online.add_argument("--reference", metavar="PROFILE_OR_CSV", default=None,
                         help="with --predictor route: a recording of the course (same channels as the path)")
-    online.add_argument("--initial", choices=("rest", "home", "steady", "given"), default=None,
+    online.add_argument("--initial", choices=session.ONLINE_STARTS, default=None,
                         help="the machine's state when the session starts: rest: still, where the first "
                              "plan wants it (default; the positions are chosen before the session from the "
                              "first horizon's preview, as optimize's rest chooses them; at home on dfs); "
@@ -199,11 +198,8 @@ def _parser() -> argparse.ArgumentParser:
                              "as the thesis' on-line catapult of 7.5.1), elsewhere still with the cabin "
                              "tilted by tilt coordination of its force (at most 30 deg, where the gimbals "
                              "can tilt); given: the state of --initial-state (the default when it is given)")
-    online.add_argument("--initial-state", metavar="Q;QD", dest="initial_state", default=None,
-                        help="positions and rates of the free joints in their order (see 'desdemona "
-                             "model'), SI units (rad, m; rad/s, m/s), e.g. '0,0.1,0,0;1.2,0,0,0' on dfs "
-                             "(the arm turning at 1.2 rad/s, the outer gimbal at 0.1 rad)")
-    _add_weights_option(online)
+    _add_initial_state_option(online)
+    _add_cost_options(online)
     online.add_argument("--method", choices=("auto", "rti", "nlp"), default="auto",
                         help="rti: one QP per plan (fast); nlp: IPOPT to convergence; auto: rti when a "
                              "plan is made every step, nlp when --replan spans several steps, as the "
@@ -356,28 +352,31 @@ def _add_start_options(parser: argparse.ArgumentParser, starts: int) -> None:
 
 
 def _add_session_options(parser: argparse.ArgumentParser, given: bool = True) -> None:
-    """How a run starts and ends, what its cost counts, and the motion gain (issue 16). The defaults
-    are a real session's; ``--weights path --initial free --final none`` is the thesis' setting."""
-    starts = ("rest", "free", "given") if given else ("rest", "free")
+    """How an off-line run starts and ends, and its cost (:func:`_add_cost_options`). The defaults are
+    a real session's; ``--weights path --initial free --final none`` is the thesis' setting."""
+    starts = session.OFFLINE_STARTS if given else session.OFFLINE_STARTS[:2]
     parser.add_argument("--initial", choices=starts, default=None,
                         help="rest: every joint still at t = 0, positions free (default); free: the "
                              "optimiser chooses positions and rates (thesis 5.2)"
                         + ("; given: the state of --initial-state" if given else ""))
     if given:
-        parser.add_argument("--initial-state", metavar="Q;QD", dest="initial_state", default=None,
-                            help="with --initial given: positions and rates of the free joints in their "
-                                 "order (see 'desdemona model'), SI units (rad, m; rad/s, m/s), "
-                                 "e.g. '0,-1.5,0;0,0,0' on yaw-track-cabin")
+        _add_initial_state_option(parser)
     parser.add_argument("--final", choices=("centre", "rest", "none"), default="centre",
                         help="centre: at rest with the track and heave centred at the end (default); "
                              "rest: every joint still; none: free (thesis)")
-    _add_weights_option(parser)
-    parser.add_argument("--gain", type=float, default=1.0, metavar="G",
-                        help="motion gain around 1 g: f_d -> (0,0,g) + G (f_d - (0,0,g)), omega_d -> G "
-                             "omega_d (default: 1)")
+    _add_cost_options(parser)
 
 
-def _add_weights_option(parser: argparse.ArgumentParser) -> None:
+def _add_initial_state_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--initial-state", metavar="Q;QD", dest="initial_state", default=None,
+                        help="positions and rates of the free joints in their order (see 'desdemona "
+                             "model'), SI units (rad, m; rad/s, m/s), e.g. '0,-1.5,0;0,0,0' on "
+                             "yaw-track-cabin (implies --initial given)")
+
+
+def _add_cost_options(parser: argparse.ArgumentParser) -> None:
+    """What the cost weighs and the motion gain: the choices of :class:`desdemona.session.Choices`
+    that every command takes, resolved by :mod:`desdemona.session` alone."""
     parser.add_argument("--weights", default=None, metavar="SPEC",
                         help="the cost's weight per channel of S (diagonal of Q): felt (default): the path's "
                              "force weights, and rotation weighted by the perception thresholds so that one "
@@ -386,45 +385,9 @@ def _add_weights_option(parser: argparse.ArgumentParser) -> None:
                              "dfs, whose arm turns to make the force: a modulus path weighs its rotation "
                              "at 0.1); thresholds: every channel by 1/threshold^2; or six numbers "
                              "wx,wy,wz,fx,fy,fz")
-
-
-def _session(args, model: Model, path: profiles.DesiredPath) -> tuple[profiles.DesiredPath, dict]:
-    """The path with its gain, and the ProblemOptions fields of the session options, checked."""
-    path = path.with_gain(args.gain)
-    if model is not None:
-        path = model.config.cue_path(path)
-    spec = args.weights or (model.config.default_weights if model is not None else profiles.WEIGHT_CHOICES[0])
-    fields = {"initial": args.initial or "rest", "final": args.final,
-              "weights": tuple(profiles.weights_for(spec, path))}
-    state = getattr(args, "initial_state", None)
-    if (state is not None) != (fields["initial"] == "given"):
-        raise UserError("--initial given and --initial-state go together")
-    if state is not None:
-        fields["initial_state"] = parse_state(state, model)
-    return path, fields
-
-
-def parse_state(text: str, model: Model) -> tuple[np.ndarray, np.ndarray]:
-    """Positions and rates 'q1,q2,...;qd1,qd2,...' of the free joints (SI), within their limits."""
-    names, lim = model.config.joint_names, model.limits
-    parts = text.split(";")
-    try:
-        q, qd = (np.array([float(c) for c in part.split(",")]) for part in parts) if len(parts) == 2 else (None, None)
-    except ValueError:
-        raise UserError(f"--initial-state {text!r}: not a number") from None
-    if q is None or len(q) != model.n or len(qd) != model.n:
-        raise UserError(f"--initial-state {text!r}: give {model.n} positions, ';', {model.n} rates "
-                        f"(joints {', '.join(names)}; SI units)")
-    for k, name in enumerate(names):
-        if not (np.isfinite(q[k]) and np.isfinite(qd[k])):
-            raise UserError(f"--initial-state: {name}'s position and rate must be finite numbers, got "
-                            f"{q[k]:g} and {qd[k]:g}")
-        if not lim.position_min[k] <= q[k] <= lim.position_max[k]:
-            raise UserError(f"--initial-state: {name} position {q[k]:g} is outside "
-                            f"[{lim.position_min[k]:g}, {lim.position_max[k]:g}]")
-        if not (np.isfinite(qd[k]) and abs(qd[k]) <= lim.velocity[k]):
-            raise UserError(f"--initial-state: {name} rate {qd[k]:g} is above its limit {lim.velocity[k]:g}")
-    return q, qd
+    parser.add_argument("--gain", type=float, default=1.0, metavar="G",
+                        help="motion gain around 1 g: f_d -> (0,0,g) + G (f_d - (0,0,g)), omega_d -> G "
+                             "omega_d (default: 1)")
 
 
 def _machine(args) -> Model:
@@ -471,9 +434,6 @@ def _run_inputs(args):
     if out.exists() and not args.overwrite:
         raise UserError(f"{out}: already exists; choose another folder or add --overwrite")
     report.check_replaceable(out, protect=_inputs(args))
-    if not model.config.takes_modulus and path.S_d is None:
-        raise UserError(f"configuration {model.config.name!r} needs a full path t,wx,wy,wz,fx,fy,fz; "
-                        f"{args.profile} gives only the modulus (use --config dfs)")
     return model, path, out
 
 
@@ -481,27 +441,17 @@ def _run_optimize(args) -> int:
     from desdemona import report
     from desdemona.baselines import ThesisOptions
     from desdemona.offline import OptimizeOptions, optimize, thesis_result
-    from desdemona.problem import ProblemOptions
 
     model, path, out = _run_inputs(args)
     if args.starts < 1 or args.workers < 1:
         raise UserError("--starts and --workers must be at least 1")
-    if not MIN_H_U <= args.h_u <= path.duration:
-        raise UserError(f"--h-u {args.h_u:g}: must be at least {MIN_H_U:g} s and at most the path's "
-                        f"{path.duration:g} s")
-    if model.config.modulus_cost and args.perception:
-        raise UserError("--perception applies to the full path S, not to the dfs modulus")
+    choices = session.Choices.of(args)
     if args.method == "thesis":
-        if (args.initial, args.initial_state, args.final, args.weights) != (None, None, "centre", None):
-            raise UserError("--method thesis reproduces the thesis: its weights are the path's and its start "
-                            "free; drop --initial, --initial-state, --final and --weights")
-        path = path.with_gain(args.gain)
-        problem = ProblemOptions(h_u=max(args.h_u, 0.1))
+        resolved = session.thesis(path, model, choices)
     else:
-        path, session = _session(args, model, path)
         perception = perception_models.get_model(args.perception) if args.perception else None
-        problem = ProblemOptions(h_u=args.h_u, solver=args.method, perception=perception, **session)
-    size = sizing.check_fits(path, model.config, problem, args.workers, model.limits.smooth)
+        resolved = session.offline(path, model, choices, args.method, perception, args.workers)
+    path, problem, size = resolved.path, resolved.options, resolved.size
     unreachable = sizing.unreachable(path, model)
     progress = None if args.quiet else _Progress(args.starts, size, path, model.config)
     with guard.reporting(None if progress is None else progress.solving, PROGRESS_EVERY):
@@ -557,7 +507,6 @@ class _Progress:
 def _run_batch(args) -> int:
     from desdemona import batch
     from desdemona.offline import OptimizeOptions
-    from desdemona.problem import ProblemOptions
 
     out = _claim_out(args)
     batch.check_out(out, args.overwrite)
@@ -569,13 +518,10 @@ def _run_batch(args) -> int:
     for name in args.profiles:
         if name not in profiles.PROFILES and not os.path.isfile(name):
             profiles.load(name)  # raises with the list of built-in profiles, or file not found
-    if args.starts < 1 or args.processes < 1 or not args.h_u >= MIN_H_U:
-        raise UserError(f"--starts and --processes must be at least 1 and --h-u at least {MIN_H_U:g} s")
+    if args.starts < 1 or args.processes < 1:
+        raise UserError("--starts and --processes must be at least 1")
     params = load_params(args.params, base=args.base)
-    for name in args.profiles:  # the weights and gain, checked on every path before any job runs
-        _session(args, None, profiles.load(name))
-    options = OptimizeOptions(ProblemOptions(h_u=args.h_u, initial=args.initial or "rest", final=args.final),
-                              starts=args.starts, seed=args.seed)
+    options = OptimizeOptions(starts=args.starts, seed=args.seed)
     jobs = [batch.Job(p, c, view=args.view) for p in args.profiles for c in args.configs]
     begin = time.perf_counter()
 
@@ -583,8 +529,7 @@ def _run_batch(args) -> int:
         print(f"desdemona: job {done}/{total} done, {time.perf_counter() - begin:.1f} s: {job.profile} on "
               f"{job.config}: {job.status}", file=sys.stderr, flush=True)
 
-    results = batch.run_batch(jobs, params, options, out, args.processes, args.dask,
-                              weights=args.weights or "auto", gain=args.gain,
+    results = batch.run_batch(jobs, params, session.Choices.of(args), options, out, args.processes, args.dask,
                               progress=None if args.quiet else progress, overwrite=args.overwrite)
     print(batch.table(results))
     if any(r.status not in ("ok", "not converged") for r in results):
@@ -597,39 +542,11 @@ def _run_online(args) -> int:
     from desdemona.metrics import joint_units
 
     model, path, out = _run_inputs(args)
-    default = min(online.default_horizon(model.config), path.duration)
-    if args.horizon is None:
-        args.horizon = default
-    if not (0 < args.step and 2 * args.step <= args.horizon <= path.duration):
-        raise UserError(f"need 0 < --step, 2 steps <= --horizon <= the path's {path.duration:g} s")
-    if args.reach is None:
-        args.reach = max(args.horizon, default)
-    if not (args.horizon <= args.reach and math.isfinite(args.reach)):
-        raise UserError(f"--reach {args.reach:g}: must be at least --horizon ({args.horizon:g} s), in seconds")
-    if not (args.tail_step >= 0 and math.isfinite(args.tail_step)):
-        raise UserError(f"--tail-step {args.tail_step:g}: must be a number of seconds >= 0")
-    if args.deadline is not None and not args.deadline > 0:
-        raise UserError(f"--deadline {args.deadline:g}: must be a positive number of seconds")
-    # the same cost as optimize's: a session is judged as the off-line result is (issue 16)
-    weights = tuple(profiles.weights_for(args.weights or model.config.default_weights, model.config.cue_path(path)))
-    try:
-        mpc = online.MPCOptions(horizon=args.horizon, step=args.step, replan=args.replan, delay=args.delay,
-                                deadline=args.deadline, method=args.method, tail_step=args.tail_step or None,
-                                weights=weights, reach=args.reach)
-    except ValueError as exc:
-        raise UserError(f"--replan: {exc}") from None
-    sizing.check_fits_online(model.config.cue_path(path), model.config, mpc)
-    reference = None
-    if args.predictor == "route":
-        if args.reference is None:
-            raise UserError("--predictor route needs --reference, a recording of the same course")
-        reference = profiles.load(args.reference)
-        if (reference.S_d is None) != (path.S_d is None):
-            raise UserError(f"--reference {args.reference}: its channels ({'t,M' if reference.S_d is None else 'S'}) "
-                            f"differ from the path's")
-    elif args.reference is not None:
-        raise UserError("--reference is used only with --predictor route")
-    options = online.OnlineOptions(mpc, predictor=args.predictor, reference=reference, **_online_start(args, model))
+    reference = None if args.reference is None else profiles.load(args.reference)
+    timing = {k: getattr(args, k) for k in ("replan", "delay", "deadline", "method", "tail_step")}
+    resolved = session.online(path, model, session.Choices.of(args), horizon=args.horizon, reach=args.reach,
+                              step=args.step, predictor=args.predictor, reference=reference, **timing)
+    path, options = resolved.path, resolved.options
     result = online.run(path, model, options)
     unreachable = sizing.unreachable(path, model)
     report.write_online(result, out, report.command_line(), args.overwrite, unreachable=unreachable,
@@ -655,15 +572,6 @@ def _run_online(args) -> int:
     if result.baseline_quality is not None:
         print(f"  felt with the classical loop: {result.baseline_quality.headline()}")
     return 0
-
-
-def _online_start(args, model: Model) -> dict:
-    """The OnlineOptions fields of --initial and --initial-state."""
-    initial = args.initial or ("given" if args.initial_state is not None else "rest")
-    if (args.initial_state is not None) != (initial == "given"):
-        raise UserError("--initial given needs --initial-state, and --initial-state goes with --initial given")
-    state = None if args.initial_state is None else parse_state(args.initial_state, model)
-    return {"initial": initial, "initial_state": state}
 
 
 def _run_profiles(args) -> int:

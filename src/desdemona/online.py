@@ -723,7 +723,9 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
     if options.initial == "rest":  # a fresh predictor's first preview: no state is kept
         q0, qd0 = controller.place((q0, qd0), predictor(options.predictor, reference)(path, 0.0, options.mpc.horizon))
     loop = closed_loop(controller, path, predictor(options.predictor, reference), q0=q0, qd0=qd0)
-    result, _ = check(model, path, loop.plan, step=step)
+    # judged with the weights the controller minimised, as an off-line result is (desdemona.session)
+    weights = options.mpc.weights
+    result, _ = check(model, path, loop.plan, step=step, weights=weights)
     if not result.passed:
         raise LimitViolation(result, "the closed-loop trajectory")
     nodes = loop.plan.t_nodes
@@ -731,7 +733,7 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
         classical = classical_dfs(path, model, times=nodes, state=(q0, qd0))
     else:
         classical = classical_washout(path, model, times=nodes, state=(q0, qd0), trimmed=options.initial == "steady")
-    baseline_check, _ = check(model, path, classical, step=step)
+    baseline_check, _ = check(model, path, classical, step=step, weights=weights)
     baseline = evaluate_plan(model, path, classical, nodes)
     return OnlineResult(path=path, model=model, options=options, loop=loop, deadline=controller.deadline,
                         trajectory=evaluate_plan(model, path, loop.plan, nodes), check=result,

@@ -1,0 +1,216 @@
+"""A session's choices, resolved once: from what the user asks for to the problem that is solved.
+
+A user chooses a desired path, a machine, and how the session goes: what the cost weighs
+(``weights``), the motion gain, how the machine starts and ends, the control step. This module
+turns those :class:`Choices` into the desired path the configuration follows and the options of the
+problem, for every command alike: :func:`offline` for ``optimize`` and each job of ``batch``,
+:func:`thesis` for ``optimize --method thesis``, :func:`online` for ``online``. The command line, the
+benchmarks and the tests call these functions; each raises :class:`ChoiceError` (a
+:class:`~desdemona.profiles.ProfileError` for a path's problem) with a message that names the
+choice, and checks that the problem fits in memory (:mod:`desdemona.sizing`).
+
+One rule for the figure a session is judged by: the RMS of ``S - S_d`` (printed, and written as
+``rms`` in ``summary.json``) is weighted by the session's weights, the ones the optimiser or the
+controller minimised, off-line and on-line alike (thesis eq. 3.6's Q).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from desdemona import profiles, sizing
+from desdemona.model import Model
+from desdemona.profiles import DesiredPath
+
+class ChoiceError(ValueError):
+    """A choice that cannot make a session, or choices that do not go together; the message names them."""
+
+
+#: The shortest control step [s] the command line accepts.
+MIN_H_U = 1e-3
+#: How each command may start a session (the first is its default).
+OFFLINE_STARTS = ("rest", "free", "given")
+ONLINE_STARTS = ("rest", "home", "steady", "given")
+
+
+@dataclass(frozen=True)
+class Choices:
+    """What the user chooses for a session; None: the default.
+
+    weights : a spec of :func:`desdemona.profiles.weights_for` ("felt", "path", "thresholds" or six
+        numbers), None for the configuration's default (:attr:`Configuration.default_weights`);
+    gain : the motion gain around 1 g (:meth:`DesiredPath.with_gain`);
+    initial : how the machine starts (:data:`OFFLINE_STARTS`, :data:`ONLINE_STARTS`), None: "rest",
+        or "given" when ``initial_state`` is given;
+    initial_state : (q0, qd0) of the free joints, or their text "q1,q2,...;qd1,qd2,..." (SI units);
+    final : how an off-line session ends: "centre", "rest" or "none" (on-line plans end stoppable);
+    h_u : the off-line control step [s].
+    """
+
+    weights: str | tuple | None = None
+    gain: float = 1.0
+    initial: str | None = None
+    initial_state: str | tuple | None = None
+    final: str = "centre"
+    h_u: float = 0.05
+
+    @classmethod
+    def of(cls, namespace) -> Choices:
+        """The choices an ``argparse`` namespace holds, each field by its name (missing: the default)."""
+        return cls(**{f.name: getattr(namespace, f.name) for f in dataclasses.fields(cls)
+                      if getattr(namespace, f.name, None) is not None})
+
+
+@dataclass(frozen=True, eq=False)
+class Session:
+    """A resolved session: the desired path the configuration follows (with the gain), and the
+    options of its problem (:class:`~desdemona.problem.ProblemOptions` off-line,
+    :class:`~desdemona.online.OnlineOptions` on-line), and its size (:mod:`desdemona.sizing`)."""
+
+    path: DesiredPath
+    model: Model
+    options: object
+    size: sizing.Size
+
+
+def cued(path: DesiredPath, model: Model, choices: Choices) -> DesiredPath:
+    """The path the configuration follows: ``path`` with the gain, as the configuration cues it
+    (:meth:`Configuration.cue_path`), refused where the configuration needs channels it lacks."""
+    if not model.config.takes_modulus and path.S_d is None:
+        raise profiles.ProfileError(f"configuration {model.config.name!r} needs a full path t,wx,wy,wz,fx,fy,fz; "
+                                    f"{path.name} gives only the modulus (use --config dfs)")
+    return model.config.cue_path(path.with_gain(choices.gain))
+
+
+def cost(path: DesiredPath, model: Model, choices: Choices) -> dict:
+    """The fields of the cost that the choices set, for :class:`ProblemOptions` and :class:`MPCOptions`
+    alike: the diagonal of Q for the cued ``path``."""
+    spec = choices.weights if choices.weights is not None else model.config.default_weights
+    return {"weights": tuple(profiles.weights_for(spec, path))}
+
+
+def start(model: Model, choices: Choices, allowed: tuple[str, ...]) -> tuple[str, tuple | None]:
+    """(initial, state): how the session starts, and the given state (q0, qd0) checked against the
+    machine's limits, or None."""
+    state = choices.initial_state
+    initial = choices.initial or ("given" if state is not None else allowed[0])
+    if initial not in allowed:
+        raise ChoiceError(f"--initial {initial}: one of {', '.join(allowed)}")
+    if (state is not None) != (initial == "given"):
+        raise ChoiceError("--initial given and --initial-state go together")
+    if isinstance(state, str):
+        state = parse_state(state, model)
+    return initial, state
+
+
+def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solver: str = "ipopt",
+            perception=None, workers: int = 1) -> Session:
+    """The session of ``optimize`` and of each job of ``batch``: the cued path and its
+    :class:`~desdemona.problem.ProblemOptions`, checked to fit in memory with ``workers`` at once."""
+    from desdemona.problem import ProblemOptions
+
+    _check_h_u(choices.h_u, path)
+    if model.config.modulus_cost and perception is not None:
+        raise ChoiceError("--perception applies to the full path S, not to the dfs modulus")
+    path = cued(path, model, choices)
+    initial, state = start(model, choices, OFFLINE_STARTS)
+    problem = ProblemOptions(h_u=choices.h_u, solver=solver, perception=perception, initial=initial,
+                             final=choices.final, initial_state=state, **cost(path, model, choices))
+    size = sizing.check_fits(path, model.config, problem, workers, model.limits.smooth)
+    return Session(path, model, problem, size)
+
+
+def thesis(path: DesiredPath, model: Model, choices: Choices = Choices()) -> Session:
+    """The session of ``optimize --method thesis``, the thesis' own setting (5.2): the path's weights,
+    a free start and a free end, a control step of at least 0.1 s."""
+    from desdemona.problem import ProblemOptions
+
+    if (choices.initial, choices.initial_state, choices.final, choices.weights) != (None, None, "centre", None):
+        raise ChoiceError("--method thesis reproduces the thesis: its weights are the path's and its start "
+                         "free; drop --initial, --initial-state, --final and --weights")
+    _check_h_u(choices.h_u, path)
+    cued(path, model, choices)  # the channels checked; the thesis' method cues the path itself
+    path = path.with_gain(choices.gain)
+    problem = ProblemOptions(h_u=max(choices.h_u, 0.1))
+    size = sizing.check_fits(path, model.config, problem, 1, model.limits.smooth)
+    return Session(path, model, problem, size)
+
+
+def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, horizon: float | None = None,
+           reach: float | None = None, step: float = 0.02, predictor: str = "perfect",
+           reference: DesiredPath | None = None, **timing) -> Session:
+    """The session of ``online``: the cued path and its :class:`~desdemona.online.OnlineOptions`.
+
+    horizon : how far the preview reaches [s], None: :func:`~desdemona.online.default_horizon`
+    (at most the path's duration); reach : how far each plan looks [s], None: at least the default
+    horizon; step : the plan's step [s]; predictor and reference (a recording of the same course, for
+    "route"): :class:`OnlineOptions`; ``timing``: the other :class:`MPCOptions` fields (replan, delay,
+    deadline, method, tail_step).
+    """
+    from desdemona import online as online_module
+
+    if reference is not None and (reference.S_d is None) != (path.S_d is None):
+        raise ChoiceError(f"--reference {reference.name}: its channels ({'t,M' if reference.S_d is None else 'S'}) "
+                         f"differ from the path's")
+    path = cued(path, model, choices)
+    default = min(online_module.default_horizon(model.config), path.duration)
+    horizon = default if horizon is None else horizon
+    if not (0 < step and 2 * step <= horizon <= path.duration):
+        raise ChoiceError(f"need 0 < --step, 2 steps <= --horizon <= the path's {path.duration:g} s")
+    reach = max(horizon, default) if reach is None else reach
+    if not (horizon <= reach and math.isfinite(reach)):
+        raise ChoiceError(f"--reach {reach:g}: must be at least --horizon ({horizon:g} s), in seconds")
+    tail = timing.get("tail_step")
+    if tail is not None and not (tail >= 0 and math.isfinite(tail)):
+        raise ChoiceError(f"--tail-step {tail:g}: must be a number of seconds >= 0")
+    if "tail_step" in timing:
+        timing["tail_step"] = tail or None  # 0: the step throughout
+    deadline = timing.get("deadline")
+    if deadline is not None and not deadline > 0:
+        raise ChoiceError(f"--deadline {deadline:g}: must be a positive number of seconds")
+    if (predictor == "route") != (reference is not None):
+        raise ChoiceError("--predictor route needs --reference, a recording of the same course" if reference is None
+                         else "--reference is used only with --predictor route")
+    try:
+        mpc = online_module.MPCOptions(horizon=horizon, step=step, reach=reach, **cost(path, model, choices),
+                                       **timing)
+    except ValueError as exc:
+        raise ChoiceError(f"--replan: {exc}") from None
+    size = sizing.check_fits_online(path, model.config, mpc)
+    initial, state = start(model, choices, ONLINE_STARTS)
+    options = online_module.OnlineOptions(mpc, predictor=predictor, reference=reference, initial=initial,
+                                          initial_state=state)
+    return Session(path, model, options, size)
+
+
+def parse_state(text: str, model: Model) -> tuple[np.ndarray, np.ndarray]:
+    """Positions and rates 'q1,q2,...;qd1,qd2,...' of the free joints (SI), within their limits."""
+    names, lim = model.config.joint_names, model.limits
+    parts = text.split(";")
+    try:
+        q, qd = (np.array([float(c) for c in part.split(",")]) for part in parts) if len(parts) == 2 else (None, None)
+    except ValueError:
+        raise ChoiceError(f"--initial-state {text!r}: not a number") from None
+    if q is None or len(q) != model.n or len(qd) != model.n:
+        raise ChoiceError(f"--initial-state {text!r}: give {model.n} positions, ';', {model.n} rates "
+                         f"(joints {', '.join(names)}; SI units)")
+    for k, name in enumerate(names):
+        if not (np.isfinite(q[k]) and np.isfinite(qd[k])):
+            raise ChoiceError(f"--initial-state: {name}'s position and rate must be finite numbers, got "
+                             f"{q[k]:g} and {qd[k]:g}")
+        if not lim.position_min[k] <= q[k] <= lim.position_max[k]:
+            raise ChoiceError(f"--initial-state: {name} position {q[k]:g} is outside "
+                             f"[{lim.position_min[k]:g}, {lim.position_max[k]:g}]")
+        if not abs(qd[k]) <= lim.velocity[k]:
+            raise ChoiceError(f"--initial-state: {name} rate {qd[k]:g} is above its limit {lim.velocity[k]:g}")
+    return q, qd
+
+
+def _check_h_u(h_u: float, path: DesiredPath) -> None:
+    if not (math.isfinite(h_u) and MIN_H_U <= h_u <= path.duration):
+        raise ChoiceError(f"--h-u {h_u:g}: must be at least {MIN_H_U:g} s and at most the path's "
+                         f"{path.duration:g} s")
