@@ -88,3 +88,14 @@ def test_every_command_hands_its_choices_over_by_name(command):
     args = _parser().parse_args([*argv, "--weights", "thresholds", "--gain", "0.7"])
     assert Choices.of(args) == Choices(weights="thresholds", gain=0.7)
     assert Choices.of(argparse.Namespace()) == Choices()
+
+
+def test_a_jerk_weight_reaches_the_problem_off_line_and_on_line(catapult):
+    model = Model(config="yaw-track-cabin")
+    assert session.offline(catapult, model, Choices(jerk_weight=0.5)).options.jerk_weight == 0.5
+    assert session.online(catapult, model, Choices(jerk_weight=0.5)).options.mpc.jerk_weight == 0.5
+    assert session.offline(catapult, model).options.jerk_weight is None  # the configuration's default
+    with pytest.raises(ChoiceError, match="--jerk-weight -1"):
+        session.offline(catapult, model, Choices(jerk_weight=-1.0))
+    args = _parser().parse_args(["batch", "catapult", "--configs", "full", "--out", "x", "--jerk-weight", "2"])
+    assert Choices.of(args).jerk_weight == 2.0

@@ -388,6 +388,10 @@ def _add_cost_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--gain", type=float, default=1.0, metavar="G",
                         help="motion gain around 1 g: f_d -> (0,0,g) + G (f_d - (0,0,g)), omega_d -> G "
                              "omega_d (default: 1)")
+    parser.add_argument("--jerk-weight", type=float, default=None, metavar="RHO", dest="jerk_weight",
+                        help="the jerk's weight in the cost, against its limit: higher makes the joints "
+                             "reverse their accelerations less, at some cost in the cue (default: 5 "
+                             "off-line and 3 on-line on dfs, 1 elsewhere)")
 
 
 def _machine(args) -> Model:

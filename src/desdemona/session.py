@@ -48,7 +48,9 @@ class Choices:
         or "given" when ``initial_state`` is given;
     initial_state : (q0, qd0) of the free joints, or their text "q1,q2,...;qd1,qd2,..." (SI units);
     final : how an off-line session ends: "centre", "rest" or "none" (on-line plans end stoppable);
-    h_u : the off-line control step [s].
+    h_u : the off-line control step [s];
+    jerk_weight : the jerk's weight in the cost (:attr:`ProblemOptions.jerk_weight`), None: the
+        default of the configuration, off-line or on-line.
     """
 
     weights: str | tuple | None = None
@@ -57,6 +59,7 @@ class Choices:
     initial_state: str | tuple | None = None
     final: str = "centre"
     h_u: float = 0.05
+    jerk_weight: float | None = None
 
     @classmethod
     def of(cls, namespace) -> Choices:
@@ -90,7 +93,10 @@ def cost(path: DesiredPath, model: Model, choices: Choices) -> dict:
     """The fields of the cost that the choices set, for :class:`ProblemOptions` and :class:`MPCOptions`
     alike: the diagonal of Q for the cued ``path``."""
     spec = choices.weights if choices.weights is not None else model.config.default_weights
-    return {"weights": tuple(profiles.weights_for(spec, path))}
+    jerk = choices.jerk_weight
+    if jerk is not None and not (math.isfinite(jerk) and jerk >= 0):
+        raise ChoiceError(f"--jerk-weight {jerk:g}: must be a number >= 0")
+    return {"weights": tuple(profiles.weights_for(spec, path)), "jerk_weight": jerk}
 
 
 def start(model: Model, choices: Choices, allowed: tuple[str, ...]) -> tuple[str, tuple | None]:
