@@ -27,7 +27,7 @@ import time
 import numpy as np
 
 from desdemona import Model, allocator, default_params, profiles, thesis_toy_params
-from desdemona.baselines import ThesisOptions, optimize_thesis
+from desdemona.thesis import ThesisOptions, optimize_thesis
 from desdemona.offline import OptimizeOptions, optimize
 from desdemona.problem import ProblemOptions
 from desdemona.simulate import check

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from desdemona import profiles
-from desdemona.baselines import classical_dfs, classical_washout
+from desdemona.classical import classical_dfs, classical_washout
 from desdemona.kinematics import gimbal_alignment
 from desdemona.metrics import sign_changes_per_second
 from desdemona.model import Model

@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 from desdemona import Model, profiles, thesis_toy_params
-from desdemona.baselines import ThesisOptions, classical_dfs, optimize_thesis
+from desdemona.classical import classical_dfs
+from desdemona.thesis import ThesisOptions, optimize_thesis
 from desdemona.offline import OptimizeOptions, initial_guesses, optimize
 from desdemona.perception import thesis_model
 from desdemona.problem import CueingProblem, ProblemOptions

@@ -347,7 +347,7 @@ def test_online_command_starts_at_rest_steady_or_a_given_state(tmp_path, capsys)
     """--initial rest (the default: on dfs every joint still at its centre), steady (on dfs a centrifuge
     spun up to the path's first modulus, the cabin aligned with the force) or given (--initial-state);
     the command offers every start the library has."""
-    from desdemona.baselines import steady_start
+    from desdemona.classical import steady_start
     from desdemona.cli import main
 
     short = tmp_path / "short.csv"
@@ -417,7 +417,7 @@ def test_a_steady_start_tilts_the_cabin_to_the_first_desired_force(params):
     """Off dfs, --initial steady starts still with the cabin tilted by tilt coordination of the path's
     first force (the cosine starts at f_y = 5 m/s^2, held at g/2 by 30 deg), and the classical
     washout's filters start trimmed to it."""
-    from desdemona.baselines import steady_start
+    from desdemona.classical import steady_start
 
     path = profiles.cosine()
     model = Model(params, "full")
@@ -438,7 +438,7 @@ def test_a_steady_start_tilts_the_cabin_to_the_first_desired_force(params):
     assert rest.check.passed and rest.check.rms < 0.5 * home.check.rms
     # on a steady lateral force the trimmed washout's high-pass sees no step at t = 0: its track
     # stays at the centre; from zero filter states it runs 1.4 m out and back
-    from desdemona.baselines import classical_washout
+    from desdemona.classical import classical_washout
 
     t = np.arange(0.0, 2.0, 0.05)
     level = DesiredPath("steady", t, np.tile([0.0, 0.0, 0.0, 0.0, 5.0, 9.81], (len(t), 1)))

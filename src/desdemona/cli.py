@@ -443,7 +443,7 @@ def _run_inputs(args):
 
 def _run_optimize(args) -> int:
     from desdemona import report
-    from desdemona.baselines import ThesisOptions
+    from desdemona.thesis import ThesisOptions
     from desdemona.offline import OptimizeOptions, optimize, thesis_result
 
     model, path, out = _run_inputs(args)

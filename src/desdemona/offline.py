@@ -17,7 +17,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from desdemona import baselines, guard, metrics, sizing
+from desdemona import classical, guard, metrics, sizing, thesis
 from desdemona.model import Model
 from desdemona.plan import Plan, start_acceleration, start_state
 from desdemona.problem import CueingProblem, ProblemOptions, Solution
@@ -127,7 +127,7 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
     if problem.options.initial != "free":
         guesses += _guesses_from_start(problem)
     elif model.config.takes_modulus:
-        classical = baselines.classical_dfs(problem.path, model, times=problem.t_nodes)
+        classical = classical.classical_dfs(problem.path, model, times=problem.t_nodes)
         add("classical-loop", classical.q0, classical.qd0, classical.u)
         spinning = np.zeros(n)
         spinning[0] = 0.5 * lim.velocity[0]
@@ -315,14 +315,14 @@ def _check(problem: CueingProblem, sol: Solution) -> tuple[LimitCheck, Trajector
                  perception=problem.options.perception)
 
 
-def thesis_result(path: DesiredPath, model: Model, options: baselines.ThesisOptions | None = None) -> Result:
-    """The thesis' own method (:func:`desdemona.baselines.optimize_thesis`), checked and packaged like ours.
+def thesis_result(path: DesiredPath, model: Model, options: thesis.ThesisOptions | None = None) -> Result:
+    """The thesis' own method (:func:`desdemona.thesis.optimize_thesis`), checked and packaged like ours.
 
     Its best start that keeps every limit on the fine grid is returned; :class:`LimitViolation` if none.
     """
-    options = baselines.ThesisOptions() if options is None else options
+    options = thesis.ThesisOptions() if options is None else options
     wall = time.perf_counter()
-    problem, runs = baselines.optimize_thesis(path, model, options)
+    problem, runs = thesis.optimize_thesis(path, model, options)
     step = float(np.min(np.diff(path.t)))
     reports, candidates = [], []
     for k, run in enumerate(runs):

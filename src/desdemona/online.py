@@ -20,7 +20,7 @@ The predictors that turn what is known now into the preview live in :mod:`desdem
 :func:`run` is a whole closed-loop session as a value: the MPC against the plant
 (:func:`desdemona.simulate.closed_loop`) from rest, the independent check, and what a simulator runs
 today beside it (the classical loop of 7.4.2 on dfs, a classical washout elsewhere, from
-:mod:`desdemona.baselines`) (:class:`OnlineResult`); the ``online`` command, the benchmark and the
+:mod:`desdemona.classical`) (:class:`OnlineResult`); the ``online`` command, the benchmark and the
 tests all call it.
 """
 
@@ -35,7 +35,7 @@ import casadi as ca
 import numpy as np
 
 from desdemona import metrics
-from desdemona.baselines import classical_dfs, classical_washout, steady_start
+from desdemona.classical import classical_dfs, classical_washout, steady_start
 from desdemona.model import Model
 from desdemona.perception import VestibularModel
 from desdemona.plan import Plan, advance, start_state
@@ -627,7 +627,7 @@ class OnlineOptions:
       them, and the machine is moved there beforehand; on the configurations whose cabin follows the
       force (``dfs``), and with a perception model, at home;
     - "home": still, every joint at its centre;
-    - "steady": in steady state with the path's first sample (:func:`desdemona.baselines.steady_start`):
+    - "steady": in steady state with the path's first sample (:func:`desdemona.classical.steady_start`):
       on ``dfs`` the arm already turning, elsewhere the cabin tilted to it; the classical washout then
       starts trimmed too;
     - "given": ``initial_state`` = (q0, qd0) of the free joints (a given ``initial_state`` alone means
@@ -670,7 +670,7 @@ class OnlineResult:
     check : the independent fine-grid check of the run (it passed: a run that does not is an error);
     baseline, baseline_check : what a simulator runs today, on the same grid from the same state, and
     its check: the classical loop of 7.4.2 on ``dfs``, the classical washout
-    (:func:`desdemona.baselines.classical_washout`) on the other configurations.
+    (:func:`desdemona.classical.classical_washout`) on the other configurations.
     """
 
     path: DesiredPath
