@@ -13,7 +13,8 @@ import pytest
 from desdemona import Model, compiled, profiles
 from desdemona.offline import initial_guesses
 from desdemona.plan import Plan
-from desdemona.problem import CueingProblem, ProblemOptions
+from desdemona.problem import ProblemOptions
+from desdemona.transcription import CueingProblem
 from desdemona.simulate import evaluate_plan
 
 needs_compiler = pytest.mark.skipif(compiled.compiler() is None, reason="no C compiler")

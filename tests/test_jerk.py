@@ -10,7 +10,8 @@ from desdemona.model import Model
 from desdemona.online import MPC, MPCOptions
 from desdemona.params import ParameterError, load_params
 from desdemona.plan import Plan, advance, ramp
-from desdemona.problem import CueingProblem, ProblemOptions
+from desdemona.problem import ProblemOptions
+from desdemona.transcription import CueingProblem
 from desdemona.simulate import check
 
 

@@ -10,7 +10,8 @@ from desdemona.classical import classical_dfs
 from desdemona.thesis import ThesisOptions, optimize_thesis
 from desdemona.offline import OptimizeOptions, initial_guesses, optimize
 from desdemona.perception import thesis_model
-from desdemona.problem import CueingProblem, ProblemOptions
+from desdemona.problem import ProblemOptions
+from desdemona.transcription import CueingProblem
 from desdemona.profiles import DesiredPath
 from desdemona.plan import Plan
 from desdemona.simulate import check

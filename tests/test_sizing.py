@@ -5,7 +5,8 @@ import pytest
 
 from desdemona import Model, profiles, sizing
 from desdemona.configs import get_configuration
-from desdemona.problem import CueingProblem, ProblemOptions
+from desdemona.problem import ProblemOptions
+from desdemona.transcription import CueingProblem
 
 
 def test_estimate_counts_the_problem_it_will_build(params):

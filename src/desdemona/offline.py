@@ -17,10 +17,12 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from desdemona import classical, guard, metrics, sizing, thesis
+from desdemona import guard, metrics, sizing, thesis
+from desdemona.classical import classical_dfs
 from desdemona.model import Model
 from desdemona.plan import Plan, start_acceleration, start_state
-from desdemona.problem import CueingProblem, ProblemOptions, Solution
+from desdemona.problem import ProblemOptions
+from desdemona.transcription import CueingProblem, Solution
 from desdemona.profiles import DesiredPath
 from desdemona.report import trajectory_dataframe
 from desdemona.simulate import LimitCheck, LimitViolation, Trajectory, check, evaluate_plan
@@ -127,7 +129,7 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
     if problem.options.initial != "free":
         guesses += _guesses_from_start(problem)
     elif model.config.takes_modulus:
-        classical = classical.classical_dfs(problem.path, model, times=problem.t_nodes)
+        classical = classical_dfs(problem.path, model, times=problem.t_nodes)
         add("classical-loop", classical.q0, classical.qd0, classical.u)
         spinning = np.zeros(n)
         spinning[0] = 0.5 * lim.velocity[0]

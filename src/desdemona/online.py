@@ -31,7 +31,6 @@ import time
 from dataclasses import dataclass
 from typing import Literal, NamedTuple
 
-import casadi as ca
 import numpy as np
 
 from desdemona import metrics
@@ -40,7 +39,8 @@ from desdemona.model import Model
 from desdemona.perception import VestibularModel
 from desdemona.plan import Plan, advance, start_state
 from desdemona.predictors import PREDICTORS, predictor
-from desdemona.problem import CueingProblem, ProblemOptions
+from desdemona.problem import ProblemOptions
+from desdemona.transcription import CueingProblem, RealTimeIteration
 from desdemona.profiles import ALIGNED_WEIGHTS, DesiredPath, vertical_force
 from desdemona.simulate import (TOLERANCE, ClosedLoop, LimitCheck, LimitViolation, Trajectory, check, closed_loop,
                                 evaluate_plan)
@@ -241,8 +241,7 @@ class MPC:
         self._limit_use = model.step_limit_use(options.step)
         self.z = self.z_d = None  # filter states of the felt and the desired path (with perception)
         self._z_d_next = None  # the desired filter state one step on, from this step's preview
-        if options.plan_method == "rti":
-            self._qp_data, self._qp = self._real_time_iteration(options.qp_solver)
+        self._rti = RealTimeIteration(self.problem, options.qp_solver) if options.plan_method == "rti" else None
         self.smooth = self.problem.smooth
         self.plan: tuple[np.ndarray, np.ndarray] | None = None  # the last plan per step: accelerations, jerks
         self._counts = np.rint(self.problem.steps / options.step).astype(int)  # steps per interval
@@ -383,92 +382,24 @@ class MPC:
         self._z_d_next = states[prob.m * self.options.replan_steps]  # after this cycle's sub-steps
         return prob.with_steps(y_d.reshape(prob.N, -1).T)
 
-    def _real_time_iteration(self, qp_solver: str):
-        """The Gauss-Newton QP of one real-time iteration, as a data Function and a conic solver.
-
-        Cost: sum of squared stage residuals r (the problem's own), Hessian 2 J_r^T J_r (convex, so
-        active-set solvers such as daqp apply), gradient 2 J_r^T r; constraints linearised with their
-        exact Jacobian; all at the linearisation point w and the preview p.
-        """
-        prob = self.problem
-        N, nx, nu = prob.N, prob.nx, prob.nu
-        nw = nx + nu
-        x, u = ca.SX.sym("x", nx), ca.SX.sym("u", nu)
-        d = ca.SX.sym("d", prob.stage.size1_in(2))
-        r = prob.residual(x, u, d)
-        J = ca.jacobian(r, ca.vertcat(x, u))
-        stage = ca.Function("stage_gn", [x, u, d], [2.0 * J.T @ J, 2.0 * J.T @ r])
-        w, p = prob.nlp["x"], prob.nlp["p"]
-        XU = ca.reshape(w[: N * nw], nw, N)
-        data = ca.reshape(p, d.numel(), N)
-        H_blocks, g_blocks = stage.map(N, "serial")(XU[:nx, :], XU[nx:, :], data)
-        # a tiny diagonal keeps the QP strictly convex in directions the cost does not see
-        H = ca.diagcat(*[H_blocks[:, k * nw:(k + 1) * nw] for k in range(N)], ca.MX(nx, nx))
-        H = H + 1e-9 * ca.MX.eye(N * nw + nx)
-        gradient = ca.vertcat(ca.vec(g_blocks), ca.MX.zeros(nx))
-        g, A = prob.derivatives["jac_g"](w, p)
-        # flattened to SX: the mapped graph spends more time slicing than computing (0.22 -> 0.10 ms
-        # for the 2 s dfs horizon at 50 Hz; building the flat graph takes 0.01-0.1 s)
-        qp_data = ca.Function("qp_data", [w, p], [H, gradient, A, g]).expand()
-        options = {"error_on_fail": False, "print_time": False}
-        if qp_solver == "hpipm":
-            # HPIPM exploits the stage structure (measured: 0.8 ms for the 2 s dfs horizon at 50 Hz in
-            # its speed_abs mode, 1.1 ms in speed, against 38 ms for dense daqp on the same QP); it must
-            # be told the stages' sizes.
-            ng = prob.n_path
-            options.update(N=N, nx=[nx] * (N + 1), nu=[nu] * N + [0], ng=[ng + prob.n_initial] + [ng] * (N - 1) + [0],
-                           hpipm={"iter_max": 50, "mode": "speed_abs", "res_g_max": 1e-6, "res_b_max": 1e-8,
-                                  "res_d_max": 1e-8, "res_m_max": 1e-7})
-        elif qp_solver == "qpoases":
-            options.update(printLevel="none")
-        elif qp_solver == "osqp":
-            options["osqp"] = {"verbose": False, "eps_abs": 1e-7, "eps_rel": 1e-7, "max_iter": 4000}
-        qp = ca.conic("rti", qp_solver, {"h": qp_data.sparsity_out(0), "a": qp_data.sparsity_out(2)}, options)
-        return qp_data, qp
-
     def _solve(self, q, qd, a, data, method: str | None = None, place: bool = False):
         """One warm-started solve from (q, qd, a) by ``method`` (default the options'); with ``place``
         the start's positions are free within their limits (``q`` is then only the guess's start).
         Returns a :class:`_Solved`."""
         prob = self.problem
-        n = self.model.n
         method = method or self.options.plan_method
-        if self.plan is not None:
-            u = self._shifted_plan(prob)
-        else:
-            u = np.zeros((prob.N, n))
+        u = self._shifted_plan(prob) if self.plan is not None else np.zeros((prob.N, self.model.n))
         u = self._leave_rest(qd, u)
         # RTI: a consistent point, not clipped
-        x, controls = prob.guess(q, qd, u, a, clip=method != "rti")
-        lbx, ubx, lbg, ubg = prob.bounds_from(q)
-        lbx, ubx = lbx.copy(), ubx.copy()
-        lbx[:n], ubx[:n] = self._placing(q) if place else (q, q)
-        lbx[n:2 * n], ubx[n:2 * n] = qd, qd
-        if self.smooth:
-            lbx[2 * n:3 * n], ubx[2 * n:3 * n] = a, a
+        x, controls = prob.guess(q, qd, u, a, clip=method != "rti", filters=self.z if prob.nz else None)
+        bounds = prob.start_bounds(q, qd, a, self.z, positions=self._placing(q) if place else None)
         if self.model.config.takes_modulus:
-            self._one_way(qd, a, lbx, ubx)
-        if prob.nz:
-            x[:, prob.n_motion:] = self.z
-            lbx[prob.n_motion:prob.nx], ubx[prob.n_motion:prob.nx] = self.z, self.z
+            self._one_way(qd, a, bounds)
         start = time.perf_counter()
-        p = np.asarray(data).ravel(order="F")
-        w = prob.pack(x, controls)
-        cost = None
-        if method == "rti":
-            H, gradient, A, g = self._qp_data(w, p)
-            g = np.asarray(g).ravel()
-            sol = self._qp(h=H, g=gradient, a=A, lba=lbg - g, uba=ubg - g, lbx=lbx - w, ubx=ubx - w)
-            success = bool(self._qp.stats()["success"])
-            w = w + np.asarray(sol["x"]).ravel()
-        else:
-            sol = prob.solver(x0=w, lbx=lbx, ubx=ubx, lbg=lbg, ubg=ubg, p=p)
-            success, cost = bool(prob.solver.stats()["success"]), float(sol["f"])
-            w = sol["x"]
+        w, success, cost = prob.solve_from(x, controls, bounds, data, self._rti if method == "rti" else None)
         elapsed = time.perf_counter() - start
-        x, controls = prob.unpack(w)
-        plan = (x[:-1, 2 * n:3 * n], controls) if self.smooth else (controls, np.zeros_like(controls))
-        return _Solved(plan, success, elapsed, x[0, :n], cost)
+        q0, accelerations, jerks = prob.plan_of(w)
+        return _Solved((accelerations, jerks), success, elapsed, q0, cost)
 
     def _placing(self, q) -> tuple[np.ndarray, np.ndarray]:
         """Bounds on the start's positions when it is placed: each joint within its limits, except
@@ -479,7 +410,7 @@ class MPC:
             lower[k] = upper[k] = q[k]
         return lower, upper
 
-    def _one_way(self, qd, a, lbx, ubx) -> None:
+    def _one_way(self, qd, a, bounds) -> None:
         """Keep the arm turning the way it turns (forwards from rest) over the plan: bounds on the
         yaw's rate, in place, from the first node at which its acceleration can have been brought to
         zero (|a| / jerk limit after now), in the direction of the rate it then has at the soonest,
@@ -494,16 +425,11 @@ class MPC:
         ``nlp`` method from rest 3.10 and 2.05.
         """
         prob, k = self.problem, self.model.config.free.index(0)
-        nw = prob.nx + prob.nu
         jerk = self.limits.jerk[k] if self.smooth else np.inf
         settle = abs(a[k]) / jerk
         rate = qd[k] + a[k] * abs(a[k]) / (2.0 * jerk)
         first = max(1, int(np.searchsorted(prob.t_nodes - prob.t_nodes[0], settle - 1e-12)))
-        rates = slice(first * nw + self.model.n + k, len(lbx), nw)  # the yaw's rate from that node on
-        if rate >= 0.0:
-            lbx[rates] = np.maximum(lbx[rates], 0.0)
-        else:
-            ubx[rates] = np.minimum(ubx[rates], 0.0)
+        prob.keep_rate_sign(bounds, k, first, 1.0 if rate >= 0.0 else -1.0)
 
     def _per_step(self, accelerations, jerks) -> tuple[np.ndarray, np.ndarray]:
         """A plan's (accelerations, jerks) per interval as the same plan per step (the grid's intervals

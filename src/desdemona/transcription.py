@@ -1,0 +1,561 @@
+"""The cueing problem transcribed and solved: variables, bounds, the NLP, its exact derivatives and
+its solvers (thesis 4.2, 5.3; chapter 7 for the parametric, on-line form).
+
+:class:`desdemona.problem.Formulation` states the problem one control interval at a time. Here it
+becomes an NLP by direct multiple shooting: the decision vector in stage order x0, u0, x1, u1, ...,
+xN (what fatrop's structure detection expects), the gaps between intervals (linear and exact, the
+motion being a chain of integrators), the path constraints of each stage, the bounds of the
+variables, and the exact Jacobian and Hessian assembled stage by stage. :class:`CueingProblem`
+solves it off-line from a guess (IPOPT or fatrop); a parametric problem (the desired path as a
+parameter p) is solved from a fixed start by an on-line controller, either to convergence or by one
+real-time iteration (:class:`RealTimeIteration`): :meth:`CueingProblem.start_bounds`,
+:meth:`CueingProblem.solve_from` and :meth:`CueingProblem.plan_of` are all a controller needs to
+know of the layout.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from typing import NamedTuple
+
+import casadi as ca
+import numpy as np
+
+from desdemona import compiled, guard
+from desdemona.model import Model
+from desdemona.plan import Plan, node_states, ramp, start_acceleration, start_state
+from desdemona.problem import Formulation, ProblemOptions
+from desdemona.profiles import DesiredPath
+
+
+# A flat SX graph evaluates ~4x faster than the mapped MX one but takes ~20 us per scalar operation
+# of the stages to build (measured: 3.2 s for the 8 s catapult on yaw-track-cabin, 0.1 s for the 5 s
+# cosine): it pays from about five solves of the same problem on, and only while it stays this small.
+EXPAND_LIMIT = 400_000
+EXPAND_SOLVES = 5
+# The stages' Jacobians and Hessians are independent: evaluate them on two threads.
+MAP_MODE, MAP_THREADS = "thread", 2
+# The mapped stage functions that are compiled (desdemona.compiled), and the work (stages times the
+# instructions of a stage's Jacobian) from which compiling pays by itself: on `full` the Jacobian of
+# a stage has about 36,000 instructions; the catapult's 160 stages of it took 27 ms per iteration
+# interpreted and 5 ms compiled (1.3 s to compile all three). The stage itself stays interpreted: IPOPT's interface
+# differentiates the NLP's f and g once (for the final multipliers), which compiled code cannot be.
+COMPILED = ("hess", "jac", "grad")
+COMPILE_WORK = 2_000_000
+# MUMPS' fill-reducing ordering: approximate minimum degree with quasi-dense rows (QAMD). IPOPT's
+# own time per iteration, measured against MUMPS' automatic choice: catapult on full 24 against 36 ms,
+# double pulse 23 against 31, triple pulse 34 against 45, car lap on yaw-track-cabin 39 against 41;
+# the cosine on full 17 against 16.
+MUMPS_ORDERING = 6
+# fatrop reports a number (its FatropAlg::optimize return code, CasADi 3.7); the words IPOPT uses for it.
+FATROP_STATUS = {0: "Solve_Succeeded", 1: "Maximum_Iterations_Exceeded"}
+
+
+@dataclass(frozen=True)
+class Solution:
+    """What one solve returns: the free joints' initial state and piecewise-constant accelerations.
+
+    t_nodes : (N + 1,) control grid [s]; x : (N + 1, nx) states at the nodes (q, qd, filter states);
+    u : (N, n) joint accelerations per interval; cost : objective value; status, success, iterations,
+    solve_time [s] of the solver itself; lam_g, lam_x : multipliers, for warm starts.
+    """
+
+    t_nodes: np.ndarray
+    x: np.ndarray
+    u: np.ndarray
+    cost: float
+    status: str
+    success: bool
+    iterations: int
+    solve_time: float
+    lam_g: np.ndarray = field(repr=False, default=None)
+    lam_x: np.ndarray = field(repr=False, default=None)
+    smooth: bool = False
+
+    @property
+    def n(self) -> int:
+        return self.u.shape[1]
+
+    @property
+    def accelerations(self) -> np.ndarray:
+        """(N, n) the joints' accelerations at the start of each interval."""
+        return self.x[:-1, 2 * self.n: 3 * self.n] if self.smooth else self.u
+
+    @property
+    def q0(self) -> np.ndarray:
+        return self.x[0, : self.n]
+
+    @property
+    def qd0(self) -> np.ndarray:
+        return self.x[0, self.n: 2 * self.n]
+
+    @property
+    def plan(self) -> Plan:
+        """The joints' plan: this solution's grid, initial state, accelerations and jerks."""
+        return Plan(self.t_nodes, self.q0, self.qd0, self.accelerations, self.u if self.smooth else None)
+
+
+class Bounds(NamedTuple):
+    """The bounds of one solve: on the variables (lbx, ubx) and on the constraints (lbg, ubg)."""
+
+    lbx: np.ndarray
+    ubx: np.ndarray
+    lbg: np.ndarray
+    ubg: np.ndarray
+
+
+class CueingProblem(Formulation):
+    """The NLP of a :class:`~desdemona.problem.Formulation`; built once, solved from many guesses.
+
+    solves : how often it will be solved (a flat graph pays from :data:`EXPAND_SOLVES` on);
+    parametric : the desired path is a parameter (an on-line controller's problem, solved each cycle
+    on a new preview), not a constant.
+    """
+
+    def __init__(self, model: Model, path: DesiredPath, options: ProblemOptions = ProblemOptions(),
+                 solves: int = 1, parametric: bool = False):
+        super().__init__(model, path, options, parametric)
+        self.solves = solves
+        self.monitor = None  # the solver's guard.SolveMonitor, where it has one
+        self._build_nlp()
+
+    def _build_nlp(self) -> None:
+        N, nx, nu = self.N, self.nx, self.nu
+        nw = nx + nu
+        w = ca.MX.sym("w", N * nw + nx)  # stage order x0, u0, x1, u1, ..., xN (fatrop)
+        XU = ca.reshape(w[: N * nw], nw, N)
+        X, U = XU[:nx, :], XU[nx:, :]
+        X_next = ca.horzcat(X[:, 1:], w[N * nw:])
+        # The desired values are constants, or a parameter p (columns per stage) for an MPC.
+        nd = self.stage.size1_in(2)
+        data = ca.MX.sym("p", nd, N) if self.parametric else ca.DM(self.stage_data())
+        # With perception, the filters start in the steady state of the first S: the person has sat
+        # still before the run, and the optimiser may not choose what they felt before t = 0.
+        initial = self._initial_constraint()(X[:, 0], U[:, 0])
+        self.n_initial = initial.numel()
+        self.expanded = self._expand()
+        stage = self._stage_derivatives()
+        self.compiled = self._compile(stage)
+        # f and g on two threads too, unless the graph is flattened (on-line and small problems)
+        serial = self.parametric or self.expanded
+        x_next, L, g = stage["stage"].map(N, "serial" if serial else MAP_MODE, 1 if serial else MAP_THREADS)(X, U, data)
+        G = ca.vertcat(X_next - x_next, g)  # per stage: gap, then path constraints
+        g_all = ca.vertcat(G[:nx, 0], initial, G[nx:, 0], ca.vec(G[:, 1:]))
+        f = ca.sum2(L)
+        self.n_terminal = 0
+        if self.terminal is not None:
+            L_end, g_end = self.terminal(w[N * nw:])
+            f, g_all = f + L_end, ca.vertcat(g_all, g_end)
+            self.n_terminal = g_end.numel()
+        self.nlp = {"x": w, "f": f, "g": g_all}
+        if self.parametric:
+            self.nlp["p"] = ca.vec(data)
+        stage_eq = [True] * nx + [False] * self.n_path
+        self.equality = (stage_eq[:nx] + [True] * self.n_initial + stage_eq[nx:] + stage_eq * (N - 1)
+                         + [False] * self.n_terminal)
+        self.derivatives = self._derivative_functions(w, XU, data, stage)
+        self._bounds()
+        self.solver = self._solver()
+
+    def _initial_constraint(self) -> ca.Function:
+        x, u = ca.SX.sym("x", self.nx), ca.SX.sym("u", self.nu)
+        residual = ca.SX(0, 1)
+        if self.nz and self.options.initial_filter == "steady":
+            n = self.model.n
+            a = x[2 * n:3 * n] if self.smooth else u
+            residual = x[self.n_motion:] - ca.DM(self.filter.steady_gain()) @ self.model.functions["S"](x[:n], x[n:2 * n], a)
+        return ca.Function("initial", [x, u], [residual])
+
+    def _expand(self) -> bool:
+        """Whether to evaluate the NLP as one flat SX graph (``ProblemOptions.expand``)."""
+        if self.options.expand is not None:
+            return self.options.expand
+        return self.N * self.stage.n_instructions() <= EXPAND_LIMIT and self.solves >= EXPAND_SOLVES
+
+    def _compile(self, stage: dict[str, ca.Function]) -> bool:
+        """Replace the mapped stage functions by compiled ones where ``ProblemOptions.compile`` asks
+        for it (:mod:`desdemona.compiled`); whether they were."""
+        wanted = self.options.compile
+        if self.expanded or self.parametric or self.options.solver != "ipopt" or wanted is False:
+            return False  # a flat graph cannot hold compiled code; on-line problems are flattened too
+        functions = [stage[k] for k in COMPILED]
+        if wanted is None and self.N * stage["jac"].n_instructions() < COMPILE_WORK \
+                and not compiled.is_cached(functions):
+            return False
+        functions = compiled.compiled(functions)
+        if functions is None:
+            return False
+        stage.update(zip(COMPILED, functions))
+        return True
+
+    def _stage_derivatives(self) -> dict[str, ca.Function]:
+        """One stage's functions: ``stage`` itself, the upper triangle of its Lagrangian's Hessian
+        ``hess`` and the Jacobian ``jac`` of its gaps and path constraints, the cost and its gradient
+        ``grad``; ``hess0`` and ``jac0`` for the first stage, which also carries the initial constraint."""
+        nx, nu, ni = self.nx, self.nu, self.n_initial
+        x, u = ca.SX.sym("x", nx), ca.SX.sym("u", nu)
+        d = ca.SX.sym("d", self.stage.size1_in(2))
+        x_next, L, g = self.stage(x, u, d)
+        init = self._initial_constraint()(x, u)
+        xu = ca.vertcat(x, u)
+        sigma, l_gap, l_init, l_path = (ca.SX.sym(k, m) for k, m in
+                                        (("sigma", 1), ("l_gap", nx), ("l_init", ni), ("l_path", g.numel())))
+        # the position families lead each stage's g, the torque and power limits follow
+        curved = g.numel() if self.limit_curvature else sum(
+            f.expression.numel() for f in self.families if f.name in ("position", "stopping"))
+        lagrangian = sigma * L - ca.dot(l_gap, x_next) + ca.dot(l_path[:curved], g[:curved])
+        H = ca.triu(ca.hessian(lagrangian, xu)[0])
+        H0 = ca.triu(ca.hessian(lagrangian + ca.dot(l_init, init), xu)[0])
+        J = ca.jacobian(ca.vertcat(-x_next, g), xu)
+        J0 = ca.jacobian(ca.vertcat(-x_next, init, g), xu)
+        hess = ca.Function("stage_hess", [x, u, d, sigma, l_gap, l_path], [H])
+        hess0 = ca.Function("stage_hess0", [x, u, d, sigma, l_gap, l_init, l_path], [H0])
+        jac = ca.Function("stage_jac", [x, u, d], [J])
+        jac0 = ca.Function("stage_jac0", [x, u, d], [J0])
+        grad = ca.Function("stage_grad", [x, u, d], [L, ca.gradient(L, xu)])
+        return {"stage": self.stage, "hess": hess, "hess0": hess0, "jac": jac, "jac0": jac0, "grad": grad}
+
+    def _derivative_functions(self, w, XU, data, stage: dict[str, ca.Function]) -> dict[str, ca.Function]:
+        """Exact Jacobian of the constraints and Hessian of the Lagrangian, assembled from stages.
+
+        The gap constraints x_{k+1} - F(x_k, u_k) are linear in x_{k+1}, so in stage order the Hessian
+        is block diagonal and the Jacobian block bidiagonal. Differentiating one stage symbolically and
+        mapping the result over the horizon is three to four times faster to evaluate than
+        differentiating through the mapped stage (measured on the full configuration).
+        """
+        N, nx, nw, ni = self.N, self.nx, self.nx + self.nu, self.n_initial
+        hess, hess0, jac, jac0, grad = (stage[k] for k in ("hess", "hess0", "jac", "jac0", "grad"))
+
+        lam_f, lam_g = ca.MX.sym("lam_f"), ca.MX.sym("lam_g", self.nlp["g"].numel())
+        npath = self.n_path
+        X, U = XU[:nx, :], XU[nx:, :]
+        l0 = lam_g[: nx + ni + npath]
+        h_blocks = [hess0(X[:, 0], U[:, 0], data[:, 0], lam_f, l0[:nx], l0[nx:nx + ni], l0[nx + ni:])]
+        j_blocks = [jac0(X[:, 0], U[:, 0], data[:, 0])]
+        if N > 1:
+            rest = ca.reshape(lam_g[nx + ni + npath: lam_g.numel() - self.n_terminal], nx + npath, N - 1)
+            hm = hess.map(N - 1, MAP_MODE, MAP_THREADS)(X[:, 1:], U[:, 1:], data[:, 1:], ca.repmat(lam_f, 1, N - 1),
+                                           rest[:nx, :], rest[nx:, :])
+            jm = jac.map(N - 1, MAP_MODE, MAP_THREADS)(X[:, 1:], U[:, 1:], data[:, 1:])
+            h_blocks += [hm[:, k * nw:(k + 1) * nw] for k in range(N - 1)]
+            j_blocks += [jm[:, k * nw:(k + 1) * nw] for k in range(N - 1)]
+        end, l_end = w[N * nw:], lam_g[lam_g.numel() - self.n_terminal:]
+        terminal = self._terminal_derivatives()
+        h_blocks.append(terminal["hess"](end, lam_f, l_end) if terminal else ca.MX(nx, nx))
+        hessian = ca.diagcat(*h_blocks)
+        # the +I of x_{k+1} in the gap rows of stage k
+        row0 = np.r_[0, nx + ni + npath + (nx + npath) * np.arange(N - 1)]
+        rows = (row0[:, None] + np.arange(nx)[None, :]).ravel()
+        cols = (nw * np.arange(1, N + 1)[:, None] + np.arange(nx)[None, :]).ravel()
+        n_g = self.nlp["g"].numel()
+        identity = ca.DM(ca.Sparsity.triplet(n_g, N * nw + nx, rows.tolist(), cols.tolist()), 1.0)
+        jacobian = ca.diagcat(*j_blocks, terminal["jac"](end) if terminal else ca.MX(0, nx)) + identity
+        p = ca.vec(data) if self.parametric else ca.MX(0, 1)
+        L_all, grad_all = grad.map(N, MAP_MODE, MAP_THREADS)(X, U, data)
+        f, grad_end = ca.sum2(L_all), ca.MX(nx, 1)
+        if terminal:
+            L_end, grad_end = terminal["grad"](end)
+            f += L_end
+        gradient = ca.densify(ca.vertcat(ca.vec(grad_all), grad_end))
+        return {
+            "grad_f": ca.Function("nlp_grad_f", [w, p], [f, gradient], ["x", "p"], ["f", "grad_f_x"]),
+            "hess_lag": ca.Function("nlp_hess_l", [w, p, lam_f, lam_g], [hessian],
+                                    ["x", "p", "lam_f", "lam_g"], ["hess_gamma_x_x"]),
+            "jac_g": ca.Function("nlp_jac_g", [w, p], [self.nlp["g"], jacobian], ["x", "p"], ["g", "jac_g_x"]),
+        }
+
+    def _terminal_derivatives(self) -> dict[str, ca.Function] | None:
+        """Hessian block (of the cost, and of the limits with ``limit_curvature``), Jacobian and
+        gradient of the terminal stage, or None without one."""
+        if self.terminal is None:
+            return None
+        x, sigma, l_end = ca.SX.sym("x", self.nx), ca.SX.sym("sigma"), ca.SX.sym("l", self.n_terminal)
+        L, g = self.terminal(x)
+        lagrangian = sigma * L + (ca.dot(l_end, g) if self.limit_curvature else 0)
+        return {"hess": ca.Function("terminal_hess", [x, sigma, l_end], [ca.triu(ca.hessian(lagrangian, x)[0])]),
+                "jac": ca.Function("terminal_jac", [x], [ca.jacobian(g, x)]),
+                "grad": ca.Function("terminal_grad", [x], [L, ca.gradient(L, x)])}
+
+    def _bounds(self) -> None:
+        n, N, nx, o = self.model.n, self.N, self.nx, self.options
+        lim = self.model.limits
+        qmin, qmax = self.position_bounds()
+        if self.smooth:  # a rate is a parabola between nodes: back off by its largest bulge
+            velocity = lim.velocity - lim.jerk * float(self.steps.max())**2 / 8.0
+            x_lo = np.r_[qmin, -velocity, -lim.acceleration, np.full(self.nz, -np.inf)]
+            x_hi = np.r_[qmax, velocity, lim.acceleration, np.full(self.nz, np.inf)]
+            control = lim.jerk
+        else:
+            x_lo = np.r_[qmin, -lim.velocity, np.full(self.nz, -np.inf)]
+            x_hi = np.r_[qmax, lim.velocity, np.full(self.nz, np.inf)]
+            control = lim.acceleration
+        lbx = np.tile(np.r_[x_lo, -control], N)
+        ubx = np.tile(np.r_[x_hi, control], N)
+        lbx, ubx = np.r_[lbx, x_lo], np.r_[ubx, x_hi]
+        last = slice(N * (nx + self.nu), N * (nx + self.nu) + nx)
+        moving = slice(n, self.n_motion)  # rates (and accelerations): zero at rest
+        if o.initial in ("rest", "given"):
+            lbx[moving] = ubx[moving] = 0.0
+        if o.initial == "rest" and self.model.config.aligned:
+            # the cabin follows the force from home, level: the gimbals' start is not free (three
+            # angles give the same level cabin, some near gimbal lock), and so is the arm's, by symmetry
+            lbx[:n] = ubx[:n] = 0.0
+        if o.initial == "given":
+            q0, qd0 = start_state(o.initial_state, n)
+            lbx[:n] = ubx[:n] = q0
+            lbx[n:2 * n] = ubx[n:2 * n] = qd0
+            if self.smooth:
+                lbx[2 * n:3 * n] = ubx[2 * n:3 * n] = start_acceleration(o.initial_state, n)
+        if o.final in ("rest", "centre"):
+            lo, hi = lbx[last], ubx[last]  # views into lbx, ubx
+            lo[moving] = hi[moving] = 0.0
+            if o.final == "centre":
+                prismatic = [k for k, i in enumerate(self.model.config.free)
+                             if self.model.params.joints[i].kind == "prismatic"]
+                lo[prismatic] = hi[prismatic] = 0.0
+        self.lbx, self.ubx = lbx, ubx
+        self.lbg, self.ubg = self._constraint_bounds(None)
+        if o.initial == "given":
+            self.lbx, self.ubx, self.lbg, self.ubg = self.bounds_from(start_state(o.initial_state, n)[0])
+
+    def _constraint_bounds(self, widen=None) -> tuple[np.ndarray, np.ndarray]:
+        """(lbg, ubg): per stage the gaps (equalities), then the families in the order of the stage's
+        g. ``widen`` = (lower, upper, stages): the position and stopping families of the first
+        ``stages[j]`` stages take bound j at least that far out (:meth:`bounds_from`)."""
+        nx, N, bounded = self.nx, self.N, self.model.limits.bounded
+        rows_lo, rows_hi = [], []
+        for k in range(N):
+            lower, upper = [np.zeros(nx)], [np.zeros(nx)]
+            for f in self.families:
+                lo, hi = f.lower, f.upper
+                if widen is not None and f.name in ("position", "stopping"):
+                    wide = k < widen[2][bounded]
+                    count = lo.size // len(bounded)
+                    lo = np.minimum(lo, np.tile(np.where(wide, widen[0][bounded], lo[:len(bounded)]), count))
+                    hi = np.maximum(hi, np.tile(np.where(wide, widen[1][bounded], hi[:len(bounded)]), count))
+                lower.append(lo)
+                upper.append(hi)
+            rows_lo.append(np.concatenate(lower))
+            rows_hi.append(np.concatenate(upper))
+        terminal = np.ones(self.n_terminal)  # torques and powers over their limits at the last node
+        initial = np.zeros(self.n_initial)
+        return (np.r_[rows_lo[0][:nx], initial, rows_lo[0][nx:], *rows_lo[1:], -terminal],
+                np.r_[rows_hi[0][:nx], initial, rows_hi[0][nx:], *rows_hi[1:], terminal])
+
+    def bounds_from(self, q0) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """(lbx, ubx, lbg, ubg) for a plan that starts at the positions q0 (n,).
+
+        The optimiser keeps positions a bulge (qdd_max h^2 / 8) inside their limits, so that the
+        parabola between two points stays inside too. A start in that band (at rest at the end of a
+        joint's travel, say) could then not plan at all: it cannot move the first millimetre within
+        one step's jerk, and an on-line controller would brake for ever. Where q0 lies in the band,
+        the bounds of that joint (nodes, position and stopping rows) reach out to q0 over the time a
+        jerk-limited start from rest needs to cross the band, and one interval more; after that the
+        plan is inside, as everywhere. The bounds unchanged where q0 lies inside. A start in the band
+        moving outwards, whose stopping point lies beyond the start, is still infeasible: no plan
+        from it keeps the stopping condition."""
+        q0 = np.asarray(q0, dtype=float)
+        qmin, qmax = self.position_bounds()
+        lower, upper = np.minimum(qmin, q0), np.maximum(qmax, q0)
+        if np.array_equal(lower, qmin) and np.array_equal(upper, qmax):
+            return self.lbx, self.ubx, self.lbg, self.ubg
+        lim = self.model.limits
+        band = np.maximum(np.nan_to_num(qmin) - np.nan_to_num(lower), np.nan_to_num(upper) - np.nan_to_num(qmax))
+        if self.smooth:
+            crossing = np.cbrt(6.0 * band / lim.jerk)
+        else:
+            crossing = np.sqrt(2.0 * band / lim.acceleration)
+        t = self.t_nodes - self.t_nodes[0]
+        stages = np.searchsorted(t, crossing, side="right") + 1  # intervals started before it is crossed, and one more
+        n, nw = self.model.n, self.nx + self.nu
+        lbx, ubx = self.lbx.copy(), self.ubx.copy()
+        below, above = lower < qmin, upper > qmax
+        last = self.N if self.options.final == "none" else self.N - 1  # a fixed end stays fixed
+        for k in range(1, last + 1):  # the start node is the start
+            wide = k <= stages
+            lo, hi = lbx[k * nw:k * nw + n], ubx[k * nw:k * nw + n]  # views
+            lo[:] = np.where(wide & below, np.minimum(lo, lower), lo)
+            hi[:] = np.where(wide & above, np.maximum(hi, upper), hi)
+        return (lbx, ubx, *self._constraint_bounds((lower, upper, stages)))
+
+    def _solver(self) -> ca.Function:
+        o = self.options
+        if o.solver == "ipopt":
+            opts = {"ipopt": {"print_level": 0, "max_iter": o.max_iter, "tol": o.tol,
+                              "sb": "yes", "mu_strategy": "adaptive",
+                              "linear_solver": "mumps", "mumps_pivot_order": MUMPS_ORDERING},
+                    "print_time": False, "expand": self.expanded}
+            if not self.expanded:  # a flat graph differentiates well by itself
+                opts.update(self.derivatives)
+            if not self.parametric:  # off-line solves are long: stoppable by Ctrl-C, and reported on
+                self.monitor = guard.SolveMonitor(self.nlp["x"].numel(), self.nlp["g"].numel())
+                opts["iteration_callback"] = self.monitor
+            return ca.nlpsol("cueing", "ipopt", self.nlp, opts)
+        opts = {"structure_detection": "auto", "equality": self.equality, "print_time": False,
+                "expand": self.expanded,
+                "fatrop": {"print_level": 0, "max_iter": o.max_iter, "tol": o.tol}}
+        return ca.nlpsol("cueing", "fatrop", self.nlp, opts)
+
+    # ------------------------------------------------------------------------------------------
+
+    def pack(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
+        """Decision vector from node states (N + 1, nx) and controls (N, nu)."""
+        return np.r_[np.hstack([x[:-1], u]).ravel(), x[-1]]
+
+    def unpack(self, w) -> tuple[np.ndarray, np.ndarray]:
+        w = np.asarray(w, dtype=float).ravel()
+        N, nx, nu = self.N, self.nx, self.nu
+        XU = w[: N * (nx + nu)].reshape(N, nx + nu)
+        return np.vstack([XU[:, :nx], w[N * (nx + nu):]]), XU[:, nx:]
+
+    def guess(self, q0, qd0, accelerations, a0=None, clip: bool = True, filters=None) -> tuple[np.ndarray, np.ndarray]:
+        """Node states (N + 1, nx) and controls (N, nu) of a guess: the joints following
+        ``accelerations`` (N, n), one per interval, from (q0, qd0) (with jerk limits: ramped from
+        ``a0``, default the first, at most at j_max, :func:`desdemona.plan.ramp`), clipped to the
+        limits with ``clip``; filter states at ``filters`` (the state a controller carries), else at the
+        steady state of the first S."""
+        lim, h = self.model.limits, self.steps[:, None]
+        accelerations = np.asarray(accelerations, dtype=float)
+        if self.smooth:
+            starts, u = ramp(accelerations, h, a0, lim.jerk)
+            a = np.vstack([starts, starts[-1] + u[-1] * h[-1]])
+        else:
+            starts, u, a = accelerations, accelerations, np.zeros((self.N + 1, 0))
+        q, qd = node_states(q0, qd0, starts, h, u if self.smooth else None)
+        if clip:
+            qd = np.clip(qd, -lim.velocity, lim.velocity)
+            q = np.clip(q, lim.position_min, lim.position_max)
+        x = np.hstack([q, qd, a])
+        if self.nz:
+            S0 = self.model.S(q0, qd0, starts[0])
+            x = np.hstack([x, np.tile(self.filter.steady_state(S0), (self.N + 1, 1))])
+            if filters is not None:
+                x[:, self.n_motion:] = filters
+        return x, u
+
+    def solve(self, x_guess: np.ndarray, u_guess: np.ndarray, warm: Solution | None = None) -> Solution:
+        """Solve from a guess of node states (N + 1, nx) and controls (N, nu), optionally warm-started
+        with the multipliers of an earlier solution of a problem of the same shape."""
+        args = {"x0": self.pack(x_guess, u_guess), "lbx": self.lbx, "ubx": self.ubx,
+                "lbg": self.lbg, "ubg": self.ubg}
+        if warm is not None and warm.lam_g is not None and self.options.solver == "ipopt":
+            args.update(lam_g0=warm.lam_g, lam_x0=warm.lam_x)
+        start = time.perf_counter()
+        with guard.solving(self.monitor):  # raises guard.Interrupted after a stop was asked for
+            sol = self.solver(**args)
+        elapsed = time.perf_counter() - start
+        stats = self.solver.stats()
+        x, u = self.unpack(sol["x"])
+        status = stats.get("return_status", stats.get("unified_return_status", "unknown"))
+        if isinstance(status, int):
+            status = FATROP_STATUS.get(status, f"fatrop_return_code_{status}")
+        return Solution(t_nodes=self.t_nodes.copy(), x=x, u=u, cost=float(sol["f"]), status=status,
+                        success=bool(stats["success"]), iterations=int(stats.get("iter_count", -1)),
+                        solve_time=elapsed, lam_g=np.asarray(sol["lam_g"]).ravel(),
+                        lam_x=np.asarray(sol["lam_x"]).ravel(), smooth=self.smooth)
+
+    # ------------------------------------------------------------------------------------------
+    # a controller's solves: a parametric problem from a fixed start
+
+    def start_bounds(self, q, qd, a=None, z=None, positions=None) -> Bounds:
+        """The bounds of a plan that starts at the positions ``q`` (or, with ``positions`` = (lower,
+        upper), anywhere within them), the rates ``qd``, with jerk limits the accelerations ``a``, and
+        with a perception model the filter states ``z``: "fix the start". The rest of the plan is
+        bounded as :meth:`bounds_from` ``q`` has it."""
+        n = self.model.n
+        lbx, ubx, lbg, ubg = self.bounds_from(q)
+        lbx, ubx = lbx.copy(), ubx.copy()
+        lbx[:n], ubx[:n] = (q, q) if positions is None else positions
+        lbx[n:2 * n], ubx[n:2 * n] = qd, qd
+        if self.smooth:
+            lbx[2 * n:3 * n], ubx[2 * n:3 * n] = a, a
+        if self.nz:
+            lbx[self.n_motion:self.nx], ubx[self.n_motion:self.nx] = z, z
+        return Bounds(lbx, ubx, lbg, ubg)
+
+    def keep_rate_sign(self, bounds: Bounds, joint: int, first: int, sign: float) -> None:
+        """Keep free joint ``joint``'s rate at the nodes from ``first`` on of the sign of ``sign``
+        (>= 0: not below zero; < 0: not above), in ``bounds`` in place."""
+        nw = self.nx + self.nu
+        rates = slice(first * nw + self.model.n + joint, len(bounds.lbx), nw)
+        if sign >= 0.0:
+            bounds.lbx[rates] = np.maximum(bounds.lbx[rates], 0.0)
+        else:
+            bounds.ubx[rates] = np.minimum(bounds.ubx[rates], 0.0)
+
+    def solve_from(self, x, controls, bounds: Bounds, data, rti: RealTimeIteration | None = None):
+        """Solve the parametric problem from the guess (node states ``x``, ``controls``) within
+        ``bounds`` for the stages' ``data`` (:meth:`with_steps`): by one real-time iteration with
+        ``rti``, else by the solver to convergence. Returns (w, success, cost), the cost None for a
+        real-time iteration."""
+        p = np.asarray(data).ravel(order="F")
+        w = self.pack(x, controls)
+        if rti is not None:
+            w, success = rti(w, p, bounds)
+            return w, success, None
+        sol = self.solver(x0=w, lbx=bounds.lbx, ubx=bounds.ubx, lbg=bounds.lbg, ubg=bounds.ubg, p=p)
+        return sol["x"], bool(self.solver.stats()["success"]), float(sol["f"])
+
+    def plan_of(self, w) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(q0, accelerations, jerks) of a decision vector: the start's positions (n,), and per
+        interval the accelerations at its start and its jerks (N, n) (zero without jerk limits)."""
+        x, controls = self.unpack(w)
+        n = self.model.n
+        if self.smooth:
+            return x[0, :n], x[:-1, 2 * n:3 * n], controls
+        return x[0, :n], controls, np.zeros_like(controls)
+
+
+class RealTimeIteration:
+    """The Gauss-Newton QP of one real-time iteration of a parametric :class:`CueingProblem`: a data
+    Function (``data``) and a conic solver (``qp``, CasADi's ``qp_solver`` plugin).
+
+    Cost: sum of squared stage residuals r (the problem's own), Hessian 2 J_r^T J_r (convex, so
+    active-set solvers such as daqp apply), gradient 2 J_r^T r; constraints linearised with their
+    exact Jacobian; all at the linearisation point w and the preview p."""
+
+    def __init__(self, prob: CueingProblem, qp_solver: str = "hpipm"):
+        N, nx, nu = prob.N, prob.nx, prob.nu
+        nw = nx + nu
+        x, u = ca.SX.sym("x", nx), ca.SX.sym("u", nu)
+        d = ca.SX.sym("d", prob.stage.size1_in(2))
+        r = prob.residual(x, u, d)
+        J = ca.jacobian(r, ca.vertcat(x, u))
+        stage = ca.Function("stage_gn", [x, u, d], [2.0 * J.T @ J, 2.0 * J.T @ r])
+        w, p = prob.nlp["x"], prob.nlp["p"]
+        XU = ca.reshape(w[: N * nw], nw, N)
+        data = ca.reshape(p, d.numel(), N)
+        H_blocks, g_blocks = stage.map(N, "serial")(XU[:nx, :], XU[nx:, :], data)
+        # a tiny diagonal keeps the QP strictly convex in directions the cost does not see
+        H = ca.diagcat(*[H_blocks[:, k * nw:(k + 1) * nw] for k in range(N)], ca.MX(nx, nx))
+        H = H + 1e-9 * ca.MX.eye(N * nw + nx)
+        gradient = ca.vertcat(ca.vec(g_blocks), ca.MX.zeros(nx))
+        g, A = prob.derivatives["jac_g"](w, p)
+        # flattened to SX: the mapped graph spends more time slicing than computing (0.22 -> 0.10 ms
+        # for the 2 s dfs horizon at 50 Hz; building the flat graph takes 0.01-0.1 s)
+        qp_data = ca.Function("qp_data", [w, p], [H, gradient, A, g]).expand()
+        options = {"error_on_fail": False, "print_time": False}
+        if qp_solver == "hpipm":
+            # HPIPM exploits the stage structure (measured: 0.8 ms for the 2 s dfs horizon at 50 Hz in
+            # its speed_abs mode, 1.1 ms in speed, against 38 ms for dense daqp on the same QP); it must
+            # be told the stages' sizes.
+            ng = prob.n_path
+            options.update(N=N, nx=[nx] * (N + 1), nu=[nu] * N + [0], ng=[ng + prob.n_initial] + [ng] * (N - 1) + [0],
+                           hpipm={"iter_max": 50, "mode": "speed_abs", "res_g_max": 1e-6, "res_b_max": 1e-8,
+                                  "res_d_max": 1e-8, "res_m_max": 1e-7})
+        elif qp_solver == "qpoases":
+            options.update(printLevel="none")
+        elif qp_solver == "osqp":
+            options["osqp"] = {"verbose": False, "eps_abs": 1e-7, "eps_rel": 1e-7, "max_iter": 4000}
+        qp = ca.conic("rti", qp_solver, {"h": qp_data.sparsity_out(0), "a": qp_data.sparsity_out(2)}, options)
+        self.data, self.qp = qp_data, qp
+
+    def __call__(self, w, p, bounds: Bounds) -> tuple[np.ndarray, bool]:
+        """One QP step from the linearisation point ``w`` for the parameter ``p``: the new point, and
+        whether the QP solver succeeded."""
+        H, gradient, A, g = self.data(w, p)
+        g = np.asarray(g).ravel()
+        sol = self.qp(h=H, g=gradient, a=A, lba=bounds.lbg - g, uba=bounds.ubg - g, lbx=bounds.lbx - w,
+                      ubx=bounds.ubx - w)
+        return w + np.asarray(sol["x"]).ravel(), bool(self.qp.stats()["success"])
