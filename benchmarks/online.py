@@ -53,7 +53,8 @@ import numpy as np
 from desdemona import Model, default_params, profiles
 from desdemona.configs import get_configuration
 from desdemona.offline import OptimizeOptions, optimize
-from desdemona.online import MPCOptions, OnlineOptions, default_horizon, run
+from desdemona.mpc import MPCOptions, default_horizon
+from desdemona.online import OnlineOptions, run
 from desdemona.problem import ProblemOptions
 from desdemona.profiles import DesiredPath
 
@@ -77,7 +78,7 @@ def bounds(path, model, step, home: bool = False) -> dict[str, float]:
     - "bound": the same with the on-line formulation's stopping condition (every planned state can
       brake to rest within the position limits at ``braking`` times the acceleration limit: the MPC
       must keep it because it does not know what follows its horizon). An on-line run from rest
-      chooses its start too (:meth:`desdemona.online.MPC.place`), so this is the bound no on-line
+      chooses its start too (:meth:`desdemona.mpc.MPC.place`), so this is the bound no on-line
       controller from rest can beat;
     - "home" (when asked): the bound for a start at home (``--initial home``).
 

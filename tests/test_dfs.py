@@ -8,7 +8,8 @@ import pytest
 
 from desdemona import Model, profiles
 from desdemona.cli import main
-from desdemona.online import MPCOptions, OnlineOptions, run
+from desdemona.mpc import MPCOptions
+from desdemona.online import OnlineOptions, run
 from desdemona.params import JOINT_NAMES
 
 # The acceptance setting: 50 Hz, a 2 s horizon.

@@ -7,7 +7,7 @@ import pytest
 
 from desdemona import profiles
 from desdemona.model import Model
-from desdemona.online import MPC, MPCOptions
+from desdemona.mpc import MPC, MPCOptions
 from desdemona.params import ParameterError, load_params
 from desdemona.plan import Plan, advance, ramp
 from desdemona.problem import ProblemOptions

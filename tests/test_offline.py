@@ -190,7 +190,7 @@ def test_from_rest_the_guesses_spin_the_yaw_up_and_leave_the_stationary_point(pa
 def test_a_start_at_the_end_of_a_joints_travel_is_planned_from(params):
     """The optimiser keeps positions a parabola's bulge inside their limits; a start in that band (the
     track at rest at its end) must still be planned from, off-line and on-line, not be infeasible."""
-    from desdemona.online import MPC, MPCOptions
+    from desdemona.mpc import MPC, MPCOptions
     from desdemona.predictors import predict_perfect
 
     model = Model(params, "yaw-track-cabin")

@@ -8,7 +8,8 @@ import pytest
 
 from desdemona import Model, profiles
 from desdemona.offline import OptimizeOptions, optimize
-from desdemona.online import MPC, MPCOptions, OnlineOptions, run
+from desdemona.mpc import MPC, MPCOptions
+from desdemona.online import OnlineOptions, run
 from desdemona.plan import advance
 from desdemona.predictors import PREDICTORS, HoldPredictor, predict_hold, predict_linear, predict_perfect
 from desdemona.perception import thesis_model
@@ -329,7 +330,7 @@ def test_the_felt_filters_follow_every_sub_step_of_a_cycle(params):
 def test_the_command_plans_further_ahead_where_the_track_moves(tmp_path, config, horizon):
     """Without --horizon: 4 s where the track's position must be planned, 2 s on dfs, at most the path."""
     from desdemona.cli import main
-    from desdemona.online import default_horizon
+    from desdemona.mpc import default_horizon
 
     assert default_horizon(Model(config=config).config) == horizon
     out = tmp_path / config

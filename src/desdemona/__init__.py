@@ -26,7 +26,7 @@ _EXPORTS = {
     "CONFIGURATIONS": "configs", "Configuration": "configs", "Limits": "configs", "get_configuration": "configs",
     "Model": "model",
     "OptimizeOptions": "offline", "Result": "offline", "optimize": "offline",
-    "MPCOptions": "online", "OnlineOptions": "online", "OnlineResult": "online", "run_online": ("online", "run"),
+    "MPCOptions": "mpc", "OnlineOptions": "online", "OnlineResult": "online", "run_online": ("online", "run"),
     "Body": "params", "JointLimits": "params", "MachineParams": "params", "ParameterError": "params",
     "default_params": "params", "load_params": "params", "thesis_toy_params": "params",
     "Plan": "plan",

@@ -26,7 +26,7 @@ import scipy.signal
 
 from desdemona.kinematics import gimbal_alignment
 from desdemona.model import Model
-from desdemona.plan import Plan, advance, start_acceleration, start_state
+from desdemona.plan import Plan, State, advance, start_acceleration, start_state
 from desdemona.profiles import DesiredPath
 
 DFS_RADIUS = 4.0  # |q2| of the dfs configurations [m]
@@ -387,8 +387,7 @@ def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.
             return np.r_[yaw_step[0], gimbal_step[0]], np.r_[yaw_step[1], gimbal_step[1]]
 
         u[k], jerk[k] = guard.first(q, qd, h, (candidate(scale) for scale in SCALES))
-        q, qd = advance(q, qd, u[k], h, jerk[k])
-        a = u[k] + jerk[k] * h
+        q, qd, a = State(q, qd, a).advance(u[k], h, jerk[k])
     return Plan(t, q0, qd0, u, jerk)
 
 
@@ -502,6 +501,5 @@ def classical_washout(path: DesiredPath, model: Model, times=None, settings: Was
             command = np.where(tilt, _rate_command(rate - qd, 1.0 / RATE_LOOP, follower.J), command)
         command = np.clip(command, -lim.acceleration, lim.acceleration)
         u[k], jerk[k] = guard.first(q, qd, h, (follower.step(q, qd, a, h, s * command) for s in SCALES))
-        q, qd = advance(q, qd, u[k], h, jerk[k])
-        a = u[k] + jerk[k] * h
+        q, qd, a = State(q, qd, a).advance(u[k], h, jerk[k])
     return Plan(t, q0, qd0, u, jerk)

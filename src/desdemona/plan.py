@@ -11,7 +11,7 @@ On a machine with jerk limits the accelerations are continuous, u[k + 1] = u[k] 
 jerk is bounded everywhere; without them (the thesis' setting, section 5.3) jerk is zero and the
 accelerations are held constant per interval, stepping at the nodes.
 
-:func:`advance` is the one place this formula lives; it takes floats, NumPy arrays and CasADi symbols
+:func:`advance` is the one place this formula lives (:meth:`State.advance` carries a whole state with it); it takes floats, NumPy arrays and CasADi symbols
 alike, so the optimisers' transcription, the MPC's limit check, the plant simulation and the
 independent check all use the same definition. :class:`Plan` is the value every off-line result,
 closed-loop run and baseline returns: the grid, the initial state and the accelerations, evaluated at
@@ -21,6 +21,7 @@ any time with :meth:`Plan.at`.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -35,6 +36,21 @@ def advance(q, qd, qdd, s, jerk=None):
     if jerk is None:
         return q + qd * s + 0.5 * qdd * s * s, qd + qdd * s
     return q + qd * s + 0.5 * qdd * s * s + jerk * (s * s * s / 6.0), qd + qdd * s + 0.5 * jerk * s * s
+
+
+class State(NamedTuple):
+    """The free joints' motion at one instant: positions q, rates qd and accelerations a, (n,) each
+    (a tuple, as :meth:`desdemona.mpc.MPC.step` takes a measured state)."""
+
+    q: np.ndarray
+    qd: np.ndarray
+    a: np.ndarray
+
+    def advance(self, qdd, h: float, jerk) -> State:
+        """The state ``h`` seconds on, the acceleration starting at ``qdd`` and changing at ``jerk``
+        (:func:`advance`; the acceleration then is qdd + jerk h)."""
+        q, qd = advance(self.q, self.qd, qdd, h, jerk)
+        return State(q, qd, qdd + jerk * h)
 
 
 def node_states(q0, qd0, u, h, jerk=None) -> tuple[np.ndarray, np.ndarray]:

@@ -1,4 +1,4 @@
-"""The optimal cueing problem: cost, limits and transcription (thesis 3.4, 4.1, 4.2, chapters 5-7).
+"""The optimal cueing problem: its cost and limits, one control interval at a time (thesis 3.4, 4.1, 4.2, chapters 5-7).
 
 Find joint accelerations qdd(t) of the free joints such that the path S felt in the cabin follows the
 desired S_d::
@@ -9,7 +9,7 @@ desired S_d::
 or, for the ``dfs`` configuration, the modulus error (M - M_d)^2 of eq. 7.3; with a perception model
 (chapter 6) the error is taken between the *perceived* S and S_d.
 
-Transcription: direct multiple shooting on a control grid h_u (thesis 4.2, 5.3). On a machine with
+Transcription (:mod:`desdemona.transcription`): direct multiple shooting on a control grid h_u (thesis 4.2, 5.3). On a machine with
 jerk limits (every built-in one but the thesis' toy set) the states are (q, qd, qdd) of the free joints
 and the controls their jerks j, held constant per interval: the accelerations are continuous and
 piecewise linear, and |j| <= j_max holds everywhere. Without jerk limits (the thesis' setting) the
@@ -57,15 +57,16 @@ from desdemona.profiles import DesiredPath
 
 @dataclass(frozen=True)
 class ProblemOptions:
-    """How to pose and solve the cueing problem.
+    """How to pose and solve the cueing problem. The measurements behind the defaults are in
+    ``docs/benchmarks.md``, "Design decisions and the measurements behind them" (the headings in
+    quotes below).
 
     h_u : control step [s] (thesis h_qdd, section 5.3).
     steps : the intervals' lengths [s] where the grid is not uniform (an on-line horizon fine near now
         and coarse further on), None for ``h_u`` throughout; not with a perception model, whose
         filters are discretised for one step.
     substeps : sub-steps per control interval for cost and limits. Two are enough where S_d is smooth
-        on the scale of h_u: the fine-grid RMS of the 4.7 cosine is 0.02465 with 2, 0.02459 with 4
-        and 0.02457 with 10 sub-steps, at a fifth of the cost of 10.
+        on the scale of h_u ("Sub-steps").
     initial : "free" (optimised, section 5.2), "rest" (at rest, position free; on ``dfs`` at home, the
         cabin level) or "given" (``initial_state``).
     initial_state : (q0, qd0) of the free joints when initial == "given".
@@ -84,27 +85,19 @@ class ProblemOptions:
     expand : evaluate the NLP as one flat SX graph (fast to evaluate, slow to build); None chooses:
         flat when the problem will be solved EXPAND_SOLVES times or more and is below EXPAND_LIMIT.
     limit_curvature : put the second derivatives of the torque and power limits into IPOPT's Hessian.
-        They are 96% of the Hessian's operations on ``full`` (122,000 of 127,000 per interval) and
-        change neither the optimum nor, measured, the iteration count: None leaves them out on
-        configurations of more than three joints. Every other term (cost, gaps, positions,
-        braking) stays exact.
+        They are almost all of the Hessian's operations on ``full`` and change neither the optimum nor,
+        measured, the iteration count: None leaves them out on configurations of more than three
+        joints ("Limit curvature"). Every other term (cost, gaps, positions, braking) stays exact.
     jerk_weight : the rho of the jerk, against j_max (with jerk limits): a plan that used the whole
         jerk limit all the time would pay as much as sqrt(rho) m/s^2 of RMS error. It keeps the joints
-        from reversing their accelerations where the cue gains little from it. None: 5 on ``dfs``, 1
-        elsewhere. Measured from rest: on dfs, ending at rest (the command line's default),
-        dfs-catapult reverses at most 1.08 times a second with 3 and 0.92 with 5 (modulus RMS 2.507,
-        2.531), the roller coaster 0.83 and 0.73 (2.903, 2.921); the catapult on full has RMS 1.254,
-        1.294, 1.370 and 1.568 with 1e-4, 0.1, 1 and 5 (reversals 1.13, 0.75, 0.63, 0.5 per second;
-        215, 116, 107 and 124 iterations); on yaw-track-cabin 3.808 with 1e-4 and 3.827 with 3.
+        from reversing their accelerations where the cue gains little from it. None:
+        :func:`default_jerk_weight`.
     unweighted : weight of the channels of S that Q leaves at zero, in the cost only (RMS figures keep
         Q). With it, joints that move only unweighted channels (on ``full``, the gimbals turning the
         cabin about the felt force) stop being flat directions of the cost. None: 0.003 on
-        configurations of more than three joints, 0 otherwise. Measured on ``full`` from the first
-        smart guess: the catapult's fine-grid RMS is 1.3318 without it, 1.3319 with 0.003 and 1.3697
-        with 0.01 (105-167 iterations); the car lap 0.9744 with each; the cosine converges from all
-        four default starts with 0.003 (94-202 iterations), and not within 500 without it. On-line
-        (``parametric``) 0.01: one QP per cycle, linearised at the last plan, suffers more from flat
-        directions; the MPC's double pulse on full has RMS 2.33 with 0.01 and 2.53 with 0.003.
+        configurations of more than three joints, 0 otherwise; on-line (``parametric``) 0.01, since one
+        QP per cycle, linearised at the last plan, suffers more from flat directions ("Unweighted
+        channels").
     compile : evaluate the stages' functions compiled to machine code, kept in a cache on disk
         (:mod:`desdemona.compiled`; the results are the same, about six times faster to evaluate).
         None: where the interpreted evaluation would take long (``COMPILE_WORK``) or the library is
@@ -153,6 +146,17 @@ class ProblemOptions:
             raise ValueError(f"unweighted = {self.unweighted!r}: must be a number >= 0")
         if not (self.regularisation >= 0 and 0 <= self.margin < 0.5):
             raise ValueError("regularisation must be >= 0 and margin in [0, 0.5)")
+
+
+def default_jerk_weight(config, online: bool = False) -> float:
+    """The jerk's weight (:attr:`ProblemOptions.jerk_weight`) unless a session sets it: 1, and on a
+    configuration whose cabin follows the force (``dfs``) 5 off-line and 3 on-line. There the arm and
+    gimbals swing the force's direction and would reverse their accelerations often for little cue;
+    a controller that sees only its horizon pays for every hesitation, so it is weighted less than
+    the off-line plan, which sees the whole path ("Off-line jerk weight", "On-line jerk weight")."""
+    if not config.aligned:
+        return 1.0
+    return 3.0 if online else 5.0
 
 
 @dataclass(frozen=True, eq=False)
@@ -205,8 +209,8 @@ class Formulation:
             (0.01 if parametric else 0.003) if large else 0.0)
         self.cost_weights = np.where(self.weights > 0, self.weights, floor)
         self.limit_curvature = options.limit_curvature if options.limit_curvature is not None else not large
-        self.jerk_weight = options.jerk_weight if options.jerk_weight is not None else (
-            5.0 if model.config.aligned else 1.0)
+        self.jerk_weight = options.jerk_weight if options.jerk_weight is not None else default_jerk_weight(
+            model.config, online=parametric)
         self.vestibular = options.perception
         self.filter = self.vestibular.discretize(self.h_sub) if self.vestibular else None
         self.nz = self.vestibular.n_states if self.vestibular else 0

@@ -490,7 +490,7 @@ def trajectory_dataframe(traj: Trajectory, config):
 
 def start_description(result) -> dict:
     """Where an on-line session started: the ``initial`` option and the free joints' positions and
-    rates (SI units) at t = 0, which "rest" chooses (:meth:`desdemona.online.MPC.place`)."""
+    rates (SI units) at t = 0, which "rest" chooses (:meth:`desdemona.mpc.MPC.place`)."""
     names, plan = result.model.config.joint_names, result.plan
     return {"initial": result.options.initial, "q0": dict(zip(names, map(float, plan.q0))),
             "qd0": dict(zip(names, map(float, plan.qd0)))}

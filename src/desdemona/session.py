@@ -151,19 +151,20 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
            reference: DesiredPath | None = None, **timing) -> Session:
     """The session of ``online``: the cued path and its :class:`~desdemona.online.OnlineOptions`.
 
-    horizon : how far the preview reaches [s], None: :func:`~desdemona.online.default_horizon`
+    horizon : how far the preview reaches [s], None: :func:`~desdemona.mpc.default_horizon`
     (at most the path's duration); reach : how far each plan looks [s], None: at least the default
     horizon; step : the plan's step [s]; predictor and reference (a recording of the same course, for
     "route"): :class:`OnlineOptions`; ``timing``: the other :class:`MPCOptions` fields (replan, delay,
     deadline, method, tail_step).
     """
-    from desdemona import online as online_module
+    from desdemona.mpc import MPCOptions, default_horizon
+    from desdemona.online import OnlineOptions
 
     if reference is not None and (reference.S_d is None) != (path.S_d is None):
         raise ChoiceError(f"--reference {reference.name}: its channels ({'t,M' if reference.S_d is None else 'S'}) "
                          f"differ from the path's")
     path = cued(path, model, choices)
-    default = min(online_module.default_horizon(model.config), path.duration)
+    default = min(default_horizon(model.config), path.duration)
     horizon = default if horizon is None else horizon
     if not (0 < step and 2 * step <= horizon <= path.duration):
         raise ChoiceError(f"need 0 < --step, 2 steps <= --horizon <= the path's {path.duration:g} s")
@@ -182,14 +183,12 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
         raise ChoiceError("--predictor route needs --reference, a recording of the same course" if reference is None
                          else "--reference is used only with --predictor route")
     try:
-        mpc = online_module.MPCOptions(horizon=horizon, step=step, reach=reach, **cost(path, model, choices),
-                                       **timing)
+        mpc = MPCOptions(horizon=horizon, step=step, reach=reach, **cost(path, model, choices), **timing)
     except ValueError as exc:
         raise ChoiceError(f"--replan: {exc}") from None
     size = sizing.check_fits_online(path, model.config, mpc)
     initial, state = start(model, choices, ONLINE_STARTS)
-    options = online_module.OnlineOptions(mpc, predictor=predictor, reference=reference, initial=initial,
-                                          initial_state=state)
+    options = OnlineOptions(mpc, predictor=predictor, reference=reference, initial=initial, initial_state=state)
     return Session(path, model, options, size)
 
 

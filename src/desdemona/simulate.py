@@ -16,7 +16,7 @@ import numpy as np
 
 from desdemona.model import Model
 from desdemona.perception import VestibularModel
-from desdemona.plan import Plan, advance
+from desdemona.plan import Plan, State
 from desdemona.profiles import DesiredPath
 
 TOLERANCE = 1e-6
@@ -212,7 +212,7 @@ def closed_loop(controller, path: DesiredPath, predictor, q0=None, qd0=None,
     controller : has ``step((q, qd, qdd), preview) -> command`` with ``command.sequence`` (r, n) the
         accelerations at the start of each step, ``command.jerk`` (r, n) their rates of change over it,
         ``.source``, ``.compute_time``, ``.reason``, and ``options`` with ``step``, ``horizon``,
-        ``period`` (T_c = r steps) and ``delay`` (e.g. :class:`desdemona.online.MPC`);
+        ``period`` (T_c = r steps) and ``delay`` (e.g. :class:`desdemona.mpc.MPC`);
         predictor : ``predictor(path, now, horizon) -> preview``, e.g.
         :func:`desdemona.predictors.predictor` (name). Every cycle's compute time is recorded.
 
@@ -229,10 +229,9 @@ def closed_loop(controller, path: DesiredPath, predictor, q0=None, qd0=None,
     o = controller.options
     h, n, r = o.step, controller.model.n, o.replan_steps
     steps = int(math.floor((duration or path.duration) / h + 1e-9))
-    q = np.zeros(n) if q0 is None else np.asarray(q0, float).copy()
-    qd = np.zeros(n) if qd0 is None else np.asarray(qd0, float).copy()
-    a = np.zeros(n)
-    start_q, start_qd = q.copy(), qd.copy()
+    state = State(np.zeros(n) if q0 is None else np.asarray(q0, float).copy(),
+                  np.zeros(n) if qd0 is None else np.asarray(qd0, float).copy(), np.zeros(n))
+    start_q, start_qd = state.q.copy(), state.qd.copy()
     u, jerks, starts, sources, times, reasons = [], [], [], [], [], []
     pending = (np.zeros((r, n)), np.zeros((r, n)))  # with delay: the commands of the running cycle
 
@@ -243,26 +242,25 @@ def closed_loop(controller, path: DesiredPath, predictor, q0=None, qd0=None,
         reasons.append(command.reason)
 
     if o.delay:  # the first plan: computed in the cycle before the session, from its known start
-        command = controller.step((q, qd, a), predictor(path, 0.0, o.horizon))
+        command = controller.step(state, predictor(path, 0.0, o.horizon))
         record(-o.period, command)
         pending = (command.sequence, command.jerks)
     for k in range(0, steps, r):
         now = k * h
         if o.delay:
-            state = (q, qd, a)
+            ahead = state
             for qdd, jerk in zip(*pending):
-                state = (*advance(state[0], state[1], qdd, h, jerk), qdd + jerk * h)
-            command = controller.step(state, _later(predictor(path, now, o.horizon + o.period), o.period))
+                ahead = ahead.advance(qdd, h, jerk)
+            command = controller.step(ahead, _later(predictor(path, now, o.horizon + o.period), o.period))
             (sequence, jerk_sequence), pending = pending, (command.sequence, command.jerks)
         else:
-            command = controller.step((q, qd, a), predictor(path, now, o.horizon))
+            command = controller.step(state, predictor(path, now, o.horizon))
             sequence, jerk_sequence = command.sequence, command.jerks
         record(now, command)
         for qdd, jerk in list(zip(sequence, jerk_sequence))[:steps - k]:
             u.append(qdd)
             jerks.append(jerk)
-            q, qd = advance(q, qd, qdd, h, jerk)
-            a = qdd + jerk * h
+            state = state.advance(qdd, h, jerk)
     return ClosedLoop(Plan(np.arange(len(u) + 1) * h, start_q, start_qd, np.array(u), np.array(jerks)),
                       np.array(starts), tuple(sources), np.array(times), tuple(reasons))
 

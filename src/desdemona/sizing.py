@@ -123,7 +123,7 @@ ONLINE_STEPS = (0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2)  # the --step v
 
 
 def estimate_online(path: DesiredPath, config: Configuration, mpc) -> Size:
-    """The size of an on-line run of ``path`` on ``config`` with the :class:`~desdemona.online.MPCOptions`
+    """The size of an on-line run of ``path`` on ``config`` with the :class:`~desdemona.mpc.MPCOptions`
     ``mpc``: ``intervals`` of one plan, ``variables`` of one plan's problem, and the run's memory."""
     intervals = len(mpc.grid())
     steps = max(1, int(round(path.duration / mpc.step)))

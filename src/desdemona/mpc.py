@@ -1,0 +1,492 @@
+"""The on-line cueing controller: a model predictive controller with a safe fallback (thesis chapter 7).
+
+With a pilot in the loop the desired path is known only a horizon T_h ahead. :class:`MPC` is built
+once and stepped every re-plan period T_c (a whole number of plan steps h; by default T_c = h):
+``step(state, preview) -> Command``, the accelerations of the coming period. Each step solves the
+problem of :mod:`desdemona.problem` over the horizon (eq. 3.8) from the measured state (or, with the
+thesis' computation delay, the state predicted for when the plan takes over, figure 7.2),
+warm-started from the previous plan shifted by one period, with every limit hard and every planned state
+*stoppable* (each track and heave position can still brake to rest within its limits: the end
+condition of chapter 7, section 3.4's K, imposed at every node so that any remainder of a plan ends
+stoppable too). The solve itself, and the layout of its variables, belong to
+:mod:`desdemona.transcription`.
+
+Fallback, in order, whenever the solver fails, misses its deadline or is given an unusable preview:
+the next step of the previous plan; when no plan is left, a braking command. Every command, whatever
+its source, is checked against every limit over the coming step before it is returned; a braking
+command is scaled down until it passes. The controller never returns a command that violates a limit.
+
+The measurements behind the defaults are in ``docs/benchmarks.md``, "Design decisions and the
+measurements behind them"; the predictors that turn what is known now into the preview are in
+:mod:`desdemona.predictors`; a whole closed-loop session is :func:`desdemona.online.run`.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from typing import Literal, NamedTuple
+
+import numpy as np
+
+from desdemona.model import Model
+from desdemona.perception import VestibularModel
+from desdemona.plan import Plan, State, advance
+from desdemona.problem import ProblemOptions
+from desdemona.profiles import ALIGNED_WEIGHTS, DesiredPath, vertical_force
+from desdemona.simulate import TOLERANCE
+from desdemona.transcription import CueingProblem, RealTimeIteration
+
+
+REST_RATE = 0.05  # rad/s: below this over a whole seed the yaw counts as still (0.01 m/s^2 centripetal at 4 m)
+
+
+@dataclass(frozen=True)
+class MPCOptions:
+    """What the controller plans and how (thesis chapter 7).
+
+    horizon : T_h [s], how far the preview reaches; step : h [s], the grid of the plan (its
+    accelerations are held this long); replan : T_c [s], the period at which a new plan is computed,
+    a whole number of steps (default: every step); delay : simulate the computation time as the thesis
+    does (7.1, figure 7.2): the plan computed during [t, t + T_c] from the state at t is applied from
+    t + T_c, so it starts from the state predicted there; deadline : compute budget per plan [s]
+    (default: T_c); substeps, regularisation, margin, weights, jerk_weight : as in
+    :class:`~desdemona.problem.ProblemOptions` (jerk_weight None:
+    :func:`~desdemona.problem.default_jerk_weight` on-line); braking : fraction of the acceleration
+    limit assumed for stopping; method : "rti" (real-time iteration: one Gauss-Newton QP per plan,
+    linearised at the shifted previous plan, solved by CasADi's ``qp_solver`` plugin), "nlp" (IPOPT
+    to convergence, warm-started, at most ``max_iter`` iterations) or "auto" (see
+    :attr:`plan_method`); perception : minimise the perceived difference through this vestibular model
+    (chapter 6): the controller then carries the filter states of what the person has felt and of
+    what they should have felt from step to step; spin_up : fraction of the yaw's acceleration limit
+    with which a still yaw is seeded (:meth:`MPC._leave_rest`), 0 to switch it off.
+
+    tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon (None: ``step``
+    throughout): what the plan does in a second matters only through where it leaves the machine, and
+    it is re-planned long before then ("Coarse tail of the plan"). reach : how far each plan looks
+    [s], at least ``horizon`` (None: the horizon). Beyond the horizon, where nothing is known, the
+    desired path is taken as held at its last previewed value: an end cost (eq. 3.8's K) that prices
+    where the plan leaves the machine by what holding the path would cost from there; a short horizon
+    needs it where the machine takes longer than the horizon to get where a cue wants it ("Reach
+    beyond the horizon"). The thesis takes K = 0 for the dfs (7.3). A session reaches at least
+    :func:`default_horizon` (:func:`desdemona.session.online`).
+    """
+
+    horizon: float = 2.0
+    step: float = 0.02
+    replan: float | None = None
+    delay: bool = False
+    deadline: float | None = None
+    substeps: int = 1
+    regularisation: float = 1e-4
+    margin: float = 1e-3
+    braking: float = 0.5
+    weights: tuple[float, ...] | None = None
+    max_iter: int = 100
+    method: Literal["auto", "rti", "nlp"] = "auto"
+    qp_solver: str = "hpipm"
+    perception: VestibularModel | None = None
+    spin_up: float = 0.2
+    tail_step: float | None = 0.1
+    fine: float = 0.4
+    jerk_weight: float | None = None
+    reach: float | None = None
+
+    def __post_init__(self):
+        if self.method not in ("auto", "rti", "nlp"):
+            raise ValueError(f"method {self.method!r}: one of auto, rti, nlp")
+        if not (self.step > 0 and self.horizon >= 2 * self.step):
+            raise ValueError(f"need step > 0 and horizon >= 2 steps, got step {self.step}, horizon {self.horizon}")
+        r = self.period / self.step
+        if not (abs(r - round(r)) < 1e-9 and 1 <= round(r) and self.period <= self.horizon - self.step):
+            raise ValueError(f"replan = {self.replan}: the re-plan period must be a whole number of steps "
+                             f"({self.step:g} s) and shorter than the horizon ({self.horizon:g} s)")
+        if self.reach is not None and not self.reach >= self.horizon:
+            raise ValueError(f"reach = {self.reach}: must be at least the horizon ({self.horizon:g} s)")
+
+    @property
+    def length(self) -> float:
+        """How far each plan looks [s]: the reach, or the horizon."""
+        return self.horizon if self.reach is None else self.reach
+
+    @property
+    def period(self) -> float:
+        """T_c [s]: the time between two plans."""
+        return self.step if self.replan is None else self.replan
+
+    @property
+    def plan_method(self) -> str:
+        """The method each plan is solved by: ``method``, or for "auto" the real-time iteration when a
+        plan is made every step and IPOPT to convergence when the re-plan period spans several steps.
+
+        One Gauss-Newton QP per plan is enough when plans follow each other step by step, each
+        linearised at the last; with a long period the plan moves far between two QPs, and the thesis
+        uses its T_c to solve to convergence (7.5) ("Plan method: real-time iteration or IPOPT")."""
+        if self.method != "auto":
+            return self.method
+        return "rti" if self.replan_steps == 1 else "nlp"
+
+    @property
+    def replan_steps(self) -> int:
+        """Steps of a plan applied before the next plan takes over."""
+        return int(round(self.period / self.step))
+
+    def grid(self) -> np.ndarray:
+        """The plan's interval lengths [s] over its :attr:`length`, each a whole number of steps:
+        ``step`` for the first ``fine`` seconds (at least the re-plan period and one step more), then
+        ``tail_step`` rounded to whole steps (the last one shorter where the plan ends); uniform with
+        a perception model, whose filters are discretised for one step."""
+        total = int(round(self.length / self.step))
+        block = 1 if self.tail_step is None else int(round(self.tail_step / self.step))
+        if block <= 1 or self.perception is not None:
+            return np.full(total, self.step)
+        fine = min(total, max(int(round(self.fine / self.step)), self.replan_steps + 1))
+        blocks, rest = divmod(total - fine, block)
+        return self.step * np.r_[np.ones(fine), np.full(blocks, block), [rest] if rest else []]
+
+
+@dataclass(frozen=True)
+class Command:
+    """What one cycle returns: the joint accelerations of its steps, and why.
+
+    sequence : (r, n) accelerations at the start of each step, r = ``options.replan_steps``;
+    source : "mpc" (this cycle's plan), "shifted" (the previous plan), "brake" (no plan left);
+    compute_time [s] of the cycle; reason : why a fallback was used ("" for "mpc");
+    jerk : (r, n) the accelerations' rate of change over each step (None: held constant).
+    """
+
+    sequence: np.ndarray
+    source: Literal["mpc", "shifted", "brake"]
+    compute_time: float
+    reason: str = ""
+    jerk: np.ndarray | None = None
+
+    @property
+    def jerks(self) -> np.ndarray:
+        """(r, n) jerks of the steps (zeros where the accelerations are held)."""
+        return np.zeros_like(self.sequence) if self.jerk is None else self.jerk
+
+    @property
+    def qdd(self) -> np.ndarray:
+        """(n,) the first step's accelerations."""
+        return self.sequence[0]
+
+
+def default_horizon(config) -> float:
+    """The horizon a session uses when none is given [s]: 2 s where only the yaw and the gimbals
+    move (dfs), 4 s where the track does, whose position must be planned further ahead than the cue
+    ("Default horizon"). A session's plans reach at least this far whatever the horizon
+    (``MPCOptions.reach``)."""
+    return 4.0 if 1 in config.free else 2.0
+
+
+class _Solved(NamedTuple):
+    """What one solve of :class:`MPC` gives: the plan (accelerations, jerks) per interval, whether the
+    solver succeeded, its time [s], the start's positions and (IPOPT only) the cost."""
+
+    plan: tuple[np.ndarray, np.ndarray]
+    success: bool
+    elapsed: float
+    start: np.ndarray
+    cost: float | None
+
+
+class MPC:
+    """The model predictive cueing controller, built once for a model and options, then stepped."""
+
+    def __init__(self, model: Model, options: MPCOptions = MPCOptions(), weights=None):
+        self.model, self.options = model, options
+        self.deadline = options.deadline if options.deadline is not None else options.period
+        steps = options.grid()
+        t = np.r_[0.0, np.cumsum(steps)]
+        # A placeholder path fixes the problem's shape; the preview arrives as its parameter each step.
+        placeholder = DesiredPath("preview", t, None if model.config.modulus_cost else np.zeros((len(t), 6)),
+                                  weights=weights or (ALIGNED_WEIGHTS if model.config.aligned else (1.0,) * 6),
+                                  modulus=np.zeros(len(t)) if model.config.modulus_cost else None)
+        problem_options = ProblemOptions(
+            h_u=options.step, substeps=options.substeps, initial="given",
+            initial_state=(np.zeros(model.n), np.zeros(model.n)), regularisation=options.regularisation,
+            margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6,
+            stoppable=True, braking=options.braking, perception=options.perception, initial_filter="given",
+            steps=None if np.all(steps == options.step) else tuple(steps),
+            jerk_weight=options.jerk_weight)
+        self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
+        self.limits = model.limits
+        self._limit_use = model.step_limit_use(options.step)
+        self.z = self.z_d = None  # filter states of the felt and the desired path (with perception)
+        self._z_d_next = None  # the desired filter state one step on, from this step's preview
+        self._rti = RealTimeIteration(self.problem, options.qp_solver) if options.plan_method == "rti" else None
+        self.smooth = self.problem.smooth
+        self.plan: tuple[np.ndarray, np.ndarray] | None = None  # the last plan per step: accelerations, jerks
+        self._counts = np.rint(self.problem.steps / options.step).astype(int)  # steps per interval
+        self.plan_age = 0
+
+    # ------------------------------------------------------------------------------------------
+
+    def step(self, state, preview) -> Command:
+        """The commands of the coming cycle from the state (q, qd[, qdd]) and the preview of S_d.
+
+        state : where the plan starts: the measured state (positions, rates and, on a machine with
+            jerk limits, accelerations; zero where not given), or with ``delay`` the state predicted for
+            when the plan takes over; preview : a :class:`DesiredPath` starting there, or raw arrays
+            ``(t, values)`` with t (K,) [s] from there and values (K, 6) of S_d or (K,) of M_d for
+            ``dfs`` (as a predictor may deliver them, NaN included: such a preview is not used).
+        """
+        start = time.perf_counter()
+        q, qd = (np.asarray(v, dtype=float).reshape(self.model.n) for v in state[:2])
+        a = np.asarray(state[2], dtype=float).reshape(self.model.n) if len(state) > 2 else np.zeros_like(q)
+        if not self.smooth:
+            a = np.zeros_like(q)  # the acceleration is a command, not a state
+        now = State(q, qd, a)
+        if self.problem.nz and self.z is None:  # the person has sat still before the run
+            self.z = self.problem.filter.steady_state(self.model.S(q, qd, a))
+        t, values = self._preview_arrays(preview)
+        reason = self._preview_problem(t, values)
+        self._z_d_next = None
+        plan = None
+        if not reason:
+            plan, success, elapsed, *_ = self._solve(q, qd, a, self._data(t, values))
+            plan = self._per_step(*plan)
+            if not success:
+                reason, plan = "solver failed", None
+            elif elapsed > self.deadline:
+                reason, plan = f"deadline missed ({elapsed * 1e3:.1f} ms > {self.deadline * 1e3:.1f} ms)", None
+        r = self.options.replan_steps
+        if plan is not None and self._safe_sequence(now, plan[0][:r], plan[1][:r]):
+            self.plan, self.plan_age = plan, 0
+            command = Command(plan[0][:r].copy(), "mpc", time.perf_counter() - start, jerk=plan[1][:r].copy())
+        else:
+            reason = reason or "plan fails the limit check"
+            command = self._fallback(now, reason, start)
+        if self.problem.nz:
+            self._advance_filters(now, command)
+        return command
+
+    def place(self, state, preview) -> tuple[np.ndarray, np.ndarray]:
+        """Before a session that starts at rest: where the machine should stand. The first plan is
+        solved to convergence (IPOPT, at most ``max_iter`` iterations) from ``state`` = (q, qd) on
+        ``preview`` (as :meth:`step` takes it), then again with the start's positions free within
+        their limits (the arm's angle aside: with gravity along its axis it changes nothing felt), at
+        rest, as the off-line problem's ``initial="rest"`` has them, from the first plan. A controller
+        has this time before the session, and the machine is moved to the placed start beforehand; the
+        placed plan is the one the first real-time iteration is linearised at ("Placed start").
+
+        Returns the start (q0, qd0). Nothing is placed, and the controller is left as it was, on a
+        configuration whose cabin follows the force (it starts level at home, as off-line), with a
+        perception model (the felt state at the start would depend on the choice), or where a solve
+        fails or the placed plan costs no less.
+        """
+        q, qd = (np.asarray(v, dtype=float).reshape(self.model.n) for v in state[:2])
+        a = np.zeros_like(q)
+        t, values = self._preview_arrays(preview)
+        if self.model.config.aligned or self.problem.nz or self._preview_problem(t, values):
+            return q, qd
+        data = self._data(t, values)
+        first = self._solve(q, qd, a, data, method="nlp")
+        if not first.success:
+            return q, qd
+        # the seed of the placed solve; a plan that takes over at the first step is one period
+        # younger than a plan of the last cycle
+        self.plan, self.plan_age = self._per_step(*first.plan), -self.options.replan_steps
+        placed = self._solve(q, qd, a, data, method="nlp", place=True)
+        if placed.success and placed.cost < first.cost:
+            self.plan = self._per_step(*placed.plan)
+            return placed.start, np.zeros_like(qd)
+        self.plan, self.plan_age = None, 0
+        return q, qd
+
+    def _advance_filters(self, state: State, command) -> None:
+        """Carry the felt filter state over the cycle just commanded, and the desired one with it."""
+        prob = self.problem
+        s = np.arange(prob.m)[:, None] / prob.m * self.options.step
+        for qdd, jerk in zip(command.sequence, command.jerks):
+            S = self.model.S(*advance(state.q, state.qd, qdd, s, jerk), qdd + jerk * s)
+            for row in S:
+                self.z = prob.filter.Ad @ self.z + prob.filter.Bd @ row
+            state = state.advance(qdd, self.options.step, jerk)
+        # without a usable preview the desired state is unknown: restart from the next preview's steady state
+        self.z_d = self._z_d_next
+
+    def _preview_arrays(self, preview):
+        if isinstance(preview, DesiredPath):
+            preview = self.model.config.cue_path(preview)
+            values = preview.M_d if self.model.config.modulus_cost else preview.S_d
+            return preview.t, values
+        t, values = preview
+        values = None if values is None else np.asarray(values, dtype=float)
+        if values is not None and values.ndim == 1 and self.model.config.aligned:
+            values = vertical_force(values)  # a modulus, for a cabin that follows the force
+        return np.asarray(t, dtype=float), values
+
+    def _preview_problem(self, t, values) -> str:
+        shape = (len(t),) if self.model.config.modulus_cost else (len(t), 6)
+        if values is None or values.shape != shape:
+            return "preview misses the channels this configuration needs"
+        if not (np.all(np.isfinite(values)) and np.all(np.isfinite(t))):
+            return "preview has NaN or inf"
+        if len(t) < 2 or np.any(np.diff(t) <= 0):
+            return "preview time does not increase"
+        if t[-1] < self.options.horizon - 1e-9:
+            return f"preview covers {t[-1]:.3g} s of the {self.options.horizon:g} s horizon"
+        return ""
+
+    def _data(self, t, values) -> np.ndarray:
+        prob = self.problem
+        times = prob.sub_times()  # relative to now: the placeholder starts at 0
+        # a plan that reaches past the preview takes its last value as held there (np.interp does)
+        if self.model.config.modulus_cost:
+            return prob.with_steps(np.interp(times, t, values).T)
+        S_d = np.column_stack([np.interp(times.ravel(), t, values[:, i]) for i in range(6)])
+        if prob.nz == 0:
+            return prob.with_steps(S_d.reshape(prob.N, -1).T)
+        # perceived desired path over the horizon, from the desired filter state carried so far
+        held = S_d.reshape(prob.N, len(prob.fractions), 6)[:, :prob.m, :].reshape(-1, 6)
+        if self.z_d is None:
+            self.z_d = prob.filter.steady_state(held[0])
+        y_d, states = prob.filter.simulate(held, self.z_d)
+        self._z_d_next = states[prob.m * self.options.replan_steps]  # after this cycle's sub-steps
+        return prob.with_steps(y_d.reshape(prob.N, -1).T)
+
+    def _solve(self, q, qd, a, data, method: str | None = None, place: bool = False):
+        """One warm-started solve from (q, qd, a) by ``method`` (default the options'); with ``place``
+        the start's positions are free within their limits (``q`` is then only the guess's start).
+        Returns a :class:`_Solved`."""
+        prob = self.problem
+        method = method or self.options.plan_method
+        u = self._shifted_plan(prob) if self.plan is not None else np.zeros((prob.N, self.model.n))
+        u = self._leave_rest(qd, u)
+        # RTI: a consistent point, not clipped
+        x, controls = prob.guess(q, qd, u, a, clip=method != "rti", filters=self.z if prob.nz else None)
+        bounds = prob.start_bounds(q, qd, a, self.z, positions=self._placing(q) if place else None)
+        if self.model.config.takes_modulus:
+            self._one_way(qd, a, bounds)
+        start = time.perf_counter()
+        w, success, cost = prob.solve_from(x, controls, bounds, data, self._rti if method == "rti" else None)
+        elapsed = time.perf_counter() - start
+        q0, accelerations, jerks = prob.plan_of(w)
+        return _Solved((accelerations, jerks), success, elapsed, q0, cost)
+
+    def _placing(self, q) -> tuple[np.ndarray, np.ndarray]:
+        """Bounds on the start's positions when it is placed: each joint within its limits, except
+        the arm, which stays at ``q``: with gravity along its axis its angle changes nothing felt."""
+        lower, upper = self.problem.position_bounds()
+        if 0 in self.model.config.free:
+            k = self.model.config.free.index(0)
+            lower[k] = upper[k] = q[k]
+        return lower, upper
+
+    def _one_way(self, qd, a, bounds) -> None:
+        """Keep the arm turning the way it turns (forwards from rest) over the plan: bounds on the
+        yaw's rate, from the first node at which its acceleration can have been brought to zero (|a| /
+        jerk limit after now), in the direction of the rate it then has at the soonest, qd + a |a| / (2
+        jerk limit): a plan that must still cross zero rate is not made infeasible.
+
+        The modulus cues of ``dfs`` and ``dfs-yaw`` are the same for either direction of turning
+        ("without influencing the optimization results, q1' can be assumed positive", 7.4.2), so the
+        cue has a mirror image of every plan, and a plan linearised on a slowing arm can slide into
+        the mirror: through zero rate (where the modulus is only g) and up the other way, instead of
+        speeding up again ("One-way arm on dfs").
+        """
+        prob, k = self.problem, self.model.config.free.index(0)
+        jerk = self.limits.jerk[k] if self.smooth else np.inf
+        settle = abs(a[k]) / jerk
+        rate = qd[k] + a[k] * abs(a[k]) / (2.0 * jerk)
+        first = max(1, int(np.searchsorted(prob.t_nodes - prob.t_nodes[0], settle - 1e-12)))
+        prob.keep_rate_sign(bounds, k, first, 1.0 if rate >= 0.0 else -1.0)
+
+    def _per_step(self, accelerations, jerks) -> tuple[np.ndarray, np.ndarray]:
+        """A plan's (accelerations, jerks) per interval as the same plan per step (the grid's intervals
+        are whole numbers of steps): each step starts where the ramp of its interval is."""
+        offsets = np.concatenate([np.arange(c) for c in self._counts]) * self.options.step
+        jerks = np.repeat(jerks, self._counts, axis=0)
+        return np.repeat(accelerations, self._counts, axis=0) + jerks * offsets[:, None], jerks
+
+    def _shifted_plan(self, prob: CueingProblem) -> np.ndarray:
+        """(N, n) the previous plan's accelerations from now on, on the problem's grid: at each
+        interval's end with jerk limits (what the ramp of :meth:`CueingProblem.guess` aims at), at its
+        start without; held at the last value past the plan's end, within the limits."""
+        accelerations, jerks = self.plan
+        times = np.arange(len(accelerations) + 1) * self.options.step
+        previous = Plan(times, np.zeros(self.model.n), np.zeros(self.model.n), accelerations, jerks)
+        now = (self.plan_age + self.options.replan_steps) * self.options.step
+        times = now + (prob.t_nodes[1:] if self.smooth else prob.t_nodes[:-1])
+        at = previous.at(np.minimum(times, prob.t_nodes[-1]))[2]
+        return np.clip(at, -self.limits.acceleration, self.limits.acceleration)
+
+    def _leave_rest(self, qd, u) -> np.ndarray:
+        """The seed ``u`` (N, n), with a spin-up of the yaw where it would otherwise stay still.
+
+        Zero yaw rate is a stationary point of the cue: the centripetal terms and the modulus have no
+        gradient there, so a solve linearised at a still yaw returns a still yaw forever, and a run
+        from rest never turns the arm. Where the yaw's rate stays below ``REST_RATE`` over the whole
+        seed, the seed spins it up at ``options.spin_up`` times its acceleration limit (in the
+        direction it already turns): the linearisation then sees what turning would give, and the
+        solve decides whether to turn ("Spin-up from rest").
+        """
+        if 0 not in self.model.config.free or self.options.spin_up == 0.0:
+            return u
+        k = self.model.config.free.index(0)
+        rates = qd[k] + np.cumsum(u[:, k] * self.problem.steps)
+        if np.any(np.abs(rates) >= REST_RATE):
+            return u
+        u = u.copy()
+        u[:, k] = (1.0 if qd[k] >= 0 else -1.0) * self.options.spin_up * self.limits.acceleration[k]
+        return u
+
+    def _safe(self, q, qd, qdd, jerk) -> bool:
+        """Every limit over the coming step with this command, to the independent check's tolerance."""
+        return float(np.max(np.asarray(self._limit_use(q, qd, qdd, jerk)))) <= 1.0 + TOLERANCE
+
+    def _safe_sequence(self, state: State, sequence, jerks) -> bool:
+        """:meth:`_safe` for every step of a sequence of accelerations and jerks, from ``state`` on;
+        with jerk limits each step must also start at the acceleration the last one ended with."""
+        for qdd, jerk in zip(sequence, jerks):
+            if self.smooth and np.any(np.abs(qdd - state.a) > TOLERANCE * self.limits.acceleration):
+                return False
+            if not self._safe(state.q, state.qd, qdd, jerk):
+                return False
+            state = state.advance(qdd, self.options.step, jerk)
+        return True
+
+    def _fallback(self, state: State, reason: str, start: float) -> Command:
+        r = self.options.replan_steps
+        if self.plan is not None and self.plan_age + 2 * r <= len(self.plan[0]):
+            self.plan_age += r
+            window = slice(self.plan_age, self.plan_age + r)
+            sequence, jerks = self.plan[0][window], self.plan[1][window]
+            if self._safe_sequence(state, sequence, jerks):
+                return Command(sequence.copy(), "shifted", time.perf_counter() - start, reason, jerks.copy())
+        self.plan = None
+        sequence, jerks = [], []
+        for _ in range(r):
+            qdd, jerk = self.brake(*state)
+            sequence.append(qdd)
+            jerks.append(jerk)
+            state = state.advance(qdd, self.options.step, jerk)
+        return Command(np.array(sequence), "brake", time.perf_counter() - start, reason, np.array(jerks))
+
+    def brake(self, q, qd, a=None) -> tuple[np.ndarray, np.ndarray]:
+        """The step's (acceleration, jerk) towards rest that keeps every limit over the step.
+
+        Without jerk limits: the strongest deceleration (at most ``braking`` x the acceleration limit,
+        not past zero rate within the step), scaled down until safe. With them: the acceleration turns
+        from ``a`` at most at the jerk limit towards a deceleration proportional to the rate, -qd / T,
+        with T the time the jerk limit needs to build up the braking deceleration and lose it again
+        (so the rate comes to rest without overshoot), at most ``braking`` x the acceleration limit; the
+        jerk is scaled down until safe.
+        """
+        lim, h, braking = self.limits, self.options.step, self.options.braking
+        if not self.smooth:
+            full = -np.sign(qd) * np.minimum(braking * lim.acceleration, np.abs(qd) / h)
+            for scale in (1.0, 0.75, 0.5, 0.25, 0.1, 0.0):
+                if self._safe(q, qd, scale * full, np.zeros_like(qd)):
+                    return scale * full, np.zeros_like(qd)
+            return np.zeros_like(qd), np.zeros_like(qd)  # holding: the last resort (the check reports any excess)
+        a = np.zeros_like(qd) if a is None else np.asarray(a, dtype=float)
+        T = 2.0 * braking * lim.acceleration / lim.jerk + h
+        target = np.clip(-qd / T, -braking * lim.acceleration, braking * lim.acceleration)
+        full = np.clip((target - a) / h, -lim.jerk, lim.jerk)
+        for scale in (1.0, 0.75, 0.5, 0.25, 0.1, 0.0):
+            if self._safe(q, qd, a, scale * full):
+                return a, scale * full
+        return a, full  # the last resort (the independent check reports any excess)
