@@ -76,8 +76,8 @@ def test_given_start_is_kept(tmp_path):
 
 
 @pytest.mark.parametrize("args, fragment", [
-    (["--initial", "given"], "--initial given and --initial-state go together"),
-    (["--initial", "rest", "--initial-state", "0,0;0,0"], "go together"),
+    (["--initial", "given"], "--initial given needs --initial-state"),
+    (["--initial", "rest", "--initial-state", "0,0;0,0"], "goes with --initial given"),
     (["--initial", "given", "--initial-state", "0,0,0;0,0,0"], "give 2 positions, ';', 2 rates"),
     (["--initial", "given", "--initial-state", "0,9;0,0"], "track position 9 is outside"),
     (["--initial", "given", "--initial-state", "0,0;9,0"], "yaw rate 9 is above its limit"),

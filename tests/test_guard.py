@@ -73,7 +73,7 @@ def test_sigint_inside_ipopt_stops_the_run(tmp_path):
     env = dict(os.environ, PYTHONPATH=str(Path(desdemona.__file__).resolve().parent.parent))
     out = tmp_path / "lap"
     start = time.perf_counter()
-    proc = subprocess.Popen([sys.executable, "-m", "desdemona.cli", "optimize", "car-lap", "--config", "full",
+    proc = subprocess.Popen([sys.executable, "-m", "desdemona", "optimize", "car-lap", "--config", "full",
                              "--starts", "2", "--out", str(out)], env=env, stderr=subprocess.PIPE, text=True)
     # its first line says the command has started (on a loaded machine Python's imports alone may take 2 s)
     assert "700 control intervals" in proc.stderr.readline()

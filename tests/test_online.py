@@ -380,10 +380,10 @@ def test_online_command_starts_at_rest_steady_or_a_given_state(tmp_path, capsys)
     assert "started (given): yaw 0 rad at 1.2 rad/s, outer_gimbal 0.1 rad, inner_gimbal 0 rad, cabin 0 rad\n" in capsys.readouterr().out
     assert main(["online", *common, "--initial-state", state, "--out", str(tmp_path / "given2")]) == 0  # given
     np.testing.assert_allclose(start(tmp_path / "given2"), [0, 0.1, 0, 1.2, 0], atol=1e-12)
-    from desdemona.cli import _parser
+    from desdemona.cli.options import build_parser
     from desdemona.online import INITIAL_CHOICES
 
-    online_command = _parser()._subparsers._group_actions[0].choices["online"]
+    online_command = build_parser()._subparsers._group_actions[0].choices["online"]
     assert next(a for a in online_command._actions if a.dest == "initial").choices == INITIAL_CHOICES
     for bad, message in ((["--initial", "given"], "needs --initial-state"),
                          (["--initial", "steady", "--initial-state", state], "goes with --initial given"),

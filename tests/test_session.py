@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from desdemona import Model, profiles, session
-from desdemona.cli import _parser
+from desdemona.cli.options import build_parser
 from desdemona.session import ChoiceError, Choices
 
 
@@ -43,7 +43,7 @@ def test_a_given_state_implies_initial_given_everywhere(catapult):
     on = session.online(catapult, model, Choices(initial_state=text))
     assert off.options.initial == on.options.initial == "given"
     np.testing.assert_array_equal(off.options.initial_state[0], on.options.initial_state[0])
-    with pytest.raises(ChoiceError, match="go together"):
+    with pytest.raises(ChoiceError, match="goes with --initial given"):
         session.offline(catapult, model, Choices(initial="rest", initial_state=text))
     with pytest.raises(ChoiceError, match="track position 9 is outside"):
         session.online(catapult, model, Choices(initial_state="0,9,0;0,0,0"))
@@ -85,7 +85,7 @@ def test_every_command_hands_its_choices_over_by_name(command):
     argv = {"optimize": ["optimize", "catapult", "--out", "x"],
             "batch": ["batch", "catapult", "--configs", "full", "--out", "x"],
             "online": ["online", "catapult", "--out", "x"]}[command]
-    args = _parser().parse_args([*argv, "--weights", "thresholds", "--gain", "0.7"])
+    args = build_parser().parse_args([*argv, "--weights", "thresholds", "--gain", "0.7"])
     assert Choices.of(args) == Choices(weights="thresholds", gain=0.7)
     assert Choices.of(argparse.Namespace()) == Choices()
 
@@ -97,5 +97,5 @@ def test_a_jerk_weight_reaches_the_problem_off_line_and_on_line(catapult):
     assert session.offline(catapult, model).options.jerk_weight is None  # the configuration's default
     with pytest.raises(ChoiceError, match="--jerk-weight -1"):
         session.offline(catapult, model, Choices(jerk_weight=-1.0))
-    args = _parser().parse_args(["batch", "catapult", "--configs", "full", "--out", "x", "--jerk-weight", "2"])
+    args = build_parser().parse_args(["batch", "catapult", "--configs", "full", "--out", "x", "--jerk-weight", "2"])
     assert Choices.of(args).jerk_weight == 2.0

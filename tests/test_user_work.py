@@ -30,7 +30,7 @@ def _optimize(out, *extra):
 def _command(*args):
     """The ``desdemona`` command as a user runs it (the console script, else ``python -m``)."""
     script = shutil.which("desdemona")
-    return [script, *args] if script else [sys.executable, "-m", "desdemona.cli", *args]
+    return [script, *args] if script else [sys.executable, "-m", "desdemona", *args]
 
 
 @pytest.fixture(scope="module")

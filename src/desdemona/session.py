@@ -107,7 +107,7 @@ def start(model: Model, choices: Choices, allowed: tuple[str, ...]) -> tuple[str
     if initial not in allowed:
         raise ChoiceError(f"--initial {initial}: one of {', '.join(allowed)}")
     if (state is not None) != (initial == "given"):
-        raise ChoiceError("--initial given and --initial-state go together")
+        raise ChoiceError("--initial given needs --initial-state, and --initial-state goes with --initial given")
     if isinstance(state, str):
         state = parse_state(state, model)
     return initial, state

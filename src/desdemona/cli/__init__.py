@@ -1,0 +1,60 @@
+"""The ``desdemona`` command: thin wrappers around the library, ``main(argv) -> exit code``.
+
+:mod:`desdemona.cli.options` is the table of commands and options, :mod:`desdemona.cli.commands`
+what each command does (a session's choices are resolved by :mod:`desdemona.session`),
+:mod:`desdemona.cli.exits` how a command ends.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import signal
+import sys
+
+try:  # a Ctrl-C while the libraries load (a second or two) ends the command quietly, as later
+    from desdemona import allocator, guard, profiles, session, sizing
+    from desdemona.cli.exits import EXIT_NOT_CONVERGED, EXIT_UNSAFE, EXIT_USAGE, UserError
+    from desdemona.cli.options import build_parser
+    from desdemona.params import ParameterError
+except KeyboardInterrupt:
+    print("desdemona: interrupted (SIGINT): stopped, nothing written", file=sys.stderr)
+    raise SystemExit(128 + signal.SIGINT) from None
+
+__all__ = ["EXIT_NOT_CONVERGED", "EXIT_UNSAFE", "EXIT_USAGE", "UserError", "main"]
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # argparse has printed its message (or --help): report, do not exit
+        return int(exc.code or 0)
+    except KeyboardInterrupt:
+        print(f"desdemona: {guard.Interrupted(signal.SIGINT).message}", file=sys.stderr)
+        return 128 + signal.SIGINT
+    from desdemona.report import ReportError
+    from desdemona.simulate import LimitViolation
+
+    allocator.reuse_freed_memory()  # IPOPT's factorisations reuse their workspace (allocator.py)
+    try:
+        # args.held: the output folders this run holds (report.claim), released as it ends
+        with guard.interruptible(), contextlib.ExitStack() as args.held:
+            return args.run(args)
+    except KeyboardInterrupt:  # a Ctrl-C before the guard was in place (or after it was removed)
+        print(f"desdemona: {guard.Interrupted(signal.SIGINT).message}", file=sys.stderr)
+        return 128 + signal.SIGINT
+    except BrokenPipeError:  # the reader of stdout has gone (`| head`): the rest is not wanted
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # nor a traceback at exit's flush
+        return 0
+    except (UserError, ParameterError, profiles.ProfileError, session.ChoiceError, ReportError,
+            sizing.TooLarge) as exc:
+        print(f"desdemona: error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    except LimitViolation as exc:
+        print(f"desdemona: no result written: {exc}", file=sys.stderr)
+        return EXIT_UNSAFE
+    except guard.Interrupted as exc:
+        end_bar = "\n" if sys.stderr.isatty() else ""  # a progress bar may be half drawn
+        print(f"{end_bar}desdemona: {exc.message}", file=sys.stderr)
+        return exc.code
