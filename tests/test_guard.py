@@ -12,7 +12,7 @@ from pathlib import Path
 
 import desdemona
 from desdemona import cli, guard, problem, profiles, report
-from desdemona.cli import main
+from desdemona.cli import commands, main
 
 SHORT = ["cosine", "--config", "yaw-track", "--h-u", "0.1", "--starts", "1"]
 
@@ -120,7 +120,7 @@ def test_progress_lines_when_stderr_is_not_a_terminal(tmp_path, monkeypatch, cap
     """A line when the run starts, per start (elapsed time, best cost) and, inside a long solve, every
     PROGRESS_EVERY s; --quiet silences them. (By hand: the README's car lap on full, 3 min, prints a line
     every 10 s.)"""
-    monkeypatch.setattr(cli, "PROGRESS_EVERY", 0.0)
+    monkeypatch.setattr(commands, "PROGRESS_EVERY", 0.0)
     assert main(["optimize", "cosine", "--config", "yaw-track", "--h-u", "0.1", "--starts", "2",
                  "--out", str(tmp_path / "a")]) == 0
     err = capsys.readouterr().err

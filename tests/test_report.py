@@ -100,14 +100,15 @@ def test_batch_on_dask_equals_local_processes(tmp_path, capsys):
     distributed = pytest.importorskip("distributed")
     from desdemona import batch, default_params
     from desdemona.offline import OptimizeOptions
-    from desdemona.problem import ProblemOptions
+    from desdemona.session import Choices
 
     jobs = [batch.Job("catapult", "yaw-track"), batch.Job("dfs-catapult", "dfs"), batch.Job("cosine", "dfs")]
-    options = OptimizeOptions(ProblemOptions(h_u=0.1), starts=1)
-    local = batch.run_batch(jobs, default_params(), options, tmp_path / "local", processes=2)
+    choices, options = Choices(h_u=0.1), OptimizeOptions(starts=1)
+    local = batch.run_batch(jobs, default_params(), choices, options, tmp_path / "local", processes=2)
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                   dashboard_address=None) as cluster:
-        remote = batch.run_batch(jobs, default_params(), options, tmp_path / "dask", dask_address=cluster.scheduler_address)
+        remote = batch.run_batch(jobs, default_params(), choices, options, tmp_path / "dask",
+                                 dask_address=cluster.scheduler_address)
     assert [r.status for r in local] == ["ok"] * 3
     for a, b in zip(local, remote):
         assert (a.profile, a.config, a.status) == (b.profile, b.config, b.status)

@@ -16,7 +16,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from desdemona import guard, profiles, report, session
+from desdemona import files, guard, profiles, report, session
 from desdemona.model import Model
 from desdemona.offline import OptimizeOptions, optimize
 from desdemona.params import MachineParams
@@ -176,16 +176,16 @@ def run_batch(jobs: list[Job], params: MachineParams, choices: session.Choices, 
 
 def _write_table(out: Path, results: list[JobResult]) -> None:
     """Write ``out/batch.csv`` whole or not at all (a temporary file renamed into place)."""
-    tmp = out / ".batch.csv.tmp"
-    with open(tmp, "w", newline="") as fh:
-        writer = csv.writer(fh)
-        writer.writerow(TABLE_COLUMNS)
-        for r in results:
-            felt = [None if r.felt is None else r.felt[c] for c in FELT_COLUMNS]
-            writer.writerow([r.profile, r.config, r.status, r.rms, r.worst_use, *felt, f"{r.seconds:.3f}",
-                             r.folder, r.message])
-    with guard.deferred():
-        os.replace(tmp, out / "batch.csv")
+    with files.beside(out / "batch.csv") as tmp:
+        with open(tmp, "w", newline="") as fh:
+            writer = csv.writer(fh)
+            writer.writerow(TABLE_COLUMNS)
+            for r in results:
+                felt = [None if r.felt is None else r.felt[c] for c in FELT_COLUMNS]
+                writer.writerow([r.profile, r.config, r.status, r.rms, r.worst_use, *felt, f"{r.seconds:.3f}",
+                                 r.folder, r.message])
+        with guard.deferred():
+            os.replace(tmp, out / "batch.csv")
 
 
 def map_jobs(function, args: list[tuple], processes: int = 2, dask_address: str | None = None, progress=None,

@@ -74,11 +74,10 @@ import scipy.signal
 
 from desdemona import perception
 from desdemona.params import default_params
-from desdemona.profiles import G, PATH_COLUMNS
+from desdemona.profiles import CHANNELS, G
 
 #: Names of S's channels, as in a path CSV's header (and trajectory.csv). Not imported from report, which
 #: sits above this module in the data flow and may import it.
-CHANNELS = PATH_COLUMNS[1:]
 
 #: Half-width of the lag search [s]: cueing delays beyond a few hundred ms are already gross.
 LAG_WINDOW = 2.0

@@ -24,8 +24,7 @@ from desdemona.plan import Plan, start_acceleration, start_state
 from desdemona.problem import ProblemOptions
 from desdemona.transcription import CueingProblem, Solution
 from desdemona.profiles import DesiredPath
-from desdemona.report import trajectory_dataframe
-from desdemona.simulate import LimitCheck, LimitViolation, Trajectory, check, evaluate_plan
+from desdemona.simulate import LimitCheck, LimitViolation, Trajectory, check, evaluate_plan, trajectory_dataframe
 
 
 @dataclass(frozen=True)

@@ -24,7 +24,8 @@ from desdemona.mpc import MPC, MPCOptions
 from desdemona.plan import Plan, start_state
 from desdemona.predictors import PREDICTORS, predictor
 from desdemona.profiles import DesiredPath
-from desdemona.simulate import ClosedLoop, LimitCheck, LimitViolation, Trajectory, check, closed_loop, evaluate_plan
+from desdemona.simulate import (ClosedLoop, LimitCheck, LimitViolation, Trajectory, check, closed_loop, evaluate_plan,
+                                trajectory_dataframe)
 
 
 #: The session's starts (:class:`OnlineOptions`), the first the default.
@@ -116,8 +117,6 @@ class OnlineResult:
 
     def to_dataframe(self):
         """The trajectory as a pandas DataFrame indexed by time (needs pandas)."""
-        from desdemona.report import trajectory_dataframe
-
         return trajectory_dataframe(self.trajectory, self.model.config)
 
 

@@ -118,6 +118,11 @@ class Body:
         return np.vstack([top, bottom])
 
 
+#: Standard gravity as the thesis takes it [m/s^2]: the machine's default ``gravity`` and the 1 g of
+#: the desired paths (:data:`desdemona.profiles.G`).
+GRAVITY = 9.81
+
+
 @dataclass(frozen=True)
 class MachineParams:
     """All machine parameters: six joints and six bodies in the order of eq. A.7, gravity, head offset."""
@@ -125,7 +130,7 @@ class MachineParams:
     name: str
     joints: tuple[JointLimits, ...]
     bodies: tuple[Body, ...]
-    gravity: float = 9.81
+    gravity: float = GRAVITY
     head_offset: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
     @property

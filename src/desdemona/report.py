@@ -29,10 +29,9 @@ import numpy as np
 
 from desdemona import figures, guard
 from desdemona._version import __version__
-from desdemona.params import JOINT_NAMES
-from desdemona.simulate import Trajectory
+from desdemona.profiles import CHANNELS
+from desdemona.simulate import Trajectory, trajectory_table
 
-CHANNELS = ("wx", "wy", "wz", "fx", "fy", "fz")
 
 
 RESULT_FORMAT = "desdemona result"  # the mark in summary.json that makes a folder ours to replace
@@ -195,34 +194,6 @@ def versions() -> dict[str, str]:
 
     return {"desdemona": __version__, "python": platform.python_version(), "numpy": np.__version__,
             "scipy": scipy.__version__, "casadi": casadi.__version__}
-
-
-def trajectory_table(traj: Trajectory, config) -> tuple[list[str], np.ndarray]:
-    """Column names and values (K, columns) of trajectory.csv.
-
-    config : the result's :class:`~desdemona.configs.Configuration`. Positions, rates and accelerations
-    are given for all six joints, the held ones at their fixed positions and at rest, so that the file
-    drives the whole machine; torques and power for the free joints (a held joint's brake is not a
-    motor limit, section 5.5).
-    """
-    names, columns = ["t"], [traj.t[:, None]]
-    for label, values, held in (("q", traj.q, "position"), ("qd", traj.qd, "zero"), ("qdd", traj.qdd, "zero")):
-        names += [f"{label}_{j}" for j in JOINT_NAMES]
-        columns.append(config.expand(values, held))
-    for label, values in (("tau", traj.tau), ("power", traj.power)):
-        names += [f"{label}_{j}" for j in config.joint_names]
-        columns.append(values)
-    names += list(CHANNELS)
-    columns.append(traj.S)
-    if traj.S_d is not None:
-        names += [f"{c}_d" for c in CHANNELS]
-        columns.append(traj.S_d)
-    names += ["M", "M_d"]
-    columns += [traj.M[:, None], traj.M_d[:, None]]
-    if traj.S_perc is not None:
-        names += [f"{c}_perc" for c in CHANNELS] + [f"{c}_d_perc" for c in CHANNELS]
-        columns += [traj.S_perc, traj.S_d_perc]
-    return names, np.hstack(columns)
 
 
 def run_description(path, config) -> dict:
@@ -473,19 +444,6 @@ def command_line() -> str:
     return " ".join(["desdemona", *sys.argv[1:]])
 
 
-
-
-def trajectory_dataframe(traj: Trajectory, config):
-    """A pandas DataFrame of a trajectory with the columns of trajectory.csv, indexed by t [s].
-
-    pandas is an optional extra (``pip install 'desdemona[dataframe]'``), not a dependency.
-    """
-    try:
-        import pandas
-    except ImportError:
-        raise ImportError("a DataFrame needs pandas: pip install 'desdemona[dataframe]'") from None
-    names, table = trajectory_table(traj, config)
-    return pandas.DataFrame(table[:, 1:], index=pandas.Index(table[:, 0], name="t"), columns=names[1:])
 
 
 def start_description(result) -> dict:

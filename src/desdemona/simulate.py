@@ -17,7 +17,8 @@ import numpy as np
 from desdemona.model import Model
 from desdemona.perception import VestibularModel
 from desdemona.plan import Plan, State
-from desdemona.profiles import DesiredPath
+from desdemona.params import JOINT_NAMES
+from desdemona.profiles import CHANNELS, DesiredPath
 
 TOLERANCE = 1e-6
 LIMIT_NAMES = ("position", "velocity", "acceleration", "jerk", "effort", "power")
@@ -129,17 +130,34 @@ def evaluate_plan(model: Model, path: DesiredPath, plan: Plan, times,
 def limit_use(model: Model, traj: Trajectory) -> dict[str, np.ndarray]:
     """Worst use of each limit per free joint over a trajectory (1 = at the limit)."""
     lim = model.limits
-    lo, hi = lim.position_min, lim.position_max
-    bounded = np.isfinite(lo) & np.isfinite(hi)
-    mid = 0.5 * (np.where(bounded, lo, 0.0) + np.where(bounded, hi, 0.0))
-    half = np.where(bounded, 0.5 * (np.where(bounded, hi, 1.0) - np.where(bounded, lo, -1.0)), np.inf)
-    return {
-        "position": np.max(np.abs(traj.q - mid) / half, axis=0),
-        "velocity": np.max(np.abs(traj.qd) / lim.velocity, axis=0),
-        "acceleration": np.max(np.abs(traj.qdd) / lim.acceleration, axis=0),
-        "effort": np.max(np.abs(traj.tau) / lim.effort, axis=0),
-        "power": np.max(np.abs(traj.power) / lim.power, axis=0),
-    }
+    bounds = {"position": (lim.position_min, lim.position_max), "velocity": lim.velocity,
+              "acceleration": lim.acceleration, "effort": lim.effort, "power": lim.power}
+    values = {"q": traj.q, "qd": traj.qd, "qdd": traj.qdd, "tau": traj.tau, "power": traj.power}
+    return {kind: np.max(use, axis=0) for kind, use in uses_over_time(values, bounds).items()}
+
+
+#: The limit each trajectory quantity has: trajectory.csv's prefix -> the limit's name.
+LIMITED = {"q": "position", "qd": "velocity", "qdd": "acceleration", "tau": "effort", "power": "power"}
+
+
+def uses_over_time(values: dict, bounds: dict) -> dict[str, np.ndarray]:
+    """The use of each limit at every sample, 1 = at the limit: ``values`` maps the prefixes of
+    :data:`LIMITED` to arrays (K, n), ``bounds`` the limits' names to their (n,) limits, the position's
+    as (lower, upper) (infinite, or absent, where a joint has none). Returns {limit: (K, n)} for every
+    limit given both."""
+    uses = {}
+    for key, kind in LIMITED.items():
+        if key not in values or kind not in bounds:
+            continue
+        if kind == "position":
+            lo, hi = (np.asarray(b, dtype=float) for b in bounds[kind])
+            bounded = np.isfinite(lo) & np.isfinite(hi)
+            mid = 0.5 * (np.where(bounded, lo, 0.0) + np.where(bounded, hi, 0.0))
+            half = np.where(bounded, 0.5 * (np.where(bounded, hi, 1.0) - np.where(bounded, lo, -1.0)), np.inf)
+            uses[kind] = np.abs(values[key] - mid) / half
+        else:
+            uses[kind] = np.abs(values[key]) / bounds[kind]
+    return uses
 
 
 def jerk_use(model: Model, plan: Plan, step: float) -> np.ndarray:
@@ -275,3 +293,47 @@ def _later(preview, offset: float):
     t, values = (np.asarray(v, dtype=float) for v in preview)
     keep = t >= offset - 1e-12
     return t[keep] - offset, values[keep]
+
+
+# ----------------------------------------------------------------------------------------------
+# a trajectory as a table
+
+def trajectory_table(traj: Trajectory, config) -> tuple[list[str], np.ndarray]:
+    """Column names and values (K, columns) of trajectory.csv.
+
+    config : the result's :class:`~desdemona.configs.Configuration`. Positions, rates and accelerations
+    are given for all six joints, the held ones at their fixed positions and at rest, so that the file
+    drives the whole machine; torques and power for the free joints (a held joint's brake is not a
+    motor limit, section 5.5).
+    """
+    names, columns = ["t"], [traj.t[:, None]]
+    for label, values, held in (("q", traj.q, "position"), ("qd", traj.qd, "zero"), ("qdd", traj.qdd, "zero")):
+        names += [f"{label}_{j}" for j in JOINT_NAMES]
+        columns.append(config.expand(values, held))
+    for label, values in (("tau", traj.tau), ("power", traj.power)):
+        names += [f"{label}_{j}" for j in config.joint_names]
+        columns.append(values)
+    names += list(CHANNELS)
+    columns.append(traj.S)
+    if traj.S_d is not None:
+        names += [f"{c}_d" for c in CHANNELS]
+        columns.append(traj.S_d)
+    names += ["M", "M_d"]
+    columns += [traj.M[:, None], traj.M_d[:, None]]
+    if traj.S_perc is not None:
+        names += [f"{c}_perc" for c in CHANNELS] + [f"{c}_d_perc" for c in CHANNELS]
+        columns += [traj.S_perc, traj.S_d_perc]
+    return names, np.hstack(columns)
+
+
+def trajectory_dataframe(traj: Trajectory, config):
+    """A pandas DataFrame of a trajectory with the columns of trajectory.csv, indexed by t [s].
+
+    pandas is an optional extra (``pip install 'desdemona[dataframe]'``), not a dependency.
+    """
+    try:
+        import pandas
+    except ImportError:
+        raise ImportError("a DataFrame needs pandas: pip install 'desdemona[dataframe]'") from None
+    names, table = trajectory_table(traj, config)
+    return pandas.DataFrame(table[:, 1:], index=pandas.Index(table[:, 0], name="t"), columns=names[1:])

@@ -30,20 +30,20 @@ import math
 import os
 import re
 import shutil
-import tempfile
 from importlib import resources
 from pathlib import Path
 
 import numpy as np
 
-from desdemona import metrics, perception, report
+from desdemona import files, metrics, perception, report
 from desdemona._version import __version__
 from desdemona.params import JOINT_NAMES
+from desdemona.profiles import CHANNELS
+from desdemona.simulate import LIMITED, uses_over_time
 from desdemona.report import ReportError
 
 VIEW_FILE = "view.html"
 CLASSICAL_FILE = "classical.csv"  # an on-line result's classical loop, columns as trajectory.csv
-CHANNELS = ("wx", "wy", "wz", "fx", "fy", "fz")
 MAX_FRAMES = 12_000  # animation samples kept; beyond, every k-th (the plots keep all)
 PLOT_DIGITS = 6  # significant digits of plotted values (the joint positions keep full precision)
 LIMIT_KINDS = ("position", "velocity", "acceleration", "effort", "power")
@@ -98,13 +98,12 @@ def limit_use(col: dict, limits: dict, joints) -> dict[str, dict]:
     out = {}
     for j in joints:
         lim = limits[j]
-        uses = {}
+        values = {key: col[f"{key}_{j}"][:, None] for key in LIMITED if f"{key}_{j}" in col}
+        bounds = {kind: np.array([lim[kind]], dtype=float) for kind in LIMITED.values()
+                  if kind != "position" and lim.get(kind)}
         if lim.get("position") is not None:
-            lo, hi = lim["position"]
-            uses["position"] = np.abs(col[f"q_{j}"] - 0.5 * (lo + hi)) / (0.5 * (hi - lo))
-        for kind, key in (("velocity", "qd"), ("acceleration", "qdd"), ("effort", "tau"), ("power", "power")):
-            if f"{key}_{j}" in col and lim.get(kind):
-                uses[kind] = np.abs(col[f"{key}_{j}"]) / lim[kind]
+            bounds["position"] = tuple(np.array([b], dtype=float) for b in lim["position"])
+        uses = {kind: use[:, 0] for kind, use in uses_over_time(values, bounds).items()}
         uses["worst"] = np.max(np.vstack([np.zeros(len(col["t"])), *uses.values()]), axis=0)
         out[j] = uses
     return out
@@ -300,31 +299,26 @@ def _put(out: Path, text: str, kind: str) -> None:
     over the folder's own page (``kind`` "own"), over an earlier page of ours only while it still is
     one ("ours"), else only while ``out`` is still absent ("new")."""
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.absolute().parent)
+        with files.beside(out) as tmp:
+            tmp.write_text(text, encoding="utf-8")
+            _move(tmp, out, kind)
     except OSError as exc:
         raise ViewError(f"{out}: cannot write: {exc.strerror or exc}") from None
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(text)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes it private (0600); the page is an ordinary file
-        if kind == "own" or (kind == "ours" and is_page(out)):
+
+
+def _move(tmp: Path, out: Path, kind: str) -> None:
+    """Rename the written page onto ``out`` as :func:`_put`'s ``kind`` allows."""
+    if kind == "own" or (kind == "ours" and is_page(out)):
+        os.replace(tmp, out)
+    elif kind == "new" and not (out.exists() or out.is_symlink()):
+        try:
+            os.link(tmp, out)  # fails if out appeared meanwhile: never replaced
+        except FileExistsError:
+            raise ViewError(f"{out}: appeared while the page was written; left as it is") from None
+        except OSError:  # no hard links on this file system
             os.replace(tmp, out)
-        elif kind == "new" and not (out.exists() or out.is_symlink()):
-            try:
-                os.link(tmp, out)  # fails if out appeared meanwhile: never replaced
-            except FileExistsError:
-                raise ViewError(f"{out}: appeared while the page was written; left as it is") from None
-            except OSError:  # no hard links on this file system
-                os.replace(tmp, out)
-        else:
-            raise ViewError(f"{out}: changed while the page was written; left as it is: choose another file")
-    except OSError as exc:
-        raise ViewError(f"{out}: cannot write: {exc.strerror or exc}") from None
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
+    else:
+        raise ViewError(f"{out}: changed while the page was written; left as it is: choose another file")
 
 
 def write(folder: str | Path, out: str | Path | None = None, overwrite: bool = False) -> Path:

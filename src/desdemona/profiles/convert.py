@@ -10,13 +10,13 @@ rotation :data:`R_CABIN_BODY` (det +1: angular velocity, a pseudo-vector, turns 
 from __future__ import annotations
 
 import os
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 from scipy import signal
 
+from desdemona import files
 from desdemona.profiles.csvfile import write_csv
 from desdemona.profiles.path import G, DesiredPath, ProfileError, modulus_version
 
@@ -223,10 +223,10 @@ def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0)) -> N
             f"{f[2]:.3g}) m/s^2 in the cabin frame (x right, y forward, z up)"
     lo, hi = MAGNITUDE_TOLERANCE
     ratio = size / G
-    if lo / 9.81 <= ratio <= hi / 9.81:
+    if lo / G <= ratio <= hi / G:
         raise ProfileError(f"{where}: |f| = {size:.3g} m/s^2, 1/9.81 of g: the accelerations are in g "
                            f"but declared as m/s^2? (--accel-unit g)")
-    if lo * 9.81 <= ratio <= hi * 9.81:
+    if lo * G <= ratio <= hi * G:
         raise ProfileError(f"{where}: |f| = {size:.3g} m/s^2, 9.81 g: the accelerations are in m/s^2 but "
                            f"declared as g? (--accel-unit m/s2)")
     if ratio < 0.2:
@@ -279,18 +279,10 @@ def write_path(out, path: DesiredPath, comments=(), overwrite: bool = False) -> 
     the same folder, then renamed. An existing ``out`` is replaced only with ``overwrite``
     (:func:`check_out`); a folder it cannot write in is a :class:`ProfileError` too."""
     out = check_out(out, overwrite)
-    umask = os.umask(0)
-    os.umask(umask)
-    tmp = None
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.absolute().parent)
-        os.close(fd)
-        write_csv(tmp, path, comments=comments)
-        os.chmod(tmp, 0o666 & ~umask)  # as a plain open() would create it
-        os.replace(tmp, out)
+        with files.beside(out) as tmp:
+            write_csv(tmp, path, comments=comments)
+            os.replace(tmp, out)
     except OSError as exc:
         raise ProfileError(f"{out}: cannot write it: {exc.strerror or exc}") from None
-    finally:
-        if tmp is not None and os.path.exists(tmp):
-            os.unlink(tmp)
     return out

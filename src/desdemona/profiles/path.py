@@ -11,11 +11,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from desdemona.params import GRAVITY as G
 
-G = 9.81
 MAX_SPECIFIC_FORCE = 100.0 * G  # beyond this a file is in the wrong units, not a vehicle's motion
 MAX_ANGULAR_VELOCITY = 50.0  # rad/s, about 8 turns per second
 PATH_COLUMNS = ("t", "wx", "wy", "wz", "fx", "fy", "fz")
+#: The channels of S (eq. 3.2): the cabin's angular velocity and specific force, in cabin coordinates.
+CHANNELS = PATH_COLUMNS[1:]
 MODULUS_COLUMNS = ("t", "M")
 
 
