@@ -4,7 +4,7 @@
     python benchmarks/feel.py --configs full --starts 1 --out feel.jsonl        # appends
     python benchmarks/feel.py --table feel.jsonl                               # the markdown table
 
-Settings (issue 16): ``thesis`` = the path's own weights, free start, free end (thesis 5.2, 5.6);
+Settings: ``thesis`` = the path's own weights, free start, free end (thesis 5.2, 5.6);
 ``rest`` = the path's own weights, from rest to rest with the track and heave centred (what starting
 and ending as a session does costs by itself); ``default`` = the command line's default (``felt``
 weights, from rest to rest, centred). Metrics from :mod:`desdemona.metrics` through the thesis'

@@ -56,6 +56,7 @@ import argparse
 import fnmatch
 import hashlib
 import json
+import math
 import os
 import subprocess
 import sys
@@ -68,12 +69,21 @@ CORPUS = HERE / "corpus"
 
 # Dotted keys of summary.json that vary from run to run (fnmatch patterns on the whole key).
 EXCLUDED = ("command", "versions", "versions.*", "solver.timings_s", "solver.timings_s.*",
-            "solver.starts[*].solve_time", "cycles.compute_time_s", "cycles.compute_time_s.*")
+            "solver.starts*.solve_time", "cycles.compute_time_s", "cycles.compute_time_s.*")
 ONLINE = ["--deadline", "100"]  # no plan is ever late: the fallbacks do not depend on the machine's speed
 
 # Inputs made with the command line: (file name, built-in path, keep the rows with t <= this [s]).
 INPUTS = [("catapult-4s.csv", "catapult", 4.0), ("dfs-catapult-3s.csv", "dfs-catapult", 3.0),
           ("roller-coaster-15s.csv", "roller-coaster", 15.0)]
+
+
+def periodic(duration: float) -> str:
+    """benchmarks/offline.py's scaling path as CSV text: f_x = 3 sin(0.8 t), f_y = 5 cos(0.5 t), 100 Hz."""
+    lines = ["# periodic: benchmarks/offline.py's scaling path\n", "# weights: 0,0,0,1,1,0\n", "t,wx,wy,wz,fx,fy,fz\n"]
+    for k in range(int(round(duration / 0.01)) + 1):
+        t = k * 0.01
+        lines.append(f"{t!r},0.0,0.0,0.0,{3.0 * math.sin(0.8 * t)!r},{5.0 * math.cos(0.5 * t)!r},9.81\n")
+    return "".join(lines)
 
 
 def corpus(name: str) -> str:
@@ -108,6 +118,14 @@ CASES: list[tuple[str, list[str]]] = [
     ("offline-dfs-catapult", ["optimize", "dfs-catapult", "--config", "dfs", "--starts", "2"]),
     ("offline-roller-coaster-15s-dfs", ["optimize", "{in}/roller-coaster-15s.csv", "--config", "dfs",
                                         "--starts", "1"]),
+    ("offline-cosine-toy-fatrop-8-starts", ["optimize", "cosine", "--config", "yaw-track", "--base",
+                                            "thesis-toy", "--h-u", "0.1", "--starts", "8", "--method", "fatrop"]),
+    ("offline-periodic-10s-yaw-track-cabin", ["optimize", "{in}/periodic-10s.csv", "--config", "yaw-track-cabin",
+                                              "--starts", "1"]),
+    ("offline-double-pulse-yaw-track-cabin", ["optimize", "double-pulse", "--config", "yaw-track-cabin",
+                                              "--starts", "1"]),
+    ("offline-catapult-full-refine", ["optimize", "catapult", "--config", "full", "--refine", "--starts", "1"]),
+    ("offline-roller-coaster-dfs", ["optimize", "roller-coaster", "--config", "dfs", "--starts", "1"]),
     # --- on-line: the closed loops of tests/test_online.py, test_dfs.py, test_api.py -----------------
     ("online-dfs-catapult-h1-s0.05", ["online", "dfs-catapult", "--config", "dfs", "--horizon", "1",
                                       "--step", "0.05", "--predictor", "perfect"]),
@@ -151,6 +169,25 @@ CASES: list[tuple[str, list[str]]] = [
                                    "--initial", "steady"]),
     ("online-cosine-full-hold", ["online", "cosine", "--config", "full", "--horizon", "2", "--step", "0.05",
                                  "--predictor", "hold"]),
+    # --- on-line: rows of benchmarks/online.py ------------------------------------------------------
+    ("online-roller-coaster-dfs-session", ["online", "roller-coaster", "--config", "dfs", "--horizon", "2",
+                                           "--step", "0.02"]),
+    ("online-dfs-catapult-dfs-yaw-session", ["online", "dfs-catapult", "--config", "dfs-yaw", "--horizon", "2",
+                                             "--step", "0.02"]),
+    ("online-dfs-catapult-dfs-yaw-thesis-timing-k0", ["online", "dfs-catapult", "--config", "dfs-yaw",
+                                                      "--horizon", "1", "--step", "0.1", "--replan", "0.4",
+                                                      "--delay", "--reach", "1"]),
+    ("online-double-pulse-yaw-track", ["online", "double-pulse", "--config", "yaw-track", "--horizon", "2",
+                                       "--step", "0.05"]),
+    ("online-catapult-full", ["online", "catapult", "--config", "full", "--horizon", "2", "--step", "0.05"]),
+    ("online-catapult-yaw-track-cabin-linear", ["online", "catapult", "--config", "yaw-track-cabin",
+                                                "--horizon", "2", "--step", "0.05", "--predictor", "linear"]),
+    ("online-catapult-yaw-track-reach-2", ["online", "catapult", "--config", "yaw-track", "--horizon", "2",
+                                           "--reach", "2", "--step", "0.05"]),
+    ("online-roller-coaster-15s-route", ["online", "{in}/roller-coaster-15s.csv", "--config", "dfs",
+                                         "--horizon", "2", "--step", "0.05", "--predictor", "route",
+                                         "--reference", "roller-coaster"]),
+    ("online-car-lap-full", ["online", "car-lap", "--config", "full", "--horizon", "2", "--step", "0.05"]),
     # --- real inputs: short rows of benchmarks/real.py (the corpus) ----------------------------------
     ("real-rudder-kick-yaw-track-cabin-offline", ["optimize", corpus("b737-rudder-kick.csv"),
                                                   "--config", "yaw-track-cabin"]),
@@ -160,6 +197,7 @@ CASES: list[tuple[str, list[str]]] = [
                                    "--predictor", "hold"]),
     ("real-doublet-yaw-track-cabin-offline", ["optimize", corpus("c172-doublet.csv"), "--config",
                                               "yaw-track-cabin"]),
+    ("real-doublet-dfs-offline", ["optimize", corpus("c172-doublet-M.csv"), "--config", "dfs"]),
     ("real-doublet-dfs-hold", ["online", corpus("c172-doublet-M.csv"), "--config", "dfs", "--predictor", "hold"]),
     ("real-doublet-yaw-track-cabin-hold", ["online", corpus("c172-doublet.csv"), "--config",
                                            "yaw-track-cabin", "--predictor", "hold"]),
@@ -202,6 +240,8 @@ def make_inputs(folder: Path, env: dict) -> dict:
         (folder / name).write_text("".join(kept))
         record[f"{name}#sha256"] = sha256((folder / name).read_bytes())
         record[f"{name}#rows"] = len(kept)
+    (folder / "periodic-10s.csv").write_text(periodic(10.0))
+    record["periodic-10s.csv#sha256"] = sha256((folder / "periodic-10s.csv").read_bytes())
     return record
 
 

@@ -49,11 +49,11 @@ class Row:
     starts: int = 1
 
 
-# Today's method before issue 17, for the side-by-side rows: the torque and power limits' curvature in
+# The method before the six-joint speed-ups, for the side-by-side rows: the torque and power limits' curvature in
 # the Hessian, no weight on the channels Q leaves at zero (the default on three joints or fewer), and
 # the stage functions interpreted. Two later changes apply to both rows and cannot be switched off:
 # the stages no longer evaluate their ends twice, and freed memory is kept for the factorisations.
-TODAY = {"limit_curvature": True, "unweighted": 0.0, "compile": False}
+BEFORE_SPEED_UPS = {"limit_curvature": True, "unweighted": 0.0, "compile": False}
 
 
 def ours(path, config, params, solver, h_u, weights=None, starts=1, label="", **problem) -> Row:
@@ -137,11 +137,11 @@ def main(argv=None) -> int:
             row = ours(path, "yaw-track-cabin", params, "ipopt", 0.05)
             row.note += f", {1e3 * row.per_start / max(row.iterations, 1):.1f} ms/iteration of the solver"
             rows.append(row)
-    # The whole machine (issue 17): today's method and the default side by side, in this run.
+    # The whole machine: the method before the six-joint speed-ups and the default side by side, in this run.
     paths = [catapult] if args.quick else [catapult, profiles.car_lap()]
     for path in paths:
         first = path is catapult  # compiles the stage functions into the fresh cache
-        for label, problem in ((", before issue 17", TODAY), (", compiling" if first else "", {})):
+        for label, problem in ((", before the six-joint speed-ups", BEFORE_SPEED_UPS), (", compiling" if first else "", {})):
             row = ours(path, "full", params, "ipopt", 0.05, label=label, **problem)
             peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
             row.note += (f", {1e3 * row.seconds / max(row.iterations, 1):.0f} ms/iteration, "

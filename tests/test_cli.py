@@ -36,7 +36,7 @@ def test_bad_parameter_file(tmp_path, capsys):
     assert "joints.track.velocity" in capsys.readouterr().err
 
 
-# ---- how a run starts and ends, its weights and gain (issue 16) -----------------------------------
+# ---- how a run starts and ends, its weights and gain -----------------------------------------
 
 QUICK = ["--config", "yaw-track", "--starts", "1", "--h-u", "0.1"]
 

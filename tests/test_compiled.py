@@ -1,4 +1,4 @@
-"""Compiled stage functions (issue 17): the same numbers as interpreted, one library per machine and
+"""Compiled stage functions: the same numbers as interpreted, one library per machine and
 configuration for every path, a cache that is reused, and a quiet fallback without a compiler; and the
 off-line cost, now assembled from stages without their ends and a terminal stage, is still the
 trapezoid rule over the whole grid."""

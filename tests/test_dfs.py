@@ -1,4 +1,4 @@
-"""The whole-machine dynamic flight simulator (issue 14): yaw and gimbals planned together, from rest,
+"""The whole-machine dynamic flight simulator: yaw and gimbals planned together, from rest,
 smooth, within every limit, against the classical loop that drives the gimbals too."""
 
 import json

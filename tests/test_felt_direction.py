@@ -1,4 +1,4 @@
-"""Felt motion (issue 14): the felt-direction error and the felt rotation against closed forms, for full
+"""Felt motion: the felt-direction error and the felt rotation against closed forms, for full
 and modulus-only paths."""
 
 import json

@@ -1,4 +1,4 @@
-"""The felt-motion figure (issue 14): drawn for a result (felt.png) and an on-line result beside its
+"""The felt-motion figure: drawn for a result (felt.png) and an on-line result beside its
 classical loop (online_felt.png), for full and modulus-only paths, without matplotlib's global state."""
 
 from types import SimpleNamespace

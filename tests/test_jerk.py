@@ -1,4 +1,4 @@
-"""Jerk limits (issue 14): parameters, continuous plans, the check, the off-line and on-line optimisers."""
+"""Jerk limits: parameters, continuous plans, the check, the off-line and on-line optimisers."""
 
 import math
 

@@ -81,7 +81,7 @@ def test_every_configuration_solves_and_passes_the_check(params, config, kind):
 
 
 def test_full_converges_with_the_paths_own_weights_and_no_worse_than_before(params):
-    """Issue 17: on six joints the unweighted channels get a small weight in the cost only and the
+    """On six joints the unweighted channels get a small weight in the cost only and the
     limits' curvature leaves the Hessian; the solve converges where rotations are free, and the RMS
     with the path's own Q is no worse than with the formulation before."""
     path = profiles.catapult(level=15.0, push=1.0, quiet=0.5, duration=2.5)
@@ -173,7 +173,7 @@ def test_classical_dfs_loop_reaches_the_steady_rate_within_limits(params):
 
 
 def test_from_rest_the_guesses_spin_the_yaw_up_and_leave_the_stationary_point(params):
-    """Zero motion is a stationary point (NOTES.md): from rest, a guess that stays still ends where it
+    """Zero motion is a stationary point: from rest, a guess that stays still ends where it
     began, while the spun-up guesses, at rest at t = 0 like the problem, find a far better optimum."""
     path = profiles.catapult(duration=5.0)
     problem = CueingProblem(Model(params, "yaw-track"), path, ProblemOptions(h_u=0.1, initial="rest", final="centre"))

@@ -1,4 +1,4 @@
-"""A recorded-looking path (issue 14's noisy test input): its rate, gain and noise, for full and
+"""A recorded-looking path (the noisy test input): its rate, gain and noise, for full and
 modulus-only paths, deterministic for a seed."""
 
 import math

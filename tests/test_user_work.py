@@ -1,4 +1,4 @@
-"""Never lose the user's work (issue 26): concurrent runs, batch and compare folders, runaway sizes,
+"""Never lose the user's work: concurrent runs, batch and compare folders, runaway sizes,
 tracebacks and unclear messages, each as a new user meets it on the command line."""
 
 import csv

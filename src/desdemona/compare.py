@@ -1,4 +1,4 @@
-"""Result folders side by side: one table of their quality metrics and overlay figures (issue 16).
+"""Result folders side by side: one table of their quality metrics and overlay figures.
 
 The metrics (:mod:`desdemona.metrics`) are computed from each folder's trajectory, so folders written
 before the metrics existed compare as well as new ones. ``desdemona compare DIR DIR ... --out DIR``

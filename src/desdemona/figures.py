@@ -8,7 +8,7 @@
 - :func:`draw_online`: ``online.png`` (like thesis figures 7.5/7.6, with the classical loop),
   ``online_felt.png`` (:func:`draw_felt` of the MPC beside the classical loop) and ``compute_time.png``
   (compute time per cycle against the deadline).
-- :func:`draw_felt`: what the occupant feels beyond the path (issue 14): the felt-direction error [deg]
+- :func:`draw_felt`: what the occupant feels beyond the path: the felt-direction error [deg]
   and the felt rotation per canal channel [deg/s] over time, with their thresholds
   (:mod:`desdemona.metrics` defines both), one column per trajectory.
 - :func:`draw_comparison`: overlays of several result folders (``desdemona compare``).

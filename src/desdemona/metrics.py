@@ -1,4 +1,4 @@
-"""What the occupant feels and what the machine does: the quality metrics of a result (issue 16).
+"""What the occupant feels and what the machine does: the quality metrics of a result.
 
 Each metric is one pure NumPy function of sampled arrays; :func:`of_arrays` (or :func:`of_trajectory`
 for a :class:`~desdemona.simulate.Trajectory`) computes them all into one :class:`Metrics` value with
@@ -43,7 +43,7 @@ Definitions (S, S_d : (K, 6) on a time grid t : (K,) [s]; channels wx, wy, wz [r
   any value never does. This is the figure that is printed.
 - Joint rates at t[0] (a session starts at rest: all zero).
 - Modulus ``M = |f|`` against ``M_d`` (the dfs configuration, eq. 7.1, 7.2): RMS, correlation, lag.
-- Felt-direction error (issue 14): per sample the angle [rad; deg where reported] between the felt
+- Felt-direction error: per sample the angle [rad; deg where reported] between the felt
   specific force f = S[:, 3:6] and the desired direction, that of f_d = S_d[:, 3:6] on a full path,
   else (a modulus-only path, S_d None: the dfs configuration) the occupant's vertical, cabin +z, along
   which a level cabin at rest feels f = (0, 0, +g). Computed as ``atan2(|f x d|, f . d)`` (accurate
@@ -53,7 +53,7 @@ Definitions (S, S_d : (K, 6) on a time grid t : (K,) [s]; channels wx, wy, wz [r
   a tilt of f by an angle a puts ``|f| sin a`` on a lateral otolith axis, so we take the angle at
   which that reaches the lateral otolith threshold at 1 g, ``asin(0.17 / 9.81)`` = 0.99 deg with
   Reid & Nahon's thresholds (the vestibular model's own thresholds are used).
-- Felt rotation (issue 14): the cabin's angular velocity S[:, :3] minus the desired S_d[:, :3] (zero
+- Felt rotation: the cabin's angular velocity S[:, :3] minus the desired S_d[:, :3] (zero
   where S_d is None: no rotation is wanted from a modulus path) through the semicircular-canal channels
   of the vestibular model, i.e. the canal part of the perceived error above, also for modulus paths.
   Per channel (wx, wy, wz) its RMS and peak ``max |.|`` [rad/s; deg/s where reported] and the share of

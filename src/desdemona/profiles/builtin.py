@@ -191,7 +191,7 @@ RATE_NOISE_PER_FORCE_NOISE = math.radians(1.0)
 def recorded_version(path: DesiredPath, noise_rms: float = 0.5, rate_hz: float = 100.0,
                      gain_error: float = 0.01, seed: int = 0) -> DesiredPath:
     """The path as a recording of it would look: an accelerometer (and rate gyro) log, resampled, with
-    a scale error and white noise; the noisy test input of issue 14 ("the built-in dfs-catapult plus
+    a scale error and white noise; the noisy test input ("the built-in dfs-catapult plus
     white noise of 0.5 m/s^2 RMS sampled at 100 Hz and a 1% gain error", built in as
     ``dfs-catapult-recorded``).
 
