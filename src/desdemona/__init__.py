@@ -1,9 +1,10 @@
 """desdemona: optimal motion cueing for the Desdemona centrifuge-based motion simulator.
 
 The data flow, one module per concept: parameters (:mod:`params`) -> model (:mod:`kinematics`,
-:mod:`dynamics`, :mod:`configs`, :mod:`model`) -> perception -> profile -> problem -> solver
-(:mod:`offline`, :mod:`online`) -> plan (:mod:`plan`) -> checked trajectory (:mod:`simulate`) ->
-metrics -> report and figures. The thesis "An optimal controller for Desdemona for an optimal feeling"
+:mod:`dynamics`, :mod:`configs`, :mod:`model`) -> perception -> desired path (:mod:`profiles`) ->
+a session's choices (:mod:`session`) -> problem (:mod:`problem`, :mod:`transcription`) -> solver
+(:mod:`offline`; :mod:`mpc` and :mod:`online`) -> plan (:mod:`plan`) -> checked trajectory
+(:mod:`simulate`) -> metrics -> report and figures. The layers are in the README. The thesis "An optimal controller for Desdemona for an optimal feeling"
 is the specification; docstrings cite its sections and equations.
 
 The main jobs from one import::

@@ -86,33 +86,7 @@ def draw_result(traj, summary: dict, out_dir: str | Path) -> list[Path]:
     if traj.S_d is not None:
         paths.append(_save(channels(traj.S_d, traj.S, ("S_d (desired)", "S (Desdemona)"), "C0--"),
                            out / "path.png", title))
-    # every joint of the machine: the free ones as planned, the held ones at their positions, at rest
-    held = summary["configuration"].get("held_positions")
-    shown = list(limits) if held is not None else joints
-    fig = _figure(figsize=(11, 1.6 * len(shown) + 1))
-    axes = fig.subplots(len(shown), 2, sharex=True, squeeze=False)
-    for k, name in enumerate(shown):
-        revolute = limits[name]["kind"] == "revolute"
-        scale, unit = (180.0 / np.pi, "deg") if revolute else (1.0, "m")
-        if name in joints:
-            q, qd, label = traj.q[:, joints.index(name)], traj.qd[:, joints.index(name)], name
-        else:
-            q, qd = np.full(len(traj.t), held[k]), np.zeros(len(traj.t))
-            label = f"{name} (held)"
-        axes[k, 0].plot(traj.t, q * scale)
-        axes[k, 0].set_ylabel(f"{label} [{unit}]")
-        if limits[name]["position"] is not None:
-            for bound in limits[name]["position"]:
-                axes[k, 0].axhline(bound * scale, color="r", lw=0.8, ls=":")
-        axes[k, 1].plot(traj.t, qd * scale)
-        axes[k, 1].set_ylabel(f"rate [{unit}/s]")
-        for bound in (-1, 1):
-            axes[k, 1].axhline(bound * limits[name]["velocity"] * scale, color="r", lw=0.8, ls=":")
-    for ax in axes.ravel():
-        ax.grid(alpha=0.3)
-    for ax in axes[-1]:
-        ax.set_xlabel("t [s]")
-    paths.append(_save(fig, out / "joints.png", title))
+    paths.append(_save(_joints_figure(traj, summary), out / "joints.png", title))
     fig = _figure(figsize=(10, 6))
     axes = fig.subplots(2, 1, sharex=True)
     for k, name in enumerate(joints):
@@ -144,6 +118,39 @@ def draw_result(traj, summary: dict, out_dir: str | Path) -> list[Path]:
     paths.append(draw_felt([traj], [None], out / "felt.png",
                            _vestibular((summary.get("quality") or {}).get("vestibular_model")), title))
     return paths
+
+
+def _joints_figure(traj, summary: dict):
+    """Every joint of the machine over time, position and rate with their limits: the free ones as
+    planned, the held ones at their positions, at rest."""
+    joints = summary["configuration"]["free_joints"]
+    limits = summary["parameters"]["joints"]
+    held = summary["configuration"].get("held_positions")
+    shown = list(limits) if held is not None else joints
+    fig = _figure(figsize=(11, 1.6 * len(shown) + 1))
+    axes = fig.subplots(len(shown), 2, sharex=True, squeeze=False)
+    for k, name in enumerate(shown):
+        revolute = limits[name]["kind"] == "revolute"
+        scale, unit = (180.0 / np.pi, "deg") if revolute else (1.0, "m")
+        if name in joints:
+            q, qd, label = traj.q[:, joints.index(name)], traj.qd[:, joints.index(name)], name
+        else:
+            q, qd = np.full(len(traj.t), held[k]), np.zeros(len(traj.t))
+            label = f"{name} (held)"
+        axes[k, 0].plot(traj.t, q * scale)
+        axes[k, 0].set_ylabel(f"{label} [{unit}]")
+        if limits[name]["position"] is not None:
+            for bound in limits[name]["position"]:
+                axes[k, 0].axhline(bound * scale, color="r", lw=0.8, ls=":")
+        axes[k, 1].plot(traj.t, qd * scale)
+        axes[k, 1].set_ylabel(f"rate [{unit}/s]")
+        for bound in (-1, 1):
+            axes[k, 1].axhline(bound * limits[name]["velocity"] * scale, color="r", lw=0.8, ls=":")
+    for ax in axes.ravel():
+        ax.grid(alpha=0.3)
+    for ax in axes[-1]:
+        ax.set_xlabel("t [s]")
+    return fig
 
 
 def _vestibular(name) -> perception.VestibularModel:
