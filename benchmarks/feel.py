@@ -22,9 +22,8 @@ import time
 
 import numpy as np
 
-from desdemona import Model, default_params, profiles
+from desdemona import Model, default_params, profiles, session
 from desdemona.offline import OptimizeOptions, optimize
-from desdemona.problem import ProblemOptions
 
 PATHS = ("cosine", "catapult", "double-pulse", "triple-pulse", "car-lap")
 SETTINGS = {  # name: (weights spec, initial, final)
@@ -36,11 +35,10 @@ SETTINGS = {  # name: (weights spec, initial, final)
 
 def run(name: str, config: str, setting: str, starts: int, h_u: float) -> dict:
     spec, initial, final = SETTINGS[setting]
-    path = profiles.get_profile(name)
-    weights = tuple(profiles.weights_for(spec, path))
-    options = OptimizeOptions(ProblemOptions(h_u=h_u, initial=initial, final=final, weights=weights), starts=starts)
+    choices = session.Choices(weights=spec, initial=initial, final=final, h_u=h_u)
+    resolved = session.offline(profiles.get_profile(name), Model(default_params(), config), choices)
     start = time.perf_counter()
-    result = optimize(path, Model(default_params(), config), options)
+    result = optimize(resolved.path, resolved.model, OptimizeOptions(resolved.options, starts=starts))
     q = result.quality
     return {"path": name, "config": config, "setting": setting, "weights": spec, "initial": initial,
             "final": final, "starts": starts, "h_u": h_u, "wall_s": time.perf_counter() - start,
