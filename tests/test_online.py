@@ -468,3 +468,33 @@ def test_the_online_command_weighs_as_optimize_does(tmp_path):
     np.testing.assert_allclose(used[None], profiles.weights_for("felt", path))
     np.testing.assert_allclose(used["path"], path.weights)
     assert used[None][2] > 5.0 * used["path"][2]  # yaw rate weighed by its threshold
+
+
+def test_a_placed_start_is_within_half_a_turn_of_home_and_feels_the_same():
+    """A freely turning gimbal placed four turns away (24.3 rad) starts at the same attitude within
+    half a turn: the cue and the torques are those of the placed start."""
+    model = Model(config="full")
+    controller = MPC(model, OPTIONS)
+    q = np.array([0.3, 1.0, -0.2, 24.3, -7.0, 3.5])
+    qd, qdd = np.zeros(6), np.full(6, 0.1)
+    wrapped = controller._within_a_turn(q)
+    bounded = np.isfinite(model.limits.position_min)
+    assert np.all(np.abs(wrapped[~bounded]) <= np.pi) and np.array_equal(wrapped[bounded], q[bounded])
+    np.testing.assert_allclose(wrapped[3], 24.3 - 8 * np.pi)
+    np.testing.assert_allclose(model.S(wrapped, qd, qdd), model.S(q, qd, qdd), atol=1e-12)
+    tau = model.functions["tau"]
+    np.testing.assert_allclose(np.asarray(tau(wrapped, qd, qdd)), np.asarray(tau(q, qd, qdd)), atol=1e-9)
+
+
+def test_online_perception_reports_the_perceived_error_of_the_controller_and_the_loop(tmp_path, capsys):
+    from desdemona.cli import main
+
+    out = tmp_path / "felt"
+    assert main(["online", "cosine", "--config", "yaw-track", "--horizon", "1", "--step", "0.05",
+                 "--deadline", "100", "--perception", "thesis", "--out", str(out), "--no-view"]) == 0
+    metrics = json.loads((out / "summary.json").read_text())["metrics"]
+    assert metrics["rms_perceived"] > 0 and metrics["rms_perceived_classical"] > 0
+    assert f"perceived {metrics['rms_perceived']:.4g}" in capsys.readouterr().out
+    assert main(["online", "dfs-catapult", "--config", "dfs-yaw", "--perception", "thesis",
+                 "--out", str(tmp_path / "modulus")]) == 2
+    assert "not to the dfs modulus" in capsys.readouterr().err

@@ -291,9 +291,17 @@ class MPC:
         placed = self._solve(q, qd, a, data, method="nlp", place=True)
         if placed.success and placed.cost < first.cost:
             self.plan = self._per_step(*placed.plan)
-            return placed.start, np.zeros_like(qd)
+            return self._within_a_turn(placed.start), np.zeros_like(qd)
         self.plan, self.plan_age = None, 0
         return q, qd
+
+    def _within_a_turn(self, q) -> np.ndarray:
+        """``q`` with each joint that has no position limit (a gimbal that turns freely) taken within
+        half a turn of home, [-pi, pi): the same attitude, so the same plan, but a start the machine
+        reaches quickly."""
+        lim = self.limits
+        free = ~(np.isfinite(lim.position_min) | np.isfinite(lim.position_max))
+        return np.where(free, np.remainder(q + np.pi, 2.0 * np.pi) - np.pi, q)
 
     def _advance_filters(self, state: State, command) -> None:
         """Carry the felt filter state over the cycle just commanded, and the desired one with it."""

@@ -137,9 +137,10 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
     if options.initial == "rest":  # a fresh predictor's first preview: no state is kept
         q0, qd0 = controller.place((q0, qd0), predictor(options.predictor, reference)(path, 0.0, options.mpc.horizon))
     loop = closed_loop(controller, path, predictor(options.predictor, reference), q0=q0, qd0=qd0)
-    # judged with the weights the controller minimised, as an off-line result is (desdemona.session)
-    weights = options.mpc.weights
-    result, _ = check(model, path, loop.plan, step=step, weights=weights)
+    # judged with the weights the controller minimised, and perceived through its perception model, as
+    # an off-line result is (desdemona.session)
+    weights, perception = options.mpc.weights, options.mpc.perception
+    result, _ = check(model, path, loop.plan, step=step, weights=weights, perception=perception)
     if not result.passed:
         raise LimitViolation(result, "the closed-loop trajectory")
     nodes = loop.plan.t_nodes
@@ -147,8 +148,8 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
         classical = classical_dfs(path, model, times=nodes, state=(q0, qd0))
     else:
         classical = classical_washout(path, model, times=nodes, state=(q0, qd0), trimmed=options.initial == "steady")
-    baseline_check, _ = check(model, path, classical, step=step, weights=weights)
-    baseline = evaluate_plan(model, path, classical, nodes)
+    baseline_check, _ = check(model, path, classical, step=step, weights=weights, perception=perception)
+    baseline = evaluate_plan(model, path, classical, nodes, perception)
     return OnlineResult(path=path, model=model, options=options, loop=loop, deadline=controller.deadline,
-                        trajectory=evaluate_plan(model, path, loop.plan, nodes), check=result,
+                        trajectory=evaluate_plan(model, path, loop.plan, nodes, perception), check=result,
                         baseline=baseline, baseline_check=baseline_check)

@@ -465,7 +465,9 @@ def online_summary(result, command: str | None = None) -> dict:
         "method": f"mpc ({mpc.plan_method}), predictor {result.options.predictor}, horizon {mpc.horizon:g} s, "
                   + (f"reach {mpc.length:g} s, " if mpc.length > mpc.horizon else "") + f"step {mpc.step:g} s",
         "metrics": {"rms_weighted": c.rms, "rms_modulus": c.rms_modulus,
+                    "rms_perceived": c.rms_perceived,
                     "rms_weighted_classical": None if baseline is None else baseline.rms,
+                    "rms_perceived_classical": None if baseline is None else baseline.rms_perceived,
                     "rms_modulus_classical_loop": None if baseline is None else baseline.rms_modulus,
                     "limits_kept": c.passed, "worst_use": c.worst, "check_grid_step_s": c.step},
         "start": start_description(result),

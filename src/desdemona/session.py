@@ -148,18 +148,21 @@ def thesis(path: DesiredPath, model: Model, choices: Choices = Choices()) -> Ses
 
 def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, horizon: float | None = None,
            reach: float | None = None, step: float = 0.02, predictor: str = "perfect",
-           reference: DesiredPath | None = None, **timing) -> Session:
+           reference: DesiredPath | None = None, perception=None, **timing) -> Session:
     """The session of ``online``: the cued path and its :class:`~desdemona.online.OnlineOptions`.
 
     horizon : how far the preview reaches [s], None: :func:`~desdemona.mpc.default_horizon`
     (at most the path's duration); reach : how far each plan looks [s], None: at least the default
     horizon; step : the plan's step [s]; predictor and reference (a recording of the same course, for
-    "route"): :class:`OnlineOptions`; ``timing``: the other :class:`MPCOptions` fields (replan, delay,
-    deadline, method, tail_step).
+    "route"): :class:`OnlineOptions`; perception : a vestibular model through which the controller
+    minimises the perceived difference, as :func:`offline` takes it; ``timing``: the other
+    :class:`MPCOptions` fields (replan, delay, deadline, method, tail_step).
     """
     from desdemona.mpc import MPCOptions, default_horizon
     from desdemona.online import OnlineOptions
 
+    if model.config.modulus_cost and perception is not None:
+        raise ChoiceError("--perception applies to the full path S, not to the dfs modulus")
     if reference is not None and (reference.S_d is None) != (path.S_d is None):
         raise ChoiceError(f"--reference {reference.name}: its channels ({'t,M' if reference.S_d is None else 'S'}) "
                          f"differ from the path's")
@@ -183,7 +186,8 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
         raise ChoiceError("--predictor route needs --reference, a recording of the same course" if reference is None
                          else "--reference is used only with --predictor route")
     try:
-        mpc = MPCOptions(horizon=horizon, step=step, reach=reach, **cost(path, model, choices), **timing)
+        mpc = MPCOptions(horizon=horizon, step=step, reach=reach, perception=perception,
+                         **cost(path, model, choices), **timing)
     except ValueError as exc:
         raise ChoiceError(f"--replan: {exc}") from None
     size = sizing.check_fits_online(path, model.config, mpc)

@@ -178,15 +178,21 @@ def run_online(args) -> int:
     model, path, out = _run_inputs(args)
     reference = None if args.reference is None else profiles.load(args.reference)
     timing = {k: getattr(args, k) for k in ("replan", "delay", "deadline", "method", "tail_step")}
+    perception = perception_models.get_model(args.perception) if args.perception else None
     resolved = session.online(path, model, session.Choices.of(args), horizon=args.horizon, reach=args.reach,
-                              step=args.step, predictor=args.predictor, reference=reference, **timing)
+                              step=args.step, predictor=args.predictor, reference=reference, perception=perception,
+                              **timing)
     path, options = resolved.path, resolved.options
     result = online.run(path, model, options)
     unreachable = sizing.unreachable(path, model)
     report.write_online(result, out, report.command_line(), args.overwrite, unreachable=unreachable,
                         protect=_inputs(args), view=args.view)
     c, times, sources = result.check, result.loop.compute_times, result.loop.sources
-    classical = "" if result.baseline_check is None else f" (classical loop {result.baseline_check.rms:.4g})"
+    base = result.baseline_check
+    classical = "" if base is None else f" (classical loop {base.rms:.4g})"
+    if c.rms_perceived is not None:
+        classical += f", perceived {c.rms_perceived:.4g}" + ("" if base is None else
+                                                             f" (classical loop {base.rms_perceived:.4g})")
     modulus = ""
     if model.config.aligned:
         modulus = f", RMS(M - M_d) = {c.rms_modulus:.4g}"

@@ -132,6 +132,9 @@ def build_parser() -> argparse.ArgumentParser:
                              "can tilt); given: the state of --initial-state (the default when it is given)")
     _add_initial_state_option(online)
     _add_cost_options(online)
+    online.add_argument("--perception", choices=tuple(perception_models.MODELS), default=None,
+                        help="minimise the perceived difference through this vestibular model, and report "
+                             "the perceived error of the controller and of the classical loop")
     online.add_argument("--method", choices=("auto", "rti", "nlp"), default="auto",
                         help="rti: one QP per plan (fast); nlp: IPOPT to convergence; auto: rti when a "
                              "plan is made every step, nlp when --replan spans several steps, as the "
