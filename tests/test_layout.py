@@ -18,7 +18,7 @@ LAYERS = (
      {"problem", "transcription", "sizing", "classical", "thesis", "predictors", "simulate", "metrics"}),
     ("solvers and sessions", {"offline", "mpc", "online", "session"}),
     ("results", {"figures", "report", "view", "compare"}),
-    ("commands", {"batch", "cli", "__main__", "__init__"}),
+    ("commands and the real-time service", {"batch", "cli", "service", "__main__", "__init__"}),
 )
 LAYER = {module: k for k, (_, modules) in enumerate(LAYERS) for module in modules}
 LONG_FUNCTIONS = {"build_parser"}  # the argparse table

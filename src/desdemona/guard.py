@@ -183,6 +183,26 @@ def interruptible():
         _state.signum, _state.monitored, _state.unstoppable, _state.speak = None, 0, 0, False
 
 
+@contextlib.contextmanager
+def handled_here(handler):
+    """Within this block SIGINT and SIGTERM call ``handler(signum)`` and nothing else: no exception, no
+    repeated raising, no watchdog ending the process. For a loop that must act on a stop itself and
+    take its time doing it (the real-time service brakes the machine to rest before it exits)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    saved = {s: signal.getsignal(s) for s in STOPPING}
+    saved_wakeup = signal.set_wakeup_fd(-1)  # the watchdog hears nothing from this block
+    for s in STOPPING:
+        signal.signal(s, lambda signum, frame: handler(signum))
+    try:
+        yield
+    finally:
+        for s, h in saved.items():
+            signal.signal(s, h)
+        signal.set_wakeup_fd(saved_wakeup, warn_on_full_buffer=False)
+
+
 def check() -> None:
     """Raise :class:`Interrupted` if a stop was requested (between pieces of work)."""
     if _state.signum is not None:

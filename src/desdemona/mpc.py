@@ -295,6 +295,11 @@ class MPC:
         self.plan, self.plan_age = None, 0
         return q, qd
 
+    def forget(self) -> None:
+        """Drop the last plan: the machine was moved by something else (parked by the real-time
+        service while the host was quiet), so the next cycle plans afresh from where it stands."""
+        self.plan, self.plan_age = None, 0
+
     def _within_a_turn(self, q) -> np.ndarray:
         """``q`` with each joint that has no position limit (a gimbal that turns freely) taken within
         half a turn of home, [-pi, pi): the same attitude, so the same plan, but a start the machine

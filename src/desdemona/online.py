@@ -22,7 +22,7 @@ from desdemona.classical import classical_dfs, classical_washout, steady_start
 from desdemona.model import Model
 from desdemona.mpc import MPC, MPCOptions
 from desdemona.plan import Plan, start_state
-from desdemona.predictors import PREDICTORS, predictor
+from desdemona.predictors import LIVE_ONLY, PREDICTORS, predictor
 from desdemona.profiles import DesiredPath
 from desdemona.simulate import (ClosedLoop, LimitCheck, LimitViolation, Trajectory, check, closed_loop, evaluate_plan,
                                 trajectory_dataframe)
@@ -58,8 +58,8 @@ class OnlineOptions:
     initial: Literal["rest", "home", "steady", "given"] | None = None
 
     def __post_init__(self):
-        if self.predictor not in PREDICTORS:
-            raise ValueError(f"predictor = {self.predictor!r}: must be one of {', '.join(PREDICTORS)}")
+        if self.predictor not in PREDICTORS and self.predictor not in LIVE_ONLY:
+            raise ValueError(f"predictor = {self.predictor!r}: must be one of {', '.join([*PREDICTORS, *LIVE_ONLY])}")
         if self.predictor == "route" and self.reference is None:
             raise ValueError("predictor 'route' needs a reference recording of the course")
         if self.initial is None:
@@ -129,7 +129,6 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
     or washout (the others) runs beside it from the same state as the baseline. Raises :class:`LimitViolation` if the run breaks a limit on the independent check's fine
     grid.
     """
-    step = options.mpc.step
     path = model.config.cue_path(path)
     reference = None if options.reference is None else model.config.cue_path(options.reference)
     q0, qd0 = options.start(path, model)
@@ -137,6 +136,18 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
     if options.initial == "rest":  # a fresh predictor's first preview: no state is kept
         q0, qd0 = controller.place((q0, qd0), predictor(options.predictor, reference)(path, 0.0, options.mpc.horizon))
     loop = closed_loop(controller, path, predictor(options.predictor, reference), q0=q0, qd0=qd0)
+    return judge(path, model, options, loop, controller.deadline)
+
+
+def judge(path: DesiredPath, model: Model, options: OnlineOptions, loop: ClosedLoop, deadline: float) -> OnlineResult:
+    """A closed-loop session as a checked :class:`OnlineResult`: the plan the machine executed
+    (``loop``, from its start) checked independently on the fine grid, and the classical loop run
+    beside it on the same path from the same start. :func:`run` and the real-time service
+    (:mod:`desdemona.service.serve`) judge their sessions with it. Raises :class:`LimitViolation` if
+    the plan breaks a limit."""
+    step = options.mpc.step
+    path = model.config.cue_path(path)
+    q0, qd0 = loop.plan.q0, loop.plan.qd0
     # judged with the weights the controller minimised, and perceived through its perception model, as
     # an off-line result is (desdemona.session)
     weights, perception = options.mpc.weights, options.mpc.perception
@@ -150,6 +161,6 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
         classical = classical_washout(path, model, times=nodes, state=(q0, qd0), trimmed=options.initial == "steady")
     baseline_check, _ = check(model, path, classical, step=step, weights=weights, perception=perception)
     baseline = evaluate_plan(model, path, classical, nodes, perception)
-    return OnlineResult(path=path, model=model, options=options, loop=loop, deadline=controller.deadline,
+    return OnlineResult(path=path, model=model, options=options, loop=loop, deadline=deadline,
                         trajectory=evaluate_plan(model, path, loop.plan, nodes, perception), check=result,
                         baseline=baseline, baseline_check=baseline_check)

@@ -10,6 +10,7 @@ on the vehicle to be simulated and the mission of the pilot". A predictor is a c
 - ``hold``: the present value held (:class:`HoldPredictor`: a line's end through the last 0.2 s,
   moved only when it leaves its noise band);
 - ``linear``: extrapolated from the last two samples;
+- ``forecast`` (a live session only, :data:`LIVE_ONLY`): the host's own forecast, sent with its motion;
 - ``route``: a known course (:class:`RoutePredictor`): the future taken from a reference recording of
   the same route (a car on a known track, a ride on a coaster, a rehearsed manoeuvre), aligned to the
   live signal by its recent past, so that a run that is faster, slower or noisier than the reference
@@ -183,8 +184,18 @@ PREDICTORS = {"perfect": predict_perfect, "hold": HoldPredictor, "linear": predi
               "route": RoutePredictor}
 
 
+#: Predictors that exist only in a live session: ``forecast`` reads the forecast block a simulator host
+#: sends with its motion (the vehicle's model run ahead, :mod:`desdemona.service`).
+LIVE_ONLY = ("forecast",)
+#: The predictors a live session can use: ``perfect`` would need the future.
+LIVE = ("hold", "linear", "route", *LIVE_ONLY)
+
+
 def predictor(name: str, reference: DesiredPath | None = None):
     """A fresh predictor called ``name`` (:data:`PREDICTORS`); ``route`` needs its reference recording."""
+    if name in LIVE_ONLY:
+        raise ValueError(f"the {name} predictor reads what a simulator host sends with its motion "
+                         f"(desdemona serve); a run on a recording has none")
     if name not in PREDICTORS:
         raise ValueError(f"unknown predictor {name!r}; valid: {', '.join(PREDICTORS)}")
     if name == "route":

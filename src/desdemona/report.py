@@ -485,24 +485,29 @@ def online_summary(result, command: str | None = None) -> dict:
 
 
 def write_online(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False,
-                 unreachable: dict | None = None, protect=(), view: bool = True) -> Path:
+                 unreachable: dict | None = None, protect=(), view: bool = True, cycle_columns: dict | None = None,
+                 extra_summary: dict | None = None) -> Path:
     """The result folder of an on-line :class:`~desdemona.online.OnlineResult`: the usual files plus
     ``cycles.csv`` (per-cycle compute time, source of the command, fallback reason), ``classical.csv``
     (the classical loop's run, columns as trajectory.csv's; none where there is no baseline), ``online.png``
     (like thesis figures 7.5/7.6) and ``compute_time.png`` (compute time per cycle against the deadline).
-    unreachable, protect, view : as in :func:`write`."""
+    unreachable, protect, view : as in :func:`write`; cycle_columns : more columns of ``cycles.csv``,
+    name -> one value per cycle (the real-time service's message age, latency, status); extra_summary :
+    more entries of ``summary.json``."""
     if unreachable is None:
         from desdemona import sizing
 
         unreachable = sizing.unreachable(result.path, result.model)
-    summary = {**online_summary(result, command), "unreachable": unreachable}
+    summary = {**online_summary(result, command), "unreachable": unreachable, **(extra_summary or {})}
     loop = result.loop
+    more = cycle_columns or {}
 
     def extra(folder: Path) -> None:
         with open(folder / "cycles.csv", "w") as fh:
-            fh.write("t,compute_time_s,source,reason\n")
-            for t, c, s, r in zip(loop.cycle_times, loop.compute_times, loop.sources, loop.reasons):
-                fh.write(f"{t:.6g},{c:.6g},{s},\"{r}\"\n")
+            fh.write(",".join(["t", "compute_time_s", "source", "reason", *more]) + "\n")
+            for k, (t, c, s, r) in enumerate(zip(loop.cycle_times, loop.compute_times, loop.sources, loop.reasons)):
+                cells = [f"{v[k]:.6g}" if isinstance(v[k], (float, np.floating)) else str(v[k]) for v in more.values()]
+                fh.write(",".join([f"{t:.6g}", f"{c:.6g}", s, f"\"{r}\"", *cells]) + "\n")
         if result.baseline is not None:
             names, table = trajectory_table(result.baseline, result.model.config)
             with open(folder / "classical.csv", "w") as fh:

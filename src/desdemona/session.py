@@ -196,6 +196,33 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     return Session(path, model, options, size)
 
 
+#: How long a live session is assumed to last when it is sized before it starts [s].
+LIVE_SPAN = 600.0
+
+
+def live(model: Model, choices: Choices = Choices(), *, channels: int, rate: float | None = None,
+         span: float | None = None, **online_kwargs) -> Session:
+    """The session of ``serve``: :func:`online` for motion that is not known yet, only its form
+    (``channels``: 6 for S, 1 for the modulus) and the cycle's ``rate`` [Hz] (None: the on-line
+    step's default, 50 Hz); sized for ``span`` seconds (None: :data:`LIVE_SPAN`). The path the result
+    holds is a placeholder at 1 g; ``online_kwargs``: as :func:`online` takes them (not ``step``), the
+    predictor one of :data:`desdemona.predictors.LIVE` (default ``hold``)."""
+    if channels not in (1, 6):
+        raise ChoiceError(f"--channels {channels}: 6 (S) or 1 (the modulus)")
+    if rate is not None and not (math.isfinite(rate) and rate > 0):
+        raise ChoiceError(f"--rate {rate:g}: a positive number of cycles a second")
+    from desdemona.predictors import LIVE
+
+    predictor = online_kwargs.setdefault("predictor", LIVE[0])
+    if predictor not in LIVE:
+        raise ChoiceError(f"--predictor {predictor}: a live session uses one of {', '.join(LIVE)}")
+    span = LIVE_SPAN if span is None else span
+    t = np.array([0.0, span])
+    placeholder = (DesiredPath("host", t, None, modulus=np.full(2, profiles.G)) if channels == 1 else
+                   DesiredPath("host", t, np.tile([0.0, 0.0, 0.0, 0.0, 0.0, profiles.G], (2, 1))))
+    return online(placeholder, model, choices, step=0.02 if rate is None else 1.0 / rate, **online_kwargs)
+
+
 def parse_state(text: str, model: Model) -> tuple[np.ndarray, np.ndarray]:
     """Positions and rates 'q1,q2,...;qd1,qd2,...' of the free joints (SI), within their limits."""
     names, lim = model.config.joint_names, model.limits

@@ -8,6 +8,7 @@ choices through :mod:`desdemona.session`, runs the library and prints what it di
 from __future__ import annotations
 
 import os
+import signal
 import sys
 import time
 from pathlib import Path
@@ -40,7 +41,8 @@ def run_model(args) -> int:
 
 def _inputs(args) -> tuple:
     """The files a run reads: a replaced result folder must not hold them."""
-    return tuple(p for p in (args.profile, args.params) if p is not None and os.path.exists(p))
+    given = (getattr(args, "profile", None), getattr(args, "reference", None), args.params)
+    return tuple(p for p in given if p is not None and os.path.exists(p))
 
 
 def _claim_out(args) -> Path:
@@ -350,3 +352,118 @@ def describe(model: Model) -> str:
               f"  power       = {fmt(power)} W (use {fmt(np.abs(power) / lim.power)} of the limits)",
               f"  inertia eigenvalues = {fmt(eig)}"]
     return "\n".join(lines)
+
+
+def run_serve(args) -> int:
+    from desdemona import report
+    from desdemona.service import protocol, serve
+
+    model = _machine(args)
+    out = _claim_out(args)
+    if out.exists() and not args.overwrite:
+        raise UserError(f"{out}: already exists; choose another folder or add --overwrite")
+    report.check_replaceable(out, protect=_inputs(args))
+    channels = args.channels or (1 if model.config.takes_modulus else 6)
+    try:
+        serving = serve.ServeOptions(listen=protocol.address(args.listen), send=protocol.address(args.send),
+                                     channels=channels, timeout=args.timeout, duration=args.duration,
+                                     quiet_end=args.quiet_end)
+    except ValueError as exc:
+        raise UserError(str(exc)) from None
+    reference = None if args.reference is None else profiles.load(args.reference)
+    resolved = session.live(model, session.Choices.of(args), channels=channels, rate=args.rate, span=args.duration,
+                            horizon=args.horizon, reach=args.reach, predictor=args.predictor, reference=reference)
+    options = resolved.options
+    print(f"desdemona: serving {model.config.name} at {1.0 / options.mpc.step:g} Hz: motion from {args.listen}, "
+          f"setpoints to {args.send}; Ctrl-C parks the machine and ends the session", file=sys.stderr, flush=True)
+    try:
+        served = serve.serve(model, options, serving)
+    except OSError as exc:
+        raise UserError(f"--listen {args.listen}: {exc.strerror or exc}") from None
+    result = serve.result(served, model, options)
+    summary = serve.summary(served, serving)
+    report.write_online(result, out, report.command_line(), args.overwrite, protect=_inputs(args), view=args.view,
+                        cycle_columns=served.columns, extra_summary={"service": summary})
+    print(serve.describe(summary) + f"; written to {out}")
+    print(f"  felt: {result.quality.headline()}")
+    if served.stopped_by is not None:
+        print(f"desdemona: stopped ({signal.Signals(served.stopped_by).name}): the machine was parked",
+              file=sys.stderr)
+        return 128 + served.stopped_by
+    return 0
+
+
+def run_machine(args) -> int:
+    from desdemona.service import machine, protocol
+
+    model = _machine(args)
+    try:
+        listen = protocol.address(args.listen)
+        with guard.handled_here(_stop_here):  # the stand-in writes what it has as it stops
+            report = machine.run(model, listen, args.out, idle=args.idle, duration=args.duration)
+    except ValueError as exc:
+        raise UserError(str(exc)) from None
+    except OSError as exc:
+        raise UserError(f"--listen {args.listen}: {exc.strerror or exc}") from None
+    print(report.describe())
+    if not report.passed:
+        return machine.exit_code(report)
+    return 128 + signal.SIGINT if report.stopped.startswith("interrupted") else 0
+
+
+def _stop_here(signum: int) -> None:
+    """Within :func:`guard.handled_here`: a stop signal ends the current loop, once."""
+    raise KeyboardInterrupt
+
+
+def _host_options(args) -> dict:
+    from desdemona.service import protocol
+
+    outage = None
+    if args.outage is not None:
+        try:
+            outage = tuple(float(x) for x in args.outage.split(","))
+        except ValueError:
+            outage = ()
+        if len(outage) != 2:
+            raise UserError(f"--outage {args.outage!r}: give START,LENGTH in seconds, e.g. 30,1")
+    try:
+        to = protocol.address(args.to)
+    except ValueError as exc:
+        raise UserError(str(exc)) from None
+    return {"to": to, "speed": args.speed, "forecast": args.forecast, "modulus": args.modulus, "drop": args.drop,
+            "outage": outage, "seed": args.seed}
+
+
+def _say_sent(counts: dict, to: str) -> None:
+    print(f"sent {counts['sent']} messages to {to} in {counts['duration']:.1f} s (sequence "
+          f"{counts['first_sequence']}-{counts['last_sequence']}; left out: {counts['dropped']} by --drop, "
+          f"{counts['outage']} by --outage; latest {1e3 * counts['late']:.1f} ms behind its time)")
+
+
+def run_host_replay(args) -> int:
+    from desdemona.service import hosts
+
+    options = _host_options(args)
+    path = profiles.load(args.profile)
+    print(f"desdemona: sending {path.name} ({path.duration:g} s) to {args.to}", file=sys.stderr, flush=True)
+    try:
+        counts = hosts.replay(path, **options)
+    except ValueError as exc:
+        raise UserError(str(exc)) from None
+    _say_sent(counts, args.to)
+    return 0
+
+
+def run_host_jsbsim(args) -> int:
+    from desdemona.service import hosts
+
+    options = _host_options(args)
+    print(f"desdemona: flying {args.script} and sending its motion to {args.to}", file=sys.stderr, flush=True)
+    try:
+        counts = hosts.jsbsim(args.script, rate=args.rate, start=args.start, end=args.end, **options)
+    except ValueError as exc:
+        raise UserError(str(exc)) from None
+    _say_sent(counts, args.to)
+    print(f"  {counts['aircraft']}, from {counts['start']:g} s ({counts['start_reason']}); {counts['ended']}")
+    return 0

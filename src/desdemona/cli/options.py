@@ -11,6 +11,7 @@ from desdemona.cli import commands
 from desdemona.cli.exits import EXIT_CODES, SEE_EXIT_CODES
 from desdemona.configs import CONFIGURATIONS
 from desdemona.params import BUILTIN_SETS
+from desdemona.predictors import LIVE
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -144,6 +145,10 @@ def build_parser() -> argparse.ArgumentParser:
     online.set_defaults(run=commands.run_online)
 
     _add_import_parser(sub)
+
+    _add_serve_parser(sub)
+    _add_machine_parser(sub)
+    _add_host_parser(sub)
 
     prof = sub.add_parser("profiles", help="list the built-in desired paths, or write one to CSV",
                           description="List the built-in desired paths with a one-line description; with a "
@@ -332,3 +337,105 @@ def _add_cost_options(parser: argparse.ArgumentParser) -> None:
 def _add_view_option(parser) -> None:
     parser.add_argument("--no-view", action="store_false", dest="view",
                         help="do not write view.html (the 3D replay, see 'desdemona view') into the result folder")
+
+
+def _add_serve_parser(sub) -> None:
+    serve = sub.add_parser(
+        "serve", epilog=SEE_EXIT_CODES, help="run the on-line controller in real time between a simulator host "
+                                             "and the machine (UDP)",
+        description="Run a session in real time: every cycle take the newest motion the host sent (UDP, "
+                    "docs/protocol.md), plan with the on-line controller, check the command against every "
+                    "limit and send the machine its setpoint. The machine starts at rest; without a valid "
+                    "host message for --timeout cycles it is parked (braked to rest, then held) until the "
+                    "host is back. Ctrl-C (or SIGTERM) parks the machine, writes the session to --out and "
+                    "exits 130 (143); a second Ctrl-C stops at once after one braking command.")
+    _add_machine_options(serve, default_config="dfs")
+    serve.add_argument("--listen", required=True, metavar="HOST:PORT",
+                       help="where the host's motion arrives, e.g. 127.0.0.1:5500")
+    serve.add_argument("--send", required=True, metavar="HOST:PORT",
+                       help="where the setpoints go (the motion system), e.g. 127.0.0.1:5501")
+    serve.add_argument("--out", required=True, metavar="DIR", help="the session's result folder, written as it ends")
+    serve.add_argument("--rate", type=float, default=None, metavar="HZ",
+                       help="cycles a second: the plan's step is one cycle (default: 50)")
+    serve.add_argument("--channels", type=int, choices=(6, 1), default=None,
+                       help="what the host sends: 6, the path S; 1, the modulus M (default: 1 on dfs and "
+                            "dfs-yaw, 6 elsewhere)")
+    serve.add_argument("--predictor", choices=LIVE, default="hold",
+                       help="how the controller sees ahead: hold (default), linear, route (with --reference), "
+                            "forecast (the forecast block the host sends with its motion)")
+    serve.add_argument("--reference", metavar="PROFILE_OR_CSV", default=None,
+                       help="with --predictor route: a recording of the course")
+    serve.add_argument("--horizon", type=float, default=None, metavar="SECONDS",
+                       help="T_h (default: 2 on dfs and dfs-yaw; 4 with the track)")
+    serve.add_argument("--reach", type=float, default=None, metavar="SECONDS",
+                       help="how far each plan looks, at least T_h (default: as online)")
+    serve.add_argument("--timeout", type=int, default=5, metavar="CYCLES",
+                       help="cycles without a valid host message before the machine is parked (default: 5)")
+    serve.add_argument("--duration", type=float, default=None, metavar="SECONDS",
+                       help="end the session after this long (default: when stopped)")
+    serve.add_argument("--quiet-end", type=float, default=None, metavar="SECONDS", dest="quiet_end",
+                       help="end the session once the machine is parked and the host has been quiet this long "
+                            "(default: never)")
+    _add_cost_options(serve)
+    _add_overwrite_option(serve)
+    _add_view_option(serve)
+    serve.set_defaults(run=commands.run_serve)
+
+
+def _add_machine_parser(sub) -> None:
+    machine = sub.add_parser(
+        "machine", help="a stand-in for the motion system: receive the setpoints of 'serve' and check each",
+        description="Receive the setpoints 'desdemona serve' sends (UDP, docs/protocol.md) and check every one "
+                    "on its own, independently of the service: every limit from position to jerk, torque and "
+                    "power over the whole cycle, held joints still, continuity from one setpoint to the next. "
+                    "Writes setpoints.csv, violations.csv and summary.json into --out; exit 1 if any setpoint "
+                    "broke a limit.",
+        epilog="Exit codes: 0 every setpoint kept every limit, 1 a violation, 2 bad input, 130 interrupted.")
+    _add_machine_options(machine, default_config="dfs")
+    machine.add_argument("--listen", required=True, metavar="HOST:PORT",
+                         help="where the setpoints arrive, e.g. 127.0.0.1:5501")
+    machine.add_argument("--out", required=True, metavar="DIR", help="folder for what was received and checked")
+    machine.add_argument("--idle", type=float, default=2.0, metavar="SECONDS",
+                         help="stop this long after the last setpoint (default: 2)")
+    machine.add_argument("--duration", type=float, default=None, metavar="SECONDS",
+                         help="stop after this long (default: when idle or stopped)")
+    machine.set_defaults(run=commands.run_machine)
+
+
+def _add_host_parser(sub) -> None:
+    host = sub.add_parser(
+        "host", help="a simulator host on this computer: send a vehicle's motion to 'serve' in real time",
+        description="Send a vehicle's motion to 'desdemona serve' (UDP, docs/protocol.md) in real time, as a "
+                    "simulator host would: a recorded path, or a JSBSim flight flown as it is sent.")
+    kinds = host.add_subparsers(title="hosts", required=True, metavar="HOST")
+    replay = kinds.add_parser("replay", help="send a path (built-in or CSV) in real time",
+                              description="Send every sample of a path at its time (divided by --speed).")
+    replay.add_argument("profile", metavar="PROFILE_OR_CSV")
+    _add_host_options(replay)
+    replay.set_defaults(run=commands.run_host_replay)
+    flight = kinds.add_parser("jsbsim", help="fly a JSBSim script in real time and send its pilot's motion",
+                              description="Fly a JSBSim script (by name, or an XML file) in real time and send "
+                                          "the pilot's motion at --rate, converted as 'import jsbsim' does "
+                                          "(needs pip install 'desdemona[jsbsim]').")
+    flight.add_argument("script", metavar="SCRIPT")
+    flight.add_argument("--rate", type=float, default=100.0, metavar="HZ", help="messages a second (default: 100)")
+    flight.add_argument("--start", type=float, default=None, metavar="SECONDS",
+                        help="the flight's time of the first message (default: after its trim or settling)")
+    flight.add_argument("--end", type=float, default=None, metavar="SECONDS",
+                        help="the flight's time of the last message (default: the script's end)")
+    _add_host_options(flight)
+    flight.set_defaults(run=commands.run_host_jsbsim)
+
+
+def _add_host_options(parser) -> None:
+    parser.add_argument("--to", required=True, metavar="HOST:PORT", help="where 'serve' listens, e.g. 127.0.0.1:5500")
+    parser.add_argument("--speed", type=float, default=1.0, help="times real time (default: 1)")
+    parser.add_argument("--forecast", type=float, default=0.0, metavar="SECONDS",
+                        help="send with each message the next SECONDS of the motion (for --predictor forecast; "
+                             "the true future of the recording or flight) (default: none)")
+    parser.add_argument("--modulus", action="store_true", help="send the modulus |f| only (for dfs)")
+    parser.add_argument("--drop", type=float, default=0.0, metavar="SHARE",
+                        help="leave out this share of the messages at random, to test a session (default: 0)")
+    parser.add_argument("--outage", default=None, metavar="START,LENGTH",
+                        help="send nothing for LENGTH seconds from START (motion time), to test a session")
+    parser.add_argument("--seed", type=int, default=0, help="seed of --drop (default: 0)")

@@ -1,0 +1,384 @@
+"""``desdemona serve``: a session of the on-line controller driven by a simulator host, in real time.
+
+Every cycle of the session's step h (``--rate`` = 1 / h) the service takes the newest valid motion
+message of the host, turns what it has received into a preview with the session's predictor (as
+``desdemona online`` does: :mod:`desdemona.predictors`; ``forecast`` reads the host's own forecast
+block), runs :class:`desdemona.mpc.MPC` from the machine's state within the cycle's deadline (with
+its fallbacks: the previous plan, then braking), checks the command against every limit over the
+cycle (:meth:`Model.step_limit_use`, on its own, after the controller's own check), and sends the
+setpoint of the cycle (:mod:`desdemona.service.protocol`). The machine's state advances by the
+command exactly: the setpoints are a continuous jerk-limited motion, cycle after cycle.
+
+Timing: cycle k belongs to the machine's time k h. It starts when a new host message arrives within
+half a cycle of that time (so a host that sends at the session's rate is answered at once: the
+end-to-end latency is the compute time), else at the window's end with what it has.
+
+- **Starting**: until the first host message the machine stands still at home (status ``starting``).
+- **Watchdog**: without a valid host message for ``timeout`` cycles the machine is parked: braked to
+  rest within every limit (``parking``), then held (``parked``); when valid messages return, the
+  controller plans afresh from where it stands (``running``).
+- **Bad datagrams** (not this protocol, NaN, absurd values, the wrong channels, out of order or
+  repeated): dropped and counted by reason, never used.
+- **Stop**: SIGINT or SIGTERM parks the machine and then ends the session; a second one ends it at
+  once after one braking command.
+
+:func:`serve` returns a :class:`Served` session, which :func:`result` judges like an on-line run
+(:func:`desdemona.online.judge`: the independent check and the classical loop beside it) and
+:func:`write` writes as ``desdemona online`` writes its folder, with the service's columns in
+``cycles.csv``.
+"""
+
+from __future__ import annotations
+
+import math
+import selectors
+import signal
+import socket
+import time
+from collections import Counter
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from desdemona import guard
+from desdemona.model import Model
+from desdemona.mpc import MPC
+from desdemona.online import OnlineOptions, OnlineResult, judge
+from desdemona.plan import Plan, State
+from desdemona.predictors import LIVE, predictor
+from desdemona.profiles import DesiredPath, ProfileError
+from desdemona.service import protocol
+from desdemona.simulate import TOLERANCE, ClosedLoop
+
+#: Below these a parked machine is brought to rest exactly in two cycles [rad/s or m/s, /s^2].
+REST_RATE, REST_ACCELERATION = 1e-4, 1e-3
+#: Where the controller's command sources are named in the log: what the protocol calls them.
+SOURCE_NAMES = {"mpc": "plan", "shifted": "previous plan", "brake": "brake"}
+
+
+@dataclass(frozen=True)
+class ServeOptions:
+    """listen, send : (host, port) of the host's messages and of the machine; channels : what the host
+    sends, 6 (S) or 1 (the modulus; None: 1 on the configurations that take it, else 6); timeout : cycles without
+    a valid host message before the machine is parked; duration : end the session after this many
+    seconds (None: run until stopped); quiet_end : end it once parked with no host message for this
+    many seconds, after the first one came (None: never); history : seconds of received motion the
+    predictor is given."""
+
+    listen: tuple[str, int]
+    send: tuple[str, int]
+    channels: int | None = None
+    timeout: int = 5
+    duration: float | None = None
+    quiet_end: float | None = None
+    history: float = 10.0
+
+    def __post_init__(self):
+        if self.channels not in (None, 1, 6):
+            raise ValueError(f"--channels {self.channels}: 6 (S) or 1 (the modulus)")
+        if not (isinstance(self.timeout, int) and self.timeout >= 1):
+            raise ValueError(f"--timeout {self.timeout}: a whole number of cycles, at least 1")
+        for name, value in (("--duration", self.duration), ("--quiet-end", self.quiet_end)):
+            if value is not None and not (math.isfinite(value) and value > 0):
+                raise ValueError(f"{name} {value:g}: a positive number of seconds")
+
+
+@dataclass
+class Served:
+    """What a session did: the plan the machine executed from rest at home (:class:`ClosedLoop`), per
+    cycle the service's record (:attr:`columns`), the motion received (times on the session's clock)
+    and the datagrams dropped by reason; ``stopped_by``: the signal that ended it, or None."""
+
+    loop: ClosedLoop
+    columns: dict[str, np.ndarray]
+    received_t: np.ndarray
+    received: np.ndarray
+    dropped: Counter = field(default_factory=Counter)
+    stopped_by: int | None = None
+    deadline: float = 0.0
+
+    def path(self, model: Model) -> DesiredPath:
+        """The motion received, on the session's clock from t = 0 (held at its first value before it
+        came), as the desired path the session is judged against."""
+        if len(self.received_t) == 0:
+            raise ProfileError("the host sent no valid motion: nothing to judge the session against")
+        t, values = self.received_t, self.received
+        if t[0] > 0.0:
+            t, values = np.r_[0.0, t], np.vstack([values[:1], values])
+        if len(t) < 2:
+            t, values = np.r_[t, t[-1] + 1.0], np.vstack([values, values])
+        if values.shape[1] == 1:
+            return model.config.cue_path(DesiredPath("host", t, None, modulus=values[:, 0],
+                                                     description="received from the host"))
+        return DesiredPath("host", t, values, description="received from the host")
+
+
+class _Inbox:
+    """The host's datagrams: read without blocking, checked, the newest valid message kept; the motion
+    received so far (host times) for the predictor and the log."""
+
+    def __init__(self, sock: socket.socket, channels: int, clock):
+        self.sock, self.channels, self.clock = sock, channels, clock
+        self.selector = selectors.DefaultSelector()
+        self.selector.register(sock, selectors.EVENT_READ)
+        self.dropped: Counter = Counter()
+        self.newest: protocol.Motion | None = None
+        self.arrived = None  # clock time the newest message arrived
+        self.fresh = False  # a message came since the last cycle took one
+        self.t, self.values, self.arrivals = [], [], []
+
+    def wait(self, until: float, opens: float) -> None:
+        """Read what comes until ``until`` (clock), returning early once a new message has come and the
+        cycle's window has opened (``opens``)."""
+        while True:
+            self.drain()
+            now = self.clock()
+            if now >= until or (self.fresh and now >= opens):
+                return
+            self.selector.select((opens if self.fresh else until) - now)
+
+    def drain(self) -> None:
+        while True:
+            try:
+                data = self.sock.recv(65536)
+            except (BlockingIOError, InterruptedError):
+                return
+            except OSError:  # e.g. an ICMP error for an earlier send: not a host message
+                self.dropped["socket error"] += 1
+                continue
+            self._take(data, self.clock())
+
+    def _take(self, data: bytes, arrived: float) -> None:
+        try:
+            message = protocol.unpack(data)
+        except protocol.ProtocolError as exc:
+            self.dropped[str(exc).split(":")[0]] += 1
+            return
+        if not isinstance(message, protocol.Motion):
+            self.dropped["not a motion message"] += 1
+        elif message.channels != self.channels:
+            self.dropped[f"{message.channels} channels, the session takes {self.channels}"] += 1
+        elif self.newest is not None and (message.sequence <= self.newest.sequence or message.time <= self.newest.time):
+            self.dropped["out of order or repeated"] += 1
+        else:
+            self.newest, self.arrived, self.fresh = message, arrived, True
+            self.t.append(message.time)
+            self.values.append(message.values)
+            self.arrivals.append(arrived)
+
+    def recent(self, seconds: float) -> tuple[np.ndarray, np.ndarray]:
+        """(t, values) of the motion of the last ``seconds`` (host time)."""
+        start = len(self.t)
+        while start > 0 and self.t[start - 1] > self.t[-1] - seconds:
+            start -= 1
+        return np.asarray(self.t[start:]), np.asarray(self.values[start:])
+
+
+class _Preview:
+    """The session's predictor over what the host has sent (``forecast``: the host's own block)."""
+
+    def __init__(self, name: str, model: Model, horizon: float, reference: DesiredPath | None, history: float):
+        self.name, self.model, self.horizon, self.history = name, model, horizon, history
+        self.predict = None if name == "forecast" else predictor(name, reference)
+
+    def __call__(self, inbox: _Inbox):
+        message = inbox.newest
+        if self.name == "forecast":
+            if message.forecast is None:
+                return None  # the controller falls back as on any unusable preview
+            t = np.r_[0.0, message.forecast_step * np.arange(1, len(message.forecast) + 1)]
+            values = np.vstack([message.values, message.forecast])
+            if t[-1] < self.horizon:  # held beyond the forecast's end
+                t, values = np.r_[t, self.horizon], np.vstack([values, values[-1:]])
+            return t, values[:, 0] if values.shape[1] == 1 else values
+        t, values = inbox.recent(self.history)
+        if len(t) < 2:  # one sample: held
+            held = np.repeat(values[:1], 2, axis=0)
+            return np.array([0.0, self.horizon]), held[:, 0] if held.shape[1] == 1 else held
+        path = DesiredPath("host", t, values if values.shape[1] == 6 else None,
+                           modulus=values[:, 0] if values.shape[1] == 1 else None)
+        return self.predict(self.model.config.cue_path(path), float(t[-1]), self.horizon)
+
+
+def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=time.monotonic, ready=None) -> Served:
+    """Run a session (see the module's docstring) until ``serving.duration``, ``serving.quiet_end`` or
+    a stop signal; returns what it did. The controller's options are ``options.mpc`` (a plan every
+    step: the session's step is the cycle); its predictor ``options.predictor``
+    (:data:`desdemona.predictors.LIVE`). ``ready()``, if given, is called once the service listens."""
+    mpc = options.mpc
+    if options.predictor not in LIVE:
+        raise ValueError(f"predictor {options.predictor!r}: a live session uses one of {', '.join(LIVE)}")
+    if mpc.replan_steps != 1:
+        raise ValueError("a live session plans every cycle: no --replan")
+    h = mpc.step
+    controller = MPC(model, mpc, weights=mpc.weights)
+    channels = serving.channels or (1 if model.config.takes_modulus else 6)
+    if channels == 1 and not model.config.takes_modulus:
+        raise ValueError(f"configuration {model.config.name!r} needs the six channels of S, not the modulus")
+    preview = _Preview(options.predictor, model, mpc.horizon, options.reference, serving.history)
+    guard_use = model.step_limit_use(h)
+    stops: list[int] = []
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as inbound, \
+            socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as outbound, \
+            guard.handled_here(stops.append):
+        inbound.bind(serving.listen)
+        inbound.setblocking(False)
+        if ready is not None:
+            ready()
+        inbox = _Inbox(inbound, channels, clock)
+        session = _Session(model, controller, h, guard_use)
+        start = clock()
+        k = 0
+        while True:
+            opens, closes = start + (k - 0.5) * h, start + (k + 0.5) * h
+            if not stops:
+                inbox.wait(closes, opens)
+            began = clock()
+            alive = inbox.arrived is not None and began - inbox.arrived <= serving.timeout * h
+            if stops:
+                session.park(stop=True, hard=len(stops) > 1)
+            elif alive:
+                session.run(preview(inbox), inbox.newest.sequence)
+            elif inbox.newest is None:
+                session.hold("starting")
+            else:
+                session.park()
+            answered = inbox.fresh and alive and not stops
+            inbox.fresh = inbox.fresh and not answered
+            setpoint = session.setpoint(k, began - start, inbox.newest.sequence if answered else None)
+            try:
+                outbound.sendto(protocol.pack(setpoint), serving.send)
+            except OSError as exc:  # the machine's port: nothing to do but count it
+                inbox.dropped[f"setpoint not sent: {exc.strerror or exc}"] += 1
+            sent = clock()
+            session.record(k, compute=sent - began, age=np.nan if inbox.arrived is None else began - inbox.arrived,
+                           latency=sent - inbox.arrived if answered else np.nan)
+            k += 1
+            quiet = inbox.arrived is not None and clock() - inbox.arrived > (serving.quiet_end or np.inf)
+            if ((stops and (session.status == "parked" or len(stops) > 1))
+                    or (serving.duration is not None and k * h >= serving.duration)
+                    or (quiet and session.status == "parked")):
+                break
+    offset = inbox.arrivals[0] - start - inbox.t[0] if inbox.t else 0.0
+    return Served(loop=session.loop(), columns=session.columns(), received_t=np.asarray(inbox.t) + offset,
+                  received=np.asarray(inbox.values).reshape(len(inbox.t), channels), dropped=inbox.dropped,
+                  stopped_by=stops[0] if stops else None, deadline=controller.deadline)
+
+
+class _Session:
+    """The machine's state and the commands of the cycles, as the service drives it."""
+
+    def __init__(self, model: Model, controller: MPC, h: float, guard_use):
+        self.model, self.controller, self.h, self.guard_use = model, controller, h, guard_use
+        n = model.n
+        self.state = State(np.zeros(n), np.zeros(n), np.zeros(n))
+        self.status, self.source, self.reason = "starting", "park", ""
+        self.command = (np.zeros(n), np.zeros(n))
+        self.rows: list[dict] = []
+        self.u, self.jerks = [], []
+        self.was_parked = False
+        self.settle = None  # the second cycle's jerks of coming to rest
+
+    def run(self, preview, sequence: int) -> None:
+        if self.was_parked:  # the machine was moved by the watchdog: plan afresh from here
+            self.controller.forget()
+            self.was_parked, self.settle = False, None
+        command = self.controller.step(self.state, preview if preview is not None else (np.zeros(1), None))
+        self.command = (command.sequence[0], command.jerks[0])
+        self.status, self.source, self.reason = "running", SOURCE_NAMES[command.source], command.reason
+        self._guard()
+
+    def park(self, stop: bool = False, hard: bool = False) -> None:
+        """Brake towards rest (:meth:`MPC.brake`: at most the braking share of each acceleration limit, at
+        most the jerk limit) and, once nearly still, come to rest exactly in two cycles; then hold."""
+        q, qd, a = self.state
+        near = np.all(np.abs(qd) < REST_RATE) and np.all(np.abs(a) < REST_ACCELERATION)
+        if self.settle is not None:  # the second cycle of coming to rest
+            self.command, self.settle, self.status = (a.copy(), self.settle), None, "parking"
+        elif hard or not near:
+            self.command, self.status = self.controller.brake(q, qd, a), "parking"
+        elif np.all(np.abs(qd) < 1e-12) and np.all(np.abs(a) < 1e-12):
+            self.state = State(q, np.zeros_like(qd), np.zeros_like(a))  # still: round-off left behind
+            self.command, self.status = (np.zeros_like(qd), np.zeros_like(qd)), "parked"
+        else:  # the jerks that take rate and acceleration to zero at the end of the next cycle
+            h = self.h
+            self.command = (a.copy(), -qd / h**2 - 1.5 * a / h)
+            self.settle, self.status = qd / h**2 + 0.5 * a / h, "parking"
+        self.source, self.reason = "park", "stop" if stop else "no host message"
+        self.was_parked = True
+        self._guard()
+
+    def hold(self, status: str) -> None:
+        self.command, self.status, self.source, self.reason = (np.zeros(self.model.n),) * 2, status, "park", ""
+
+    def _guard(self) -> None:
+        """The service's own check of the cycle's command over the cycle (every limit, position to
+        jerk); a command that fails it is a fault (the controller's own check should never let one
+        through), reported as such in the setpoint and the log."""
+        use = float(np.max(np.asarray(self.guard_use(*self.state[:2], *self.command))))
+        if use > 1.0 + TOLERANCE:
+            self.status, self.reason = "fault", f"limit use {use:.4f} over the cycle"
+
+    def setpoint(self, k: int, now: float, answers: int | None) -> protocol.Setpoint:
+        config = self.model.config
+        q, qd, a = self.state
+        qdd, jerk = self.command
+        return protocol.Setpoint(k + 1, now, self.status, self.source, answers, k * self.h, self.h, config.expand(q),
+                                 config.expand(qd, "zero"), config.expand(qdd, "zero"), config.expand(jerk, "zero"))
+
+    def record(self, k: int, compute: float, age: float, latency: float) -> None:
+        qdd, jerk = self.command
+        self.u.append(qdd)
+        self.jerks.append(jerk)
+        self.rows.append({"t": k * self.h, "compute_time_s": compute, "message_age_s": age, "latency_s": latency,
+                          "command": self.source, "status": self.status, "reason": self.reason})
+        self.state = self.state.advance(qdd, self.h, jerk)
+
+    def loop(self) -> ClosedLoop:
+        n = self.model.n
+        plan = Plan(np.arange(len(self.u) + 1) * self.h, np.zeros(n), np.zeros(n), np.array(self.u).reshape(-1, n),
+                    np.array(self.jerks).reshape(-1, n))
+        sources = tuple({"plan": "mpc", "previous plan": "shifted"}.get(r["command"], "brake") for r in self.rows)
+        return ClosedLoop(plan, np.array([r["t"] for r in self.rows]), sources,
+                          np.array([r["compute_time_s"] for r in self.rows]), tuple(r["reason"] for r in self.rows))
+
+    def columns(self) -> dict[str, np.ndarray]:
+        return {key: np.array([r[key] for r in self.rows]) for key in ("message_age_s", "latency_s", "command", "status")}
+
+
+def result(served: Served, model: Model, options: OnlineOptions) -> OnlineResult:
+    """The session judged as an on-line run (:func:`desdemona.online.judge`) against the motion the
+    host sent; :class:`~desdemona.simulate.LimitViolation` if the machine's motion broke a limit."""
+    return judge(served.path(model), model, options, served.loop, served.deadline)
+
+
+def summary(served: Served, serving: ServeOptions) -> dict:
+    """The ``service`` entry of the session's ``summary.json``: addresses, counts of cycles by status and
+    command, datagrams dropped by reason, and the times that matter for real time [s]."""
+    columns, times = served.columns, served.loop.compute_times
+    latency, age = columns["latency_s"], columns["message_age_s"]
+
+    def spread(values):
+        values = values[np.isfinite(values)]
+        if len(values) == 0:
+            return None
+        return {"median": float(np.median(values)), "p99": float(np.percentile(values, 99)), "max": float(values.max())}
+
+    return {"listen": f"{serving.listen[0]}:{serving.listen[1]}", "send": f"{serving.send[0]}:{serving.send[1]}",
+            "timeout_cycles": serving.timeout, "cycles": len(times),
+            "status": dict(Counter(map(str, columns["status"]))), "command": dict(Counter(map(str, columns["command"]))),
+            "dropped": dict(served.dropped), "received": int(len(served.received_t)),
+            "latency_s": spread(latency), "message_age_s": spread(age),
+            "compute_over_deadline": int(np.sum(times > served.deadline)),
+            "stopped_by": None if served.stopped_by is None else signal.Signals(served.stopped_by).name}
+
+
+def describe(summary: dict) -> str:
+    """The session in one line: cycles, latency, deadlines, what was dropped, how it parked."""
+    latency = summary["latency_s"]
+    lat = "no host message answered" if latency is None else (
+        f"latency median {1e3 * latency['median']:.2f} ms, p99 {1e3 * latency['p99']:.2f} ms")
+    dropped = sum(summary["dropped"].values())
+    status = ", ".join(f"{k} {v}" for k, v in summary["status"].items())
+    return (f"served {summary['cycles']} cycles ({status}), {summary['received']} host messages, {lat}, "
+            f"{summary['compute_over_deadline']} over the deadline, {dropped} datagrams dropped")

@@ -1,0 +1,207 @@
+"""The real-time service (desdemona.service.serve) on the loopback address: a session end to end, the
+watchdog, bad datagrams, and a stop that parks the machine. Every loop is bounded in count and time."""
+
+import json
+import os
+import signal
+import socket
+import subprocess
+import sys
+import threading
+import time
+from collections import Counter
+
+import numpy as np
+import pytest
+
+from desdemona import Model, profiles, session
+from desdemona.service import machine, protocol, serve
+
+LOOPBACK = "127.0.0.1"
+
+
+def _free_port() -> int:
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        s.bind((LOOPBACK, 0))
+        return s.getsockname()[1]
+
+
+class _Machine:
+    """A receiver of setpoints on the loopback address, in a thread that ends by itself."""
+
+    def __init__(self, seconds: float):
+        self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        self.sock.bind((LOOPBACK, 0))
+        self.sock.settimeout(0.05)
+        self.address = self.sock.getsockname()
+        self.setpoints = []
+        self.end = time.monotonic() + seconds
+        self.thread = threading.Thread(target=self._run, daemon=True)
+        self.thread.start()
+
+    def _run(self):
+        while time.monotonic() < self.end:
+            try:
+                self.setpoints.append(protocol.unpack(self.sock.recv(4096)))
+            except socket.timeout:
+                continue
+        self.sock.close()
+
+    def join(self):
+        """Once the service has ended: what is still on its way arrives within a moment."""
+        self.end = min(self.end, time.monotonic() + 0.2)
+        self.thread.join(timeout=2.0)
+
+
+def _send(port: int, messages, at, extra=(), go: threading.Event | None = None):
+    """Send ``messages`` (datagrams) at the clock offsets ``at`` [s] from now (or from ``go`` being
+    set), in a thread; ``extra``: (offset, datagram) pairs sent too."""
+    def run():
+        if go is not None and not go.wait(timeout=30):
+            return
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+            start = time.monotonic()
+            for when, data in sorted([*zip(at, messages), *extra], key=lambda x: x[0]):
+                delay = start + when - time.monotonic()
+                if delay > 0:
+                    time.sleep(delay)
+                s.sendto(data, (LOOPBACK, port))
+    thread = threading.Thread(target=run, daemon=True)
+    thread.start()
+    return thread
+
+
+def _motion(path, until: float, delay: float = 0.2, skip=None):
+    """The datagrams of ``path``'s modulus up to ``until`` [s], each at its time after ``delay``."""
+    keep = path.t <= until
+    if skip is not None:
+        keep &= ~((path.t >= skip[0]) & (path.t < skip[1]))
+    data = [protocol.pack(protocol.Motion(k + 1, float(t), np.array([m])))
+            for k, (t, m) in enumerate(zip(path.t, path.M_d)) if keep[k]]
+    return data, delay + path.t[keep]
+
+
+def _session(duration: float, **kwargs):
+    model = Model(config="dfs")
+    options = session.live(model, channels=1, rate=50.0, span=duration, horizon=1.0).options
+    port = _free_port()
+    stand_in = _Machine(duration + 3.0)
+    serving = serve.ServeOptions(listen=(LOOPBACK, port), send=stand_in.address, channels=1, duration=duration,
+                                 **kwargs)
+    return model, options, port, stand_in, serving
+
+
+def _continuous(setpoints, model) -> None:
+    """The setpoints as the motion system's own guard sees them (the stand-in's checker, independent of
+    the service): consecutive, one continuous motion, every limit kept over every cycle."""
+    assert [s.sequence for s in setpoints] == list(range(1, len(setpoints) + 1))
+    checker = machine.Checker(model)
+    for previous, setpoint in zip([None, *setpoints], setpoints):
+        violations, _ = checker.check(setpoint, previous, setpoint.time)
+        assert not violations, violations
+
+
+def test_a_short_session_end_to_end():
+    """The host sends 2 s of the dfs catapult's modulus at its rate; the machine follows and is parked
+    when the host stops; the setpoints are one continuous motion
+    within the limits, each answering the newest message at once; the session judged like an on-line
+    run keeps every limit."""
+    model, options, port, stand_in, serving = _session(3.5)
+    path = profiles.get_profile("dfs-catapult")
+    data, at = _motion(path, 2.0)
+    go = threading.Event()
+    host = _send(port, data, at, go=go)
+    served = serve.serve(model, options, serving, ready=go.set)
+    host.join(timeout=5)
+    stand_in.join()
+    statuses = list(served.columns["status"])
+    assert "running" in statuses and statuses[-1] in ("parking", "parked")
+    assert statuses.index("parking") > statuses.index("running")
+    assert len(served.received_t) == len(data) and not served.dropped
+    assert len(stand_in.setpoints) == len(statuses)
+    _continuous(stand_in.setpoints, model)
+    answered = [s.answers for s in stand_in.setpoints if s.answers is not None]
+    running = statuses.count("running")  # the host sends at 100 Hz, the session runs at 50 Hz
+    assert answered == sorted(answered) and len(answered) >= 0.8 * running
+    latency = served.columns["latency_s"]
+    assert np.all(latency[np.isfinite(latency)] < 0.5)  # answered within the cycle it came in, not later
+    result = serve.result(served, model, options)
+    assert result.check.passed and result.check.rms > 0
+
+
+def test_the_watchdog_parks_the_machine_and_a_returning_host_resumes_it():
+    model, options, port, stand_in, serving = _session(3.0, timeout=5)
+    path = profiles.get_profile("dfs-catapult")
+    data, at = _motion(path, 2.5, skip=(0.8, 1.6))  # 0.8 s of silence: 40 cycles, 5 allowed
+    go = threading.Event()
+    host = _send(port, data, at, go=go)
+    served = serve.serve(model, options, serving, ready=go.set)
+    host.join(timeout=5)
+    stand_in.join()
+    statuses = list(served.columns["status"])
+    first_park = statuses.index("parking")
+    assert "running" in statuses[:first_park] and "running" in statuses[first_park:]
+    commands = Counter(served.columns["command"][first_park:])
+    assert commands["park"] >= 5 and commands["plan"] > 0
+    _continuous(stand_in.setpoints, model)
+    assert serve.result(served, model, options).check.passed
+
+
+def test_bad_datagrams_are_dropped_and_counted_never_used():
+    model, options, port, stand_in, serving = _session(1.5)
+    good = protocol.Motion(1, 0.0, np.array([9.81]))
+    wrong_magic = bytearray(protocol.pack(good))
+    wrong_magic[0] ^= 0xFF
+    nan = bytearray(protocol.pack(protocol.Motion(2, 0.01, np.array([9.81]))))
+    nan[-8:] = np.array([np.nan]).tobytes()
+    six = protocol.pack(protocol.Motion(3, 0.02, np.r_[0, 0, 0, 0, 0, 9.81]))  # dfs is served the modulus
+    bad = [(0.05, b"hello"), (0.06, bytes(wrong_magic)), (0.07, bytes(nan)), (0.08, six),
+           (0.09, protocol.pack(good)[:-4]), (0.1, b"\x00" * 300)]
+    later = [protocol.pack(protocol.Motion(k, 0.02 * k, np.array([9.81 + 0.1 * k]))) for k in range(1, 30)]
+    repeated = [(0.4, later[3]), (0.41, later[0])]  # a repeated and an older sequence
+    go = threading.Event()
+    host = _send(port, later, 0.1 + 0.02 * np.arange(1, 30), extra=bad + repeated, go=go)
+    served = serve.serve(model, options, serving, ready=go.set)
+    host.join(timeout=5)
+    stand_in.join()
+    assert len(served.received_t) == len(later)  # only the good ones, each once
+    np.testing.assert_allclose(served.received[:, 0], [9.81 + 0.1 * k for k in range(1, 30)])
+    assert sum(served.dropped.values()) == len(bad) + len(repeated)
+    assert served.dropped["out of order or repeated"] == 2
+    assert any("channels" in reason for reason in served.dropped)
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
+def test_sigint_parks_the_machine_writes_the_session_and_exits_130(tmp_path):
+    port, out = _free_port(), tmp_path / "served"
+    stand_in = _Machine(20.0)
+    proc = subprocess.Popen([sys.executable, "-m", "desdemona", "serve", "--config", "dfs", "--listen",
+                             f"{LOOPBACK}:{port}", "--send", f"{LOOPBACK}:{stand_in.address[1]}", "--out", str(out),
+                             "--horizon", "1", "--duration", "15", "--no-view"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert "serving dfs at 50 Hz" in proc.stderr.readline()  # the service is up
+        path = profiles.get_profile("dfs-catapult")
+        data, at = _motion(path, 6.0, delay=0.0)
+        host = _send(port, data, at)
+        deadline = time.monotonic() + 10
+        while time.monotonic() < deadline and not any(s.status == "running" and np.any(s.rate != 0)
+                                                      for s in stand_in.setpoints):
+            time.sleep(0.05)
+        time.sleep(0.5)
+        os.kill(proc.pid, signal.SIGINT)
+        stdout, stderr = proc.communicate(timeout=30)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+    host.join(timeout=10)
+    assert proc.returncode == 130, stderr
+    assert "the machine was parked" in stderr and "written to" in stdout
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["service"]["stopped_by"] == "SIGINT"
+    rows = (out / "cycles.csv").read_text().splitlines()
+    assert rows[0].split(",")[-4:] == ["message_age_s", "latency_s", "command", "status"]
+    assert rows[-1].endswith(",park,parked")
+    last = stand_in.setpoints[-1]
+    assert last.status == "parked" and not np.any(last.rate) and not np.any(last.acceleration)
+    _continuous(stand_in.setpoints, Model(config="dfs"))

@@ -1,0 +1,256 @@
+"""The motion-system stand-in (desdemona.service.machine): loopback UDP only, every run bounded."""
+
+import csv
+import json
+import os
+import signal
+import socket
+import struct
+import threading
+import time
+
+import numpy as np
+import pytest
+
+from desdemona.model import Model
+from desdemona.params import JOINT_NAMES
+from desdemona.plan import State
+from desdemona.service import machine, protocol
+
+STEP = 0.01
+IDLE = 0.3
+LIMIT = 5.0  # [s] no run in these tests lasts longer
+
+
+@pytest.fixture(scope="module")
+def model():
+    return Model(config="yaw-track-cabin")  # free: yaw, track, inner_gimbal; held: heave, outer_gimbal, cabin
+
+
+def free_port() -> int:
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def setpoint(model, sequence, q, qd, a, j, status="running", source="plan", cycle_time=0.0, step=STEP):
+    """A setpoint of free-joint values, the held joints at their fixed positions and at rest."""
+    cfg = model.config
+    return protocol.Setpoint(sequence, cycle_time, status, source, sequence, cycle_time, step,
+                             cfg.expand(np.asarray(q, float)), cfg.expand(np.asarray(qd, float), "zero"),
+                             cfg.expand(np.asarray(a, float), "zero"), cfg.expand(np.asarray(j, float), "zero"))
+
+
+def motion(model, jerks, step=STEP, q0=None):
+    """Setpoints of an exact motion from rest: one per row of ``jerks`` (N, n), each cycle advanced
+    with plan's State.advance (the accelerations continuous)."""
+    n = model.n
+    state = State(np.zeros(n) if q0 is None else np.asarray(q0, float), np.zeros(n), np.zeros(n))
+    out = []
+    for k, j in enumerate(np.asarray(jerks, float)):
+        out.append(setpoint(model, k + 1, state.q, state.qd, state.a, j, cycle_time=k * step))
+        state = state.advance(state.a, step, j)
+    return out
+
+
+def brake_motion(model):
+    """Track and yaw accelerate at 0.9 of their jerk limits, hold, brake and come to rest."""
+    J = 0.9 * model.limits.jerk * np.array([1.0, 1.0, 0.0])
+    zero = np.zeros(model.n)
+    profile = [J] * 10 + [zero] * 10 + [-J] * 20 + [zero] * 10 + [J] * 10
+    return motion(model, profile)
+
+
+def serve(model, tmp_path, datagrams, idle=IDLE, duration=LIMIT, name="out", after=None):
+    """Run the machine on a free loopback port while a thread sends ``datagrams`` (bytes); ``after``
+    is called by the thread once they are sent. Returns the report and the run's wall time."""
+    port = free_port()
+    ready = threading.Event()
+
+    def send():
+        if not ready.wait(LIMIT):
+            return
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+            for data in datagrams:
+                s.sendto(data, ("127.0.0.1", port))
+                time.sleep(0.0005)
+        if after is not None:
+            after()
+
+    sender = threading.Thread(target=send, daemon=True)
+    sender.start()
+    started = time.monotonic()
+    report = machine.run(model, ("127.0.0.1", port), tmp_path / name, idle=idle, duration=duration,
+                         ready=ready.set)
+    elapsed = time.monotonic() - started
+    sender.join(LIMIT)
+    assert not sender.is_alive()
+    return report, elapsed
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def test_clean_motion_passes_and_writes_files(model, tmp_path):
+    points = brake_motion(model)
+    last = points[-1]
+    end = State(last.position, last.rate, last.acceleration).advance(last.acceleration, STEP, last.jerk)
+    assert np.allclose(end.qd, 0.0, atol=1e-12) and np.allclose(end.a, 0.0, atol=1e-12)  # at rest again
+    report, elapsed = serve(model, tmp_path, [protocol.pack(p) for p in points])
+    assert report.passed and machine.exit_code(report) == 0, report.describe()
+    assert report.received == len(points) and report.dropped == {} and report.gaps == 0
+    assert report.stopped == "idle" and elapsed < LIMIT
+    assert 0.85 < report.worst["jerk"] <= 1.0 and report.worst_joint["jerk"] in ("yaw", "track")
+    assert 0.0 < report.worst["effort"] < 1.0 and 0.0 < report.worst["rate"] < 1.0
+    out = tmp_path / "out"
+    assert sorted(p.name for p in out.iterdir()) == sorted(machine.FILES)  # no temporary left
+    rows = read_csv(out / "setpoints.csv")
+    assert len(rows) == len(points)
+    assert [int(r["sequence"]) for r in rows] == [p.sequence for p in points]
+    assert all(f"{name}_{q}" in rows[0] for name in JOINT_NAMES for q in ("position", "rate", "acceleration", "jerk"))
+    assert float(rows[20]["track_position"]) == points[20].position[1]  # written exactly
+    assert read_csv(out / "violations.csv") == []
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["received"] == len(points) and summary["passed"] and summary["violation_count"] == 0
+    assert summary["first_cycle_time"] == 0.0 and summary["last_cycle_time"] == pytest.approx(59 * STEP)
+    assert summary["statuses"] == {"running": len(points)} and summary["config"] == "yaw-track-cabin"
+    # an earlier output of its own is replaced
+    again, _ = serve(model, tmp_path, [protocol.pack(p) for p in points[:5]])
+    assert again.received == 5 and len(read_csv(out / "setpoints.csv")) == 5
+
+
+def _position(model):
+    return [setpoint(model, 1, [0.0, 4.1, 0.0], [0, 0, 0], [0, 0, 0], [0, 0, 0])]
+
+
+def _position_in_cycle(model):
+    # within range at the setpoint, beyond it 10 ms later: 3.99 m + 2 m/s * 0.01 s = 4.01 m
+    return [setpoint(model, 1, [0.0, 3.99, 0.0], [0, 2.0, 0], [0, 0, 0], [0, 0, 0])]
+
+
+def _jerk(model):
+    return [setpoint(model, 1, [0.0, 0.0, 0.0], [0, 0, 0], [0, 0, 0], [2.0 * model.limits.jerk[0], 0, 0])]
+
+
+def _continuity(model):
+    points = motion(model, [[0, 1.0, 0]] * 4)
+    p = points[3]
+    points[3] = protocol.Setpoint(p.sequence, p.time, p.status, p.source, p.answers, p.cycle_time, p.step,
+                                  p.position + np.array([0, 1e-3, 0, 0, 0, 0]), p.rate, p.acceleration, p.jerk)
+    return points
+
+
+def _held(model):
+    p = setpoint(model, 1, [0.0, 0.0, 0.0], [0, 0, 0], [0, 0, 0], [0, 0, 0])
+    position = p.position.copy()
+    position[2] = 0.1  # heave, held at 0 m in yaw-track-cabin
+    return [protocol.Setpoint(1, 0.0, "running", "plan", 1, 0.0, STEP, position, p.rate, p.acceleration, p.jerk)]
+
+
+@pytest.mark.parametrize("make, joint, what, sequence", [
+    (_position, "track", "position", 1),
+    (_position_in_cycle, "track", "position", 1),
+    (_jerk, "yaw", "jerk", 1),
+    (_continuity, "track", "continuity", 4),
+    (_held, "heave", "held", 1),
+], ids=["position", "position-within-cycle", "jerk", "continuity", "held"])
+def test_a_violation_is_reported_with_its_joint_and_kind(model, tmp_path, make, joint, what, sequence):
+    points = make(model)
+    report, _ = serve(model, tmp_path, [protocol.pack(p) for p in points])
+    assert report.received == len(points) and report.dropped == {}
+    assert not report.passed and machine.exit_code(report) == 1
+    assert [(v.joint, v.what, v.sequence) for v in report.violations] == [(joint, what, sequence)], report.describe()
+    assert report.counts[what] == 1 and report.violation_count == 1
+    rows = read_csv(tmp_path / "out" / "violations.csv")
+    assert [(r["joint"], r["what"], int(r["sequence"])) for r in rows] == [(joint, what, sequence)]
+    summary = json.loads((tmp_path / "out" / "summary.json").read_text())
+    assert summary["violations"][what] == 1 and not summary["passed"]
+    if what == "position":
+        assert report.violations[0].limit == 4.0 and report.violations[0].value > 4.0
+        assert report.worst["position"] > 1.0
+
+
+def test_a_sequence_gap_checks_only_the_limits(model, tmp_path):
+    points = motion(model, [[0, 1.0, 0]] * 6)
+    kept = points[:2] + points[4:]  # 3 and 4 lost: 5 does not continue 2, and that is not a violation
+    report, _ = serve(model, tmp_path, [protocol.pack(p) for p in kept])
+    assert report.passed, report.describe()
+    assert report.received == 4 and report.gaps == 1 and report.missing == 2
+    assert json.loads((tmp_path / "out" / "summary.json").read_text())["gaps"] == 1
+
+
+def test_invalid_datagrams_are_dropped_and_never_checked(model, tmp_path):
+    good = motion(model, [[0, 1.0, 0]] * 3)
+    # every bad one would be a violation (track at 10 m) if it were checked as a setpoint
+    bad = protocol.pack(setpoint(model, 2, [0.0, 10.0, 0.0], [0, 0, 0], [0, 0, 0], [0, 0, 0]))
+    wrong_magic = struct.pack("<I", 0x12345678) + bad[4:]
+    nan = bytearray(bad)
+    nan[-8:] = struct.pack("<d", float("nan"))  # the cabin's jerk
+    older = protocol.pack(setpoint(model, 1, [0.0, 10.0, 0.0], [0, 0, 0], [0, 0, 0], [0, 0, 0]))
+    duplicate = bad  # sequence 2 again, once 2 was received
+    host = protocol.pack(protocol.Motion(7, 0.0, np.zeros(6)))
+    datagrams = [protocol.pack(good[0]), b"garbage", bad[:-5], wrong_magic, bytes(nan), b"",
+                 protocol.pack(good[1]), duplicate, older, host, protocol.pack(good[2])]
+    report, _ = serve(model, tmp_path, datagrams)
+    assert report.passed and machine.exit_code(report) == 0, report.describe()
+    assert report.received == 3 and report.gaps == 0 and report.datagrams == len(datagrams)
+    assert report.dropped == {"truncated": 2, "wrong length": 1, "wrong magic": 1, "not finite": 1,
+                              "duplicate": 1, "out of order": 1, "not a setpoint": 1}
+    assert report.worst["position"] < 0.01  # track near 0 m: nothing of the 10 m ones was measured
+    rows = read_csv(tmp_path / "out" / "setpoints.csv")
+    assert [int(r["sequence"]) for r in rows] == [1, 2, 3]
+    summary = json.loads((tmp_path / "out" / "summary.json").read_text())
+    assert summary["dropped"]["duplicate"] == 1 and summary["received"] == 3
+
+
+def test_it_stops_by_itself_after_idle_seconds_of_silence(model, tmp_path):
+    report, elapsed = serve(model, tmp_path, [protocol.pack(motion(model, [[0, 0, 0]])[0])], idle=0.5, duration=8.0)
+    assert report.stopped == "idle" and report.received == 1
+    assert 0.5 <= elapsed < 2.5
+
+
+def test_it_stops_after_duration_without_any_datagram(model, tmp_path):
+    report, elapsed = serve(model, tmp_path, [], idle=0.1, duration=0.4)
+    assert report.stopped == "duration" and report.received == 0 and report.passed
+    assert 0.4 <= elapsed < 2.0
+    assert (tmp_path / "out" / "summary.json").exists()
+
+
+@pytest.mark.skipif(threading.current_thread() is not threading.main_thread(), reason="signals reach the main thread")
+def test_an_interrupt_writes_what_it_has_and_returns(model, tmp_path):
+    points = brake_motion(model)[:10]
+
+    def interrupt():
+        time.sleep(0.2)
+        os.kill(os.getpid(), signal.SIGINT)
+
+    report, elapsed = serve(model, tmp_path, [protocol.pack(p) for p in points], idle=LIMIT, duration=LIMIT,
+                            after=interrupt)
+    assert report.stopped == "interrupted (SIGINT)" and elapsed < LIMIT - 1
+    assert report.received == len(points) and report.passed
+    assert len(read_csv(tmp_path / "out" / "setpoints.csv")) == len(points)
+    assert json.loads((tmp_path / "out" / "summary.json").read_text())["stopped"] == "interrupted (SIGINT)"
+
+
+def test_it_refuses_a_folder_that_is_not_its_own(model, tmp_path):
+    foreign = tmp_path / "foreign"
+    foreign.mkdir()
+    (foreign / "notes.txt").write_text("mine")
+    with pytest.raises(ValueError, match="foreign"):
+        machine.run(model, ("127.0.0.1", free_port()), foreign, idle=0.1, duration=0.2)
+    assert sorted(p.name for p in foreign.iterdir()) == ["notes.txt"]
+    with pytest.raises(ValueError, match="idle"):
+        machine.run(model, ("127.0.0.1", free_port()), tmp_path / "new", idle=0.0, duration=0.2)
+
+
+def test_a_cycle_is_checked_where_a_position_turns(model):
+    # track from 3.98 m at 0.5 m/s braking at 5 m/s^2 over 0.17 s: it turns at 4.005 m after 0.1 s
+    # and is back at 3.98 m and -0.35 m/s at the end: within range at both ends, not between
+    sp = setpoint(model, 1, [0.0, 3.98, 0.0], [0, 0.5, 0], [0, -5.0, 0], [0, 0, 0], step=0.17)
+    violations, use = machine.Checker(model).check(sp, None, 0.0)
+    assert [(v.joint, v.what) for v in violations] == [("track", "position")]
+    assert violations[0].value == pytest.approx(4.005, abs=1e-12) and violations[0].limit == 4.0
+    assert "0.1 s into the cycle" in violations[0].detail
+    assert use["position"][1] == pytest.approx(4.005 / 4.0, abs=1e-12) and use["acceleration"][1] == 1.0
