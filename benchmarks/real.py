@@ -45,6 +45,7 @@ import time
 from pathlib import Path
 
 import corpus  # benchmarks/corpus.py: the script's own folder is on the path
+import tables
 import numpy as np
 
 from desdemona import batch, profiles
@@ -172,13 +173,7 @@ def table(rows: list[dict]) -> str:
 
 def write_docs(text: str) -> None:
     """Replace the table between the markers in docs/benchmarks.md (append the section if missing)."""
-    doc = DOCS.read_text()
-    if BEGIN in doc:
-        head, rest = doc.split(BEGIN, 1)
-        doc = head + BEGIN + "\n" + text + "\n" + END + rest.split(END, 1)[1]
-    else:
-        doc += f"\n## Real inputs\n\n{BEGIN}\n{text}\n{END}\n"
-    DOCS.write_text(doc)
+    tables.replace_between(BEGIN, END, text, "Real inputs", DOCS)
 
 
 def main(argv=None) -> int:

@@ -91,6 +91,17 @@ def _session(duration: float, **kwargs):
     return model, options, port, stand_in, serving
 
 
+def _serve(duration: float, data, at, extra=(), **serving):
+    """A session of ``duration`` [s] on dfs at 50 Hz, the host sending ``data`` at ``at`` once it listens."""
+    model, options, port, stand_in, serving = _session(duration, **serving)
+    go = threading.Event()
+    host = _send(port, data, at, extra, go=go)
+    served = serve.serve(model, options, serving, ready=go.set)
+    host.join(timeout=5)
+    stand_in.join()
+    return model, options, served, stand_in
+
+
 def _continuous(setpoints, model) -> None:
     """The setpoints as the motion system's own guard sees them (the stand-in's checker, independent of
     the service): consecutive, one continuous motion, every limit kept over every cycle."""
@@ -106,14 +117,8 @@ def test_a_short_session_end_to_end():
     when the host stops; the setpoints are one continuous motion
     within the limits, each answering the newest message at once; the session judged like an on-line
     run keeps every limit."""
-    model, options, port, stand_in, serving = _session(3.5)
-    path = profiles.get_profile("dfs-catapult")
-    data, at = _motion(path, 2.0)
-    go = threading.Event()
-    host = _send(port, data, at, go=go)
-    served = serve.serve(model, options, serving, ready=go.set)
-    host.join(timeout=5)
-    stand_in.join()
+    data, at = _motion(profiles.get_profile("dfs-catapult"), 2.0)
+    model, options, served, stand_in = _serve(3.5, data, at)
     statuses = list(served.columns["status"])
     assert "running" in statuses and statuses[-1] in ("parking", "parked")
     assert statuses.index("parking") > statuses.index("running")
@@ -130,14 +135,8 @@ def test_a_short_session_end_to_end():
 
 
 def test_the_watchdog_parks_the_machine_and_a_returning_host_resumes_it():
-    model, options, port, stand_in, serving = _session(3.0, timeout=5)
-    path = profiles.get_profile("dfs-catapult")
-    data, at = _motion(path, 2.5, skip=(0.8, 1.6))  # 0.8 s of silence: 40 cycles, 5 allowed
-    go = threading.Event()
-    host = _send(port, data, at, go=go)
-    served = serve.serve(model, options, serving, ready=go.set)
-    host.join(timeout=5)
-    stand_in.join()
+    data, at = _motion(profiles.get_profile("dfs-catapult"), 2.5, skip=(0.8, 1.6))  # 0.8 s of silence: 40 cycles
+    model, options, served, stand_in = _serve(3.0, data, at, timeout=5)
     statuses = list(served.columns["status"])
     first_park = statuses.index("parking")
     assert "running" in statuses[:first_park] and "running" in statuses[first_park:]
@@ -148,7 +147,6 @@ def test_the_watchdog_parks_the_machine_and_a_returning_host_resumes_it():
 
 
 def test_bad_datagrams_are_dropped_and_counted_never_used():
-    model, options, port, stand_in, serving = _session(1.5)
     good = protocol.Motion(1, 0.0, np.array([9.81]))
     wrong_magic = bytearray(protocol.pack(good))
     wrong_magic[0] ^= 0xFF
@@ -159,11 +157,7 @@ def test_bad_datagrams_are_dropped_and_counted_never_used():
            (0.09, protocol.pack(good)[:-4]), (0.1, b"\x00" * 300)]
     later = [protocol.pack(protocol.Motion(k, 0.02 * k, np.array([9.81 + 0.1 * k]))) for k in range(1, 30)]
     repeated = [(0.4, later[3]), (0.41, later[0])]  # a repeated and an older sequence
-    go = threading.Event()
-    host = _send(port, later, 0.1 + 0.02 * np.arange(1, 30), extra=bad + repeated, go=go)
-    served = serve.serve(model, options, serving, ready=go.set)
-    host.join(timeout=5)
-    stand_in.join()
+    model, options, served, stand_in = _serve(1.5, later, 0.1 + 0.02 * np.arange(1, 30), extra=bad + repeated)
     assert len(served.received_t) == len(later)  # only the good ones, each once
     np.testing.assert_allclose(served.received[:, 0], [9.81 + 0.1 * k for k in range(1, 30)])
     assert sum(served.dropped.values()) == len(bad) + len(repeated)

@@ -1,0 +1,206 @@
+"""The real-time service on one computer: a JSBSim flight in real time, served, and checked by the stand-in.
+
+    python benchmarks/service.py                      # every run below, the table into docs/benchmarks.md
+    python benchmarks/service.py --runs dfs-50        # one run
+    python benchmarks/service.py --table-only         # re-read the folders, rewrite the table
+
+Each run starts three processes, as a user would (README, "A session in real time"): the motion
+system's stand-in (``desdemona machine``), the service (``desdemona serve``, the ``hold`` predictor,
+ending one second after the host has gone quiet and the machine is parked) and the host
+(``desdemona host jsbsim``, the flight in real time). Runs:
+
+- ``dfs-50``: the flight's modulus on ``dfs`` at 50 Hz;
+- ``full-20``: the six channels on ``full`` at 20 Hz;
+- ``dfs-50-lossy``: as ``dfs-50`` with 10 % of the host's datagrams dropped at random and a 1 s
+  outage at 30 s of the flight: the machine must park within the time its limits allow for braking,
+  and the session resume after the outage.
+
+Per run the table gives the end-to-end latency (host message received to setpoint sent) median and
+p99, the cycles over their deadline, the datagrams dropped, the stand-in's verdict (violations of
+any limit, position to jerk, or of continuity), and the felt-force RMS of the served session against
+``desdemona online`` with the same predictor on the imported recording of the same flight
+(``desdemona import jsbsim``), over the flight's span. The lossy run adds when it parked and resumed.
+The machine's load average is recorded before and after.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import os
+import socket
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import tables  # benchmarks/tables.py: the script's own folder is on the path
+
+from desdemona import Model
+from desdemona.report import read_table
+
+HERE = Path(__file__).resolve().parent
+RESULTS = HERE / "service-results"
+DOCS = HERE.parent / "docs" / "benchmarks.md"
+BEGIN, END = "<!-- service.py table: begin -->", "<!-- service.py table: end -->"
+SCRIPT, START, STOP = str(HERE / "corpus_scripts" / "f16_turn.xml"), 3.0, 58.0  # the F-16's 4.6 g turn, 55 s
+RUNS = {  # name: (configuration, rate [Hz], modulus, lossy)
+    "dfs-50": ("dfs", 50.0, True, False),
+    "full-20": ("full", 20.0, False, False),
+    "dfs-50-lossy": ("dfs", 50.0, True, True),
+}
+DROP, OUTAGE = 0.1, (30.0, 1.0)
+
+
+def _port() -> int:
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def _desdemona(*args) -> list[str]:
+    return [sys.executable, "-m", "desdemona", *map(str, args)]
+
+
+def recording(modulus: bool) -> Path:
+    """The flight imported as ``desdemona import jsbsim`` writes it (the reference of ``online``)."""
+    out = RESULTS / f"f16-turn{'-modulus' if modulus else ''}.csv"
+    if not out.exists():
+        RESULTS.mkdir(parents=True, exist_ok=True)
+        subprocess.run(_desdemona("import", "jsbsim", SCRIPT, "--start", START, "--end", STOP, "--out", out,
+                                  *(["--modulus"] if modulus else [])), check=True)
+    return out
+
+
+def serve_run(name: str) -> dict:
+    """One run of the three processes; returns what the table needs."""
+    config, rate, modulus, lossy = RUNS[name]
+    folder = RESULTS / name
+    listen, send = _port(), _port()
+    machine = subprocess.Popen(_desdemona("machine", "--config", config, "--listen", f"127.0.0.1:{send}",
+                                          "--out", folder / "machine", "--idle", 3),
+                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    server = subprocess.Popen(_desdemona("serve", "--config", config, "--listen", f"127.0.0.1:{listen}",
+                                         "--send", f"127.0.0.1:{send}", "--rate", rate, "--out", folder / "served",
+                                         "--overwrite", "--quiet-end", 1.0, "--no-view"),
+                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    time.sleep(3.0)  # the service builds its controller, then listens
+    host = [*(["--modulus"] if modulus else []),
+            *(["--drop", DROP, "--outage", f"{OUTAGE[0]},{OUTAGE[1]}"] if lossy else [])]
+    subprocess.run(_desdemona("host", "jsbsim", SCRIPT, "--to", f"127.0.0.1:{listen}", "--start", START,
+                              "--end", STOP, *host), check=True)
+    served_out, _ = server.communicate(timeout=120)
+    machine_out, _ = machine.communicate(timeout=60)
+    (folder / "serve.txt").write_text(served_out)
+    (folder / "machine.txt").write_text(machine_out)
+    online = folder / "online"
+    subprocess.run(_desdemona("online", recording(modulus), "--config", config, "--predictor", "hold",
+                              "--step", 1.0 / rate, "--initial", "home", "--out", online, "--overwrite",
+                              "--no-view"), check=True, capture_output=True)
+    return {"name": name, "served_rc": server.returncode, "machine_rc": machine.returncode}
+
+
+def _felt_force_rms(folder: Path, window: tuple[float, float]) -> float:
+    """RMS over ``window`` [s] of the felt force's error |f - f_d| (trajectory.csv)."""
+    col = read_table(folder / "trajectory.csv")
+    keep = (col["t"] >= window[0]) & (col["t"] <= window[1])
+    f = np.column_stack([col[k][keep] for k in ("fx", "fy", "fz")])
+    f_d = np.column_stack([col[f"{k}_d"][keep] for k in ("fx", "fy", "fz")])
+    return float(np.sqrt(np.mean(np.sum((f - f_d) ** 2, axis=1))))
+
+
+def _cycles(folder: Path) -> list[dict]:
+    with open(folder / "cycles.csv", newline="") as fh:
+        return list(csv.DictReader(fh))
+
+
+def measure(name: str) -> dict:
+    """The table's row of a run, from its folders."""
+    config, rate, modulus, lossy = RUNS[name]
+    folder = RESULTS / name
+    served = json.loads((folder / "served" / "summary.json").read_text())
+    service = served["service"]
+    stand_in = json.loads((folder / "machine" / "summary.json").read_text())
+    cycles = _cycles(folder / "served")
+    running = [float(c["t"]) for c in cycles if c["status"] == "running"]
+    span = (running[0], running[-1])
+    duration = STOP - START
+    row = {"run": name, "config": config, "rate": rate, "latency_ms": {k: 1e3 * v for k, v in service["latency_s"].items()},
+           "over_deadline": service["compute_over_deadline"], "cycles": service["cycles"],
+           "dropped": sum(service["dropped"].values()), "violations": stand_in.get("violations", stand_in.get("counts")),
+           "passed": stand_in["passed"], "received": service["received"],
+           "served_rms": _felt_force_rms(folder / "served", span),
+           "online_rms": _felt_force_rms(folder / "online", (0.0, duration))}
+    if lossy:
+        row.update(_outage(cycles, span[0], rate, Model(config=config)))
+    return row
+
+
+def _outage(cycles: list[dict], begin: float, rate: float, model: Model) -> dict:
+    """When the session parked after the outage began and when it ran again; and the braking time the
+    limits allow from the rates it had (each joint braking at half its acceleration limit, its
+    acceleration built up and taken down at the jerk limit, and the two cycles of coming to rest)."""
+    t = np.array([float(c["t"]) for c in cycles])
+    status = [c["status"] for c in cycles]
+    start = begin + OUTAGE[0]
+    after = np.flatnonzero(t >= start)
+    parking = next((i for i in after if status[i] in ("parking", "parked")), None)
+    parked = next((i for i in after if status[i] == "parked"), None)
+    resumed = next((i for i in after if parking is not None and i > parking and status[i] == "running"), None)
+    col = read_table(Path(cycles and RESULTS) / "dfs-50-lossy" / "served" / "trajectory.csv")
+    names = model.config.joint_names
+    k = int(np.searchsorted(col["t"], t[parking])) if parking is not None else 0
+    qd = np.array([col[f"qd_{j}"][k] for j in names])
+    a = np.array([col[f"qdd_{j}"][k] for j in names])
+    lim = model.limits
+    A = 0.5 * lim.acceleration
+    bound = float(np.max((np.abs(qd) + np.abs(a) ** 2 / (2 * lim.jerk)) / A + 2 * A / lim.jerk)) + 2.0 / rate
+    return {"outage_at": start, "parking_at": None if parking is None else float(t[parking]),
+            "parked_after": None if parked is None or parking is None else float(t[parked] - t[parking]),
+            "braking_bound": bound,
+            "resumed_at": None if resumed is None else float(t[resumed])}
+
+
+def table(rows: list[dict], load: tuple) -> str:
+    head = ("| run | latency median / p99 [ms] | over deadline | datagrams dropped | stand-in | felt force RMS "
+            "served / online [m/s^2] | ratio |")
+    lines = [head, "|" + " --- |" * (head.count("|") - 1)]
+    for r in rows:
+        lat = r["latency_ms"]
+        verdict = "no violation" if r["passed"] else f"violations {r['violations']}"
+        lines.append(f"| {r['run']} ({r['config']}, {r['rate']:g} Hz) | {lat['median']:.2f} / {lat['p99']:.2f} | "
+                     f"{r['over_deadline']} of {r['cycles']} | {r['dropped']} | {verdict} | "
+                     f"{r['served_rms']:.3f} / {r['online_rms']:.3f} | {r['served_rms'] / r['online_rms']:.3f} |")
+    for r in rows:
+        if "outage_at" in r:
+            lines.append("")
+            lines.append(f"{r['run']}: outage from {r['outage_at']:.2f} s of the session; parking from "
+                         f"{r['parking_at']:.2f} s, parked {r['parked_after']:.2f} s later (the limits allow "
+                         f"{r['braking_bound']:.2f} s from the rates it had); running again from "
+                         f"{r['resumed_at']:.2f} s.")
+    lines.append("")
+    lines.append(f"Load average before and after: {load[0]:.2f}, {load[1]:.2f} (2 cores); measured "
+                 f"{time.strftime('%Y-%m-%d')}.")
+    return "\n".join(lines)
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--runs", nargs="+", choices=tuple(RUNS), default=list(RUNS))
+    parser.add_argument("--table-only", action="store_true")
+    args = parser.parse_args(argv)
+    before = os.getloadavg()[0]
+    if not args.table_only:
+        for name in args.runs:
+            print(serve_run(name), flush=True)
+    rows = [measure(name) for name in args.runs]
+    text = table(rows, (before, os.getloadavg()[0]))
+    print(text)
+    tables.replace_between(BEGIN, END, text, "Real-time service", DOCS)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
