@@ -7,7 +7,8 @@
 Each run starts three processes, as a user would (README, "A session in real time"): the motion
 system's stand-in (``desdemona machine``), the service (``desdemona serve``, the ``hold`` predictor,
 ending one second after the host has gone quiet and the machine is parked) and the host
-(``desdemona host jsbsim``, the flight in real time). Runs:
+(``desdemona host jsbsim``, the flight in real time, one message a cycle, as a simulator host sends
+at the motion system's rate). Runs:
 
 - ``dfs-50``: the flight's modulus on ``dfs`` at 50 Hz;
 - ``full-20``: the six channels on ``full`` at 20 Hz;
@@ -17,9 +18,10 @@ ending one second after the host has gone quiet and the machine is parked) and t
 
 Per run the table gives the end-to-end latency (host message received to setpoint sent) median and
 p99, the cycles over their deadline, the datagrams dropped, the stand-in's verdict (violations of
-any limit, position to jerk, or of continuity), and the felt-force RMS of the served session against
+any limit, position to jerk, or of continuity), the felt-force RMS of the served session against
 ``desdemona online`` with the same predictor on the imported recording of the same flight
-(``desdemona import jsbsim``), over the flight's span. The lossy run adds when it parked and resumed.
+(``desdemona import jsbsim``), over the flight's span, and how long parking took once the host had
+ended, against the time the limits allow. The lossy run adds when it parked and when it resumed.
 The machine's load average is recorded before and after.
 """
 
@@ -40,6 +42,7 @@ import tables  # benchmarks/tables.py: the script's own folder is on the path
 
 from desdemona import Model
 from desdemona.report import read_table
+from desdemona.service import serve
 
 HERE = Path(__file__).resolve().parent
 RESULTS = HERE / "service-results"
@@ -78,6 +81,7 @@ def serve_run(name: str) -> dict:
     """One run of the three processes; returns what the table needs."""
     config, rate, modulus, lossy = RUNS[name]
     folder = RESULTS / name
+    folder.mkdir(parents=True, exist_ok=True)
     listen, send = _port(), _port()
     machine = subprocess.Popen(_desdemona("machine", "--config", config, "--listen", f"127.0.0.1:{send}",
                                           "--out", folder / "machine", "--idle", 3),
@@ -90,9 +94,13 @@ def serve_run(name: str) -> dict:
     host = [*(["--modulus"] if modulus else []),
             *(["--drop", DROP, "--outage", f"{OUTAGE[0]},{OUTAGE[1]}"] if lossy else [])]
     subprocess.run(_desdemona("host", "jsbsim", SCRIPT, "--to", f"127.0.0.1:{listen}", "--start", START,
-                              "--end", STOP, *host), check=True)
+                              "--end", STOP, "--rate", rate, *host), check=True)
     served_out, _ = server.communicate(timeout=120)
-    machine_out, _ = machine.communicate(timeout=60)
+    try:
+        machine_out, _ = machine.communicate(timeout=30)
+    except subprocess.TimeoutExpired:  # it heard nothing (the service failed): stop it, keep what it says
+        machine.send_signal(2)
+        machine_out, _ = machine.communicate(timeout=30)
     (folder / "serve.txt").write_text(served_out)
     (folder / "machine.txt").write_text(machine_out)
     online = folder / "online"
@@ -133,52 +141,51 @@ def measure(name: str) -> dict:
            "passed": stand_in["passed"], "received": service["received"],
            "served_rms": _felt_force_rms(folder / "served", span),
            "online_rms": _felt_force_rms(folder / "online", (0.0, duration))}
-    if lossy:
-        row.update(_outage(cycles, span[0], rate, Model(config=config)))
+    row.update(_parking(cycles, folder / "served", rate, Model(config=config), span[0] + OUTAGE[0] if lossy else None))
     return row
 
 
-def _outage(cycles: list[dict], begin: float, rate: float, model: Model) -> dict:
-    """When the session parked after the outage began and when it ran again; and the braking time the
-    limits allow from the rates it had (each joint braking at half its acceleration limit, its
-    acceleration built up and taken down at the jerk limit, and the two cycles of coming to rest)."""
+def _parking(cycles: list[dict], folder: Path, rate: float, model: Model, outage_at: float | None) -> dict:
+    """How the session parked: after the host's last message, the time from the first parking cycle to
+    parked, against the time the limits allow from the rates and accelerations it had
+    (:func:`desdemona.service.serve.stopping_time`, and the two cycles of coming to rest); with an
+    outage, when parking began after it began and when the session ran again."""
     t = np.array([float(c["t"]) for c in cycles])
     status = [c["status"] for c in cycles]
-    start = begin + OUTAGE[0]
-    after = np.flatnonzero(t >= start)
-    parking = next((i for i in after if status[i] in ("parking", "parked")), None)
-    parked = next((i for i in after if status[i] == "parked"), None)
-    resumed = next((i for i in after if parking is not None and i > parking and status[i] == "running"), None)
-    col = read_table(Path(cycles and RESULTS) / "dfs-50-lossy" / "served" / "trajectory.csv")
-    names = model.config.joint_names
-    k = int(np.searchsorted(col["t"], t[parking])) if parking is not None else 0
+    last = max(i for i, s in enumerate(status) if s == "running")
+    begin = next(i for i in range(last, len(status)) if status[i] == "parking")
+    end = next((i for i in range(begin, len(status)) if status[i] == "parked"), None)
+    col = read_table(folder / "trajectory.csv")
+    k = int(np.searchsorted(col["t"], t[begin] - 1e-9))
+    names, lim = model.config.joint_names, model.limits
     qd = np.array([col[f"qd_{j}"][k] for j in names])
     a = np.array([col[f"qdd_{j}"][k] for j in names])
-    lim = model.limits
-    A = 0.5 * lim.acceleration
-    bound = float(np.max((np.abs(qd) + np.abs(a) ** 2 / (2 * lim.jerk)) / A + 2 * A / lim.jerk)) + 2.0 / rate
-    return {"outage_at": start, "parking_at": None if parking is None else float(t[parking]),
-            "parked_after": None if parked is None or parking is None else float(t[parked] - t[parking]),
-            "braking_bound": bound,
-            "resumed_at": None if resumed is None else float(t[resumed])}
+    bound = float(np.max(serve.stopping_time(qd, a, lim.acceleration, lim.jerk))) + 2.0 / rate
+    row = {"parking_s": None if end is None else float(t[end] - t[begin]), "parking_bound_s": bound}
+    if outage_at is not None:
+        after = np.flatnonzero(t >= outage_at)
+        parking = next(i for i in after if status[i] == "parking")
+        resumed = next(i for i in after if i > parking and status[i] == "running")
+        row.update(outage_at=outage_at, parking_at=float(t[parking]), resumed_at=float(t[resumed]))
+    return row
 
 
 def table(rows: list[dict], load: tuple) -> str:
     head = ("| run | latency median / p99 [ms] | over deadline | datagrams dropped | stand-in | felt force RMS "
-            "served / online [m/s^2] | ratio |")
+            "served / online [m/s^2] | ratio | parked after the host's end [s] (limits allow) |")
     lines = [head, "|" + " --- |" * (head.count("|") - 1)]
     for r in rows:
         lat = r["latency_ms"]
         verdict = "no violation" if r["passed"] else f"violations {r['violations']}"
         lines.append(f"| {r['run']} ({r['config']}, {r['rate']:g} Hz) | {lat['median']:.2f} / {lat['p99']:.2f} | "
                      f"{r['over_deadline']} of {r['cycles']} | {r['dropped']} | {verdict} | "
-                     f"{r['served_rms']:.3f} / {r['online_rms']:.3f} | {r['served_rms'] / r['online_rms']:.3f} |")
+                     f"{r['served_rms']:.3f} / {r['online_rms']:.3f} | {r['served_rms'] / r['online_rms']:.3f} | "
+                     f"{r['parking_s']:.2f} ({r['parking_bound_s']:.2f}) |")
     for r in rows:
         if "outage_at" in r:
             lines.append("")
-            lines.append(f"{r['run']}: outage from {r['outage_at']:.2f} s of the session; parking from "
-                         f"{r['parking_at']:.2f} s, parked {r['parked_after']:.2f} s later (the limits allow "
-                         f"{r['braking_bound']:.2f} s from the rates it had); running again from "
+            lines.append(f"{r['run']}: the host silent from {r['outage_at']:.2f} s of the session for "
+                         f"{OUTAGE[1]:g} s; parking from {r['parking_at']:.2f} s, running again from "
                          f"{r['resumed_at']:.2f} s.")
     lines.append("")
     lines.append(f"Load average before and after: {load[0]:.2f}, {load[1]:.2f} (2 cores); measured "
@@ -191,12 +198,14 @@ def main(argv=None) -> int:
     parser.add_argument("--runs", nargs="+", choices=tuple(RUNS), default=list(RUNS))
     parser.add_argument("--table-only", action="store_true")
     args = parser.parse_args(argv)
-    before = os.getloadavg()[0]
+    loads = RESULTS / "load.json"  # the machine's load while the runs ran, kept for --table-only
     if not args.table_only:
+        before = os.getloadavg()[0]
         for name in args.runs:
             print(serve_run(name), flush=True)
+        loads.write_text(json.dumps([before, os.getloadavg()[0]]))
     rows = [measure(name) for name in args.runs]
-    text = table(rows, (before, os.getloadavg()[0]))
+    text = table(rows, tuple(json.loads(loads.read_text())))
     print(text)
     tables.replace_between(BEGIN, END, text, "Real-time service", DOCS)
     return 0

@@ -199,3 +199,22 @@ def test_sigint_parks_the_machine_writes_the_session_and_exits_130(tmp_path):
     last = stand_in.setpoints[-1]
     assert last.status == "parked" and not np.any(last.rate) and not np.any(last.acceleration)
     _continuous(stand_in.setpoints, Model(config="dfs"))
+
+
+def test_parking_stops_each_joint_as_quickly_as_its_limits_allow():
+    """From the arm spinning near its rate limit and the gimbals moving, the stop brakes at the
+    acceleration limit, ramped at the jerk limit, and is nearly still within a few cycles of the
+    shortest stop the limits allow (continuous time); no limit is exceeded on the way."""
+    from desdemona.plan import State
+
+    lim, h = Model(config="dfs").limits, 0.02
+    state = State(np.zeros(4), np.array([2.5, -1.0, 0.5, 2.0]), np.array([0.3, 0.5, -1.0, 0.0]))
+    bound = np.max(serve.stopping_time(state.qd, state.a, lim.acceleration, lim.jerk))
+    for k in range(int(2 * bound / h)):
+        jerk = serve.stopping_jerk(state.qd, state.a, h, lim.acceleration, lim.jerk)
+        assert np.all(np.abs(jerk) <= lim.jerk + 1e-12)
+        state = state.advance(state.a, h, jerk)
+        assert np.all(np.abs(state.a) <= lim.acceleration + 1e-12) and np.all(np.abs(state.qd) <= lim.velocity)
+        if np.all(np.abs(state.qd) <= lim.jerk * h**2 / 4) and np.all(np.abs(state.a) <= lim.jerk * h / 4):
+            break
+    assert (k + 1) * h <= bound + 3 * h

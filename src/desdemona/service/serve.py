@@ -50,8 +50,6 @@ from desdemona.profiles import DesiredPath, ProfileError
 from desdemona.service import protocol
 from desdemona.simulate import TOLERANCE, ClosedLoop
 
-#: Below these a parked machine is brought to rest exactly in two cycles [rad/s or m/s, /s^2].
-REST_RATE, REST_ACCELERATION = 1e-4, 1e-3
 #: Where the controller's command sources are named in the log: what the protocol calls them.
 SOURCE_NAMES = {"mpc": "plan", "shifted": "previous plan", "brake": "brake"}
 
@@ -289,21 +287,30 @@ class _Session:
         self._guard()
 
     def park(self, stop: bool = False, hard: bool = False) -> None:
-        """Brake towards rest (:meth:`MPC.brake`: at most the braking share of each acceleration limit, at
-        most the jerk limit) and, once nearly still, come to rest exactly in two cycles; then hold."""
+        """Stop the machine as quickly as its limits allow (:func:`stopping_jerk`: each joint braking at
+        its acceleration limit, reached and left at its jerk limit; at a lower acceleration where the
+        cycle's check of every limit asks for it, and as :meth:`MPC.brake` where none passes), and, once
+        nearly still, come to rest exactly in two cycles; then hold."""
         q, qd, a = self.state
-        near = np.all(np.abs(qd) < REST_RATE) and np.all(np.abs(a) < REST_ACCELERATION)
+        lim, h = self.model.limits, self.h
+        near = np.all(np.abs(qd) <= lim.jerk * h**2 / 4) and np.all(np.abs(a) <= lim.jerk * h / 4)
+        self.status = "parking"
         if self.settle is not None:  # the second cycle of coming to rest
-            self.command, self.settle, self.status = (a.copy(), self.settle), None, "parking"
-        elif hard or not near:
-            self.command, self.status = self.controller.brake(q, qd, a), "parking"
-        elif np.all(np.abs(qd) < 1e-12) and np.all(np.abs(a) < 1e-12):
-            self.state = State(q, np.zeros_like(qd), np.zeros_like(a))  # still: round-off left behind
-            self.command, self.status = (np.zeros_like(qd), np.zeros_like(qd)), "parked"
-        else:  # the jerks that take rate and acceleration to zero at the end of the next cycle
-            h = self.h
-            self.command = (a.copy(), -qd / h**2 - 1.5 * a / h)
-            self.settle, self.status = qd / h**2 + 0.5 * a / h, "parking"
+            self.command, self.settle = (a.copy(), self.settle), None
+        elif near and not hard:
+            if np.all(np.abs(qd) < 1e-12) and np.all(np.abs(a) < 1e-12):
+                self.state = State(q, np.zeros_like(qd), np.zeros_like(a))  # still: round-off left behind
+                self.command, self.status = (np.zeros_like(qd), np.zeros_like(qd)), "parked"
+            else:  # the jerks that take rate and acceleration to zero at the end of the next cycle
+                self.command = (a.copy(), -qd / h**2 - 1.5 * a / h)
+                self.settle = qd / h**2 + 0.5 * a / h
+        else:
+            for share in (1.0, 0.75, 0.5, 0.25):
+                self.command = (a.copy(), stopping_jerk(qd, a, h, share * lim.acceleration, lim.jerk))
+                if self._use() <= 1.0 + TOLERANCE:
+                    break
+            else:
+                self.command = self.controller.brake(q, qd, a)
         self.source, self.reason = "park", "stop" if stop else "no host message"
         self.was_parked = True
         self._guard()
@@ -311,11 +318,15 @@ class _Session:
     def hold(self, status: str) -> None:
         self.command, self.status, self.source, self.reason = (np.zeros(self.model.n),) * 2, status, "park", ""
 
+    def _use(self) -> float:
+        """The largest use of any limit over the cycle with the command (1 = at a limit)."""
+        return float(np.max(np.asarray(self.guard_use(*self.state[:2], *self.command))))
+
     def _guard(self) -> None:
         """The service's own check of the cycle's command over the cycle (every limit, position to
         jerk); a command that fails it is a fault (the controller's own check should never let one
         through), reported as such in the setpoint and the log."""
-        use = float(np.max(np.asarray(self.guard_use(*self.state[:2], *self.command))))
+        use = self._use()
         if use > 1.0 + TOLERANCE:
             self.status, self.reason = "fault", f"limit use {use:.4f} over the cycle"
 
@@ -344,6 +355,41 @@ class _Session:
 
     def columns(self) -> dict[str, np.ndarray]:
         return {key: np.array([r[key] for r in self.rows]) for key in ("message_age_s", "latency_s", "command", "status")}
+
+
+def stopping_jerk(qd, a, h: float, A, J) -> np.ndarray:
+    """Per joint the jerk of the coming step [/s^3] of a stop as quick as the limits allow: the
+    acceleration turned against the motion at up to the jerk limit ``J``, held at ``A``, and turned back
+    to zero so that the rate reaches zero as the acceleration does. Of the jerks in [-J, J] it takes the
+    one that brakes most while the rate, were the acceleration then taken to zero at ``J``, does not
+    pass zero, and the acceleration stays within ``A`` (qd, a, A, J: (n,) per joint; h [s])."""
+    qd, a = np.asarray(qd, dtype=float), np.asarray(a, dtype=float)
+    s = np.where(qd != 0.0, np.sign(qd), -np.sign(a))  # the direction of motion
+    u, b = s * qd, s * a  # rate and acceleration along it
+
+    def left(k):  # the rate left along it after the step and a ramp of the acceleration to zero
+        b1 = b + k * h
+        return u + b * h + 0.5 * k * h * h + b1 * np.abs(b1) / (2.0 * J)
+
+    lo, hi = -np.asarray(J, dtype=float) * np.ones_like(u), np.asarray(J, dtype=float) * np.ones_like(u)
+    for _ in range(50):  # the smallest jerk along the motion that leaves a rate >= 0
+        mid = 0.5 * (lo + hi)
+        short = left(mid) < 0.0
+        lo, hi = np.where(short, mid, lo), np.where(short, hi, mid)
+    k = np.where(left(-J * np.ones_like(u)) >= 0.0, -J, hi)
+    k = np.maximum(k, (-A - b) / h)  # the acceleration no further than A against the motion
+    return s * np.clip(k, -J, J)
+
+
+def stopping_time(qd, a, A, J) -> np.ndarray:
+    """Per joint the shortest time [s] to rest from rate ``qd`` and acceleration ``a`` with the
+    acceleration within ``A`` and the jerk within ``J`` (continuous time): with b the acceleration along
+    the motion and w = |qd| + b^2 / 2J the rate the stop starts from once the acceleration has been
+    taken to zero, b / J + w / A + A / J, or b / J + 2 sqrt(w / J) where the stop never reaches A."""
+    qd, a = np.asarray(qd, dtype=float), np.asarray(a, dtype=float)
+    b = np.where(qd != 0.0, np.sign(qd) * a, -np.abs(a))
+    w = np.abs(qd) + b**2 / (2.0 * J)
+    return b / J + np.where(w >= A**2 / J, w / A + A / J, 2.0 * np.sqrt(w / J))
 
 
 def result(served: Served, model: Model, options: OnlineOptions) -> OnlineResult:
