@@ -110,12 +110,19 @@ def serve_run(name: str) -> dict:
     return {"name": name, "served_rc": server.returncode, "machine_rc": machine.returncode}
 
 
-def _felt_force_rms(folder: Path, window: tuple[float, float]) -> float:
-    """RMS over ``window`` [s] of the felt force's error |f - f_d| (trajectory.csv)."""
-    col = read_table(folder / "trajectory.csv")
-    keep = (col["t"] >= window[0]) & (col["t"] <= window[1])
+def _felt_force_rms(folder: Path, recording: Path, modulus: bool, offset: float = 0.0) -> float:
+    """RMS of the felt force's error |f - f_d| over the recording's span, f from a result folder's
+    trajectory.csv (its time less ``offset`` on the recording's clock), f_d from the recording itself
+    (a modulus along the occupant's vertical): the served session and ``online`` judged against the
+    same target."""
+    col, rec = read_table(folder / "trajectory.csv"), read_table(recording)
+    t = col["t"] - offset
+    keep = (t >= rec["t"][0]) & (t <= rec["t"][-1])
     f = np.column_stack([col[k][keep] for k in ("fx", "fy", "fz")])
-    f_d = np.column_stack([col[f"{k}_d"][keep] for k in ("fx", "fy", "fz")])
+    if modulus:
+        f_d = np.column_stack([np.zeros(keep.sum()), np.zeros(keep.sum()), np.interp(t[keep], rec["t"], rec["M"])])
+    else:
+        f_d = np.column_stack([np.interp(t[keep], rec["t"], rec[k]) for k in ("fx", "fy", "fz")])
     return float(np.sqrt(np.mean(np.sum((f - f_d) ** 2, axis=1))))
 
 
@@ -134,13 +141,13 @@ def measure(name: str) -> dict:
     cycles = _cycles(folder / "served")
     running = [float(c["t"]) for c in cycles if c["status"] == "running"]
     span = (running[0], running[-1])
-    duration = STOP - START
+    reference = recording(modulus)
     row = {"run": name, "config": config, "rate": rate, "latency_ms": {k: 1e3 * v for k, v in service["latency_s"].items()},
            "over_deadline": service["compute_over_deadline"], "cycles": service["cycles"],
            "dropped": sum(service["dropped"].values()), "violations": stand_in.get("violations", stand_in.get("counts")),
            "passed": stand_in["passed"], "received": service["received"],
-           "served_rms": _felt_force_rms(folder / "served", span),
-           "online_rms": _felt_force_rms(folder / "online", (0.0, duration))}
+           "served_rms": _felt_force_rms(folder / "served", reference, modulus, service["host_time_offset_s"]),
+           "online_rms": _felt_force_rms(folder / "online", reference, modulus)}
     row.update(_parking(cycles, folder / "served", rate, Model(config=config), span[0] + OUTAGE[0] if lossy else None))
     return row
 

@@ -84,8 +84,9 @@ class ServeOptions:
 @dataclass
 class Served:
     """What a session did: the plan the machine executed from rest at home (:class:`ClosedLoop`), per
-    cycle the service's record (:attr:`columns`), the motion received (times on the session's clock)
-    and the datagrams dropped by reason; ``stopped_by``: the signal that ended it, or None."""
+    cycle the service's record (:attr:`columns`), the motion received (times on the session's clock:
+    the host's time plus ``offset``, the session's time at which the host's first message arrived less
+    its time) and the datagrams dropped by reason; ``stopped_by``: the signal that ended it, or None."""
 
     loop: ClosedLoop
     columns: dict[str, np.ndarray]
@@ -94,6 +95,7 @@ class Served:
     dropped: Counter = field(default_factory=Counter)
     stopped_by: int | None = None
     deadline: float = 0.0
+    offset: float = 0.0  # the session's time [s] of the host's time 0
 
     def path(self, model: Model) -> DesiredPath:
         """The motion received, on the session's clock from t = 0 (held at its first value before it
@@ -260,7 +262,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
     offset = inbox.arrivals[0] - start - inbox.t[0] if inbox.t else 0.0
     return Served(loop=session.loop(), columns=session.columns(), received_t=np.asarray(inbox.t) + offset,
                   received=np.asarray(inbox.values).reshape(len(inbox.t), channels), dropped=inbox.dropped,
-                  stopped_by=stops[0] if stops else None, deadline=controller.deadline)
+                  stopped_by=stops[0] if stops else None, deadline=controller.deadline, offset=offset)
 
 
 class _Session:
@@ -416,6 +418,7 @@ def summary(served: Served, serving: ServeOptions) -> dict:
             "dropped": dict(served.dropped), "received": int(len(served.received_t)),
             "latency_s": spread(latency), "message_age_s": spread(age),
             "compute_over_deadline": int(np.sum(times > served.deadline)),
+            "host_time_offset_s": served.offset,
             "stopped_by": None if served.stopped_by is None else signal.Signals(served.stopped_by).name}
 
 
