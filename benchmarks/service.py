@@ -11,7 +11,8 @@ ending one second after the host has gone quiet and the machine is parked) and t
 at the motion system's rate). Runs:
 
 - ``dfs-50``: the flight's modulus on ``dfs`` at 50 Hz;
-- ``full-20``: the six channels on ``full`` at 20 Hz;
+- ``full-20``: the six channels on ``full`` at 20 Hz; ``full-20-tail`` with ``--tail-step 0.2`` (the
+  plan's coarse tail in steps of 0.2 s instead of 0.1 s: half the intervals);
 - ``dfs-50-lossy``: as ``dfs-50`` with 10 % of the host's datagrams dropped at random and a 1 s
   outage at 30 s of the flight: the machine must park within the time its limits allow for braking,
   and the session resume after the outage.
@@ -19,8 +20,8 @@ at the motion system's rate). Runs:
 Per run the table gives the end-to-end latency (host message received to setpoint sent) median and
 p99, the cycles over their deadline, the datagrams dropped, the stand-in's verdict (violations of
 any limit, position to jerk, or of continuity), the felt-force RMS of the served session against
-``desdemona online`` with the same predictor on the imported recording of the same flight
-(``desdemona import jsbsim``), over the flight's span, and how long parking took once the host had
+``desdemona online`` with the same predictor on the imported recording of the same flight at the
+host's rate (``desdemona import jsbsim --rate``), both judged against that recording, and how long parking took once the host had
 ended, against the time the limits allow. The lossy run adds when it parked and when it resumed.
 The machine's load average is recorded before and after.
 """
@@ -49,10 +50,11 @@ RESULTS = HERE / "service-results"
 DOCS = HERE.parent / "docs" / "benchmarks.md"
 BEGIN, END = "<!-- service.py table: begin -->", "<!-- service.py table: end -->"
 SCRIPT, START, STOP = str(HERE / "corpus_scripts" / "f16_turn.xml"), 3.0, 58.0  # the F-16's 4.6 g turn, 55 s
-RUNS = {  # name: (configuration, rate [Hz], modulus, lossy)
-    "dfs-50": ("dfs", 50.0, True, False),
-    "full-20": ("full", 20.0, False, False),
-    "dfs-50-lossy": ("dfs", 50.0, True, True),
+RUNS = {  # name: (configuration, rate [Hz], modulus, lossy, the plan's tail step [s])
+    "dfs-50": ("dfs", 50.0, True, False, 0.1),
+    "full-20": ("full", 20.0, False, False, 0.1),
+    "full-20-tail": ("full", 20.0, False, False, 0.2),
+    "dfs-50-lossy": ("dfs", 50.0, True, True, 0.1),
 }
 DROP, OUTAGE = 0.1, (30.0, 1.0)
 
@@ -67,19 +69,20 @@ def _desdemona(*args) -> list[str]:
     return [sys.executable, "-m", "desdemona", *map(str, args)]
 
 
-def recording(modulus: bool) -> Path:
-    """The flight imported as ``desdemona import jsbsim`` writes it (the reference of ``online``)."""
-    out = RESULTS / f"f16-turn{'-modulus' if modulus else ''}.csv"
+def recording(modulus: bool, rate: float) -> Path:
+    """The flight imported as ``desdemona import jsbsim`` writes it, at the host's rate (the samples
+    the host sends): the reference ``online`` runs on and both are judged against."""
+    out = RESULTS / f"f16-turn{'-modulus' if modulus else ''}-{rate:g}hz.csv"
     if not out.exists():
         RESULTS.mkdir(parents=True, exist_ok=True)
-        subprocess.run(_desdemona("import", "jsbsim", SCRIPT, "--start", START, "--end", STOP, "--out", out,
-                                  *(["--modulus"] if modulus else [])), check=True)
+        subprocess.run(_desdemona("import", "jsbsim", SCRIPT, "--start", START, "--end", STOP, "--rate", rate,
+                                  "--out", out, *(["--modulus"] if modulus else [])), check=True)
     return out
 
 
 def serve_run(name: str) -> dict:
     """One run of the three processes; returns what the table needs."""
-    config, rate, modulus, lossy = RUNS[name]
+    config, rate, modulus, lossy, tail = RUNS[name]
     folder = RESULTS / name
     folder.mkdir(parents=True, exist_ok=True)
     listen, send = _port(), _port()
@@ -88,9 +91,9 @@ def serve_run(name: str) -> dict:
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     server = subprocess.Popen(_desdemona("serve", "--config", config, "--listen", f"127.0.0.1:{listen}",
                                          "--send", f"127.0.0.1:{send}", "--rate", rate, "--out", folder / "served",
-                                         "--overwrite", "--quiet-end", 1.0, "--no-view"),
+                                         "--tail-step", tail, "--overwrite", "--quiet-end", 1.0, "--no-view"),
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    time.sleep(3.0)  # the service builds its controller, then listens
+    server.stdout.readline()  # "serving ...": the controller is built (and compiled), the service listens
     host = [*(["--modulus"] if modulus else []),
             *(["--drop", DROP, "--outage", f"{OUTAGE[0]},{OUTAGE[1]}"] if lossy else [])]
     subprocess.run(_desdemona("host", "jsbsim", SCRIPT, "--to", f"127.0.0.1:{listen}", "--start", START,
@@ -104,8 +107,8 @@ def serve_run(name: str) -> dict:
     (folder / "serve.txt").write_text(served_out)
     (folder / "machine.txt").write_text(machine_out)
     online = folder / "online"
-    subprocess.run(_desdemona("online", recording(modulus), "--config", config, "--predictor", "hold",
-                              "--step", 1.0 / rate, "--initial", "home", "--out", online, "--overwrite",
+    subprocess.run(_desdemona("online", recording(modulus, rate), "--config", config, "--predictor", "hold",
+                              "--step", 1.0 / rate, "--tail-step", tail, "--initial", "home", "--out", online, "--overwrite",
                               "--no-view"), check=True, capture_output=True)
     return {"name": name, "served_rc": server.returncode, "machine_rc": machine.returncode}
 
@@ -133,7 +136,7 @@ def _cycles(folder: Path) -> list[dict]:
 
 def measure(name: str) -> dict:
     """The table's row of a run, from its folders."""
-    config, rate, modulus, lossy = RUNS[name]
+    config, rate, modulus, lossy, tail = RUNS[name]
     folder = RESULTS / name
     served = json.loads((folder / "served" / "summary.json").read_text())
     service = served["service"]
@@ -141,8 +144,8 @@ def measure(name: str) -> dict:
     cycles = _cycles(folder / "served")
     running = [float(c["t"]) for c in cycles if c["status"] == "running"]
     span = (running[0], running[-1])
-    reference = recording(modulus)
-    row = {"run": name, "config": config, "rate": rate, "latency_ms": {k: 1e3 * v for k, v in service["latency_s"].items()},
+    reference = recording(modulus, rate)
+    row = {"run": name, "config": config, "rate": rate, "tail": tail, "latency_ms": {k: 1e3 * v for k, v in service["latency_s"].items()},
            "over_deadline": service["compute_over_deadline"], "cycles": service["cycles"],
            "dropped": sum(service["dropped"].values()), "violations": stand_in.get("violations", stand_in.get("counts")),
            "passed": stand_in["passed"], "received": service["received"],
@@ -184,7 +187,7 @@ def table(rows: list[dict], load: tuple) -> str:
     for r in rows:
         lat = r["latency_ms"]
         verdict = "no violation" if r["passed"] else f"violations {r['violations']}"
-        lines.append(f"| {r['run']} ({r['config']}, {r['rate']:g} Hz) | {lat['median']:.2f} / {lat['p99']:.2f} | "
+        lines.append(f"| {r['run']} ({r['config']}, {r['rate']:g} Hz, tail {r['tail']:g} s) | {lat['median']:.2f} / {lat['p99']:.2f} | "
                      f"{r['over_deadline']} of {r['cycles']} | {r['dropped']} | {verdict} | "
                      f"{r['served_rms']:.3f} / {r['online_rms']:.3f} | {r['served_rms'] / r['online_rms']:.3f} | "
                      f"{r['parking_s']:.2f} ({r['parking_bound_s']:.2f}) |")
@@ -211,7 +214,7 @@ def main(argv=None) -> int:
         for name in args.runs:
             print(serve_run(name), flush=True)
         loads.write_text(json.dumps([before, os.getloadavg()[0]]))
-    rows = [measure(name) for name in args.runs]
+    rows = [measure(name) for name in RUNS if (RESULTS / name / "served" / "summary.json").exists()]
     text = table(rows, tuple(json.loads(loads.read_text())))
     print(text)
     tables.replace_between(BEGIN, END, text, "Real-time service", DOCS)

@@ -372,12 +372,16 @@ def run_serve(args) -> int:
         raise UserError(str(exc)) from None
     reference = None if args.reference is None else profiles.load(args.reference)
     resolved = session.live(model, session.Choices.of(args), channels=channels, rate=args.rate, span=args.duration,
-                            horizon=args.horizon, reach=args.reach, predictor=args.predictor, reference=reference)
+                            horizon=args.horizon, reach=args.reach, predictor=args.predictor, reference=reference,
+                            tail_step=args.tail_step)
     options = resolved.options
-    print(f"desdemona: serving {model.config.name} at {1.0 / options.mpc.step:g} Hz: motion from {args.listen}, "
-          f"setpoints to {args.send}; Ctrl-C parks the machine and ends the session", file=sys.stderr, flush=True)
+
+    def ready():
+        print(f"desdemona: serving {model.config.name} at {1.0 / options.mpc.step:g} Hz: motion from {args.listen}, "
+              f"setpoints to {args.send}; Ctrl-C parks the machine and ends the session", file=sys.stderr, flush=True)
+
     try:
-        served = serve.serve(model, options, serving)
+        served = serve.serve(model, options, serving, ready=ready)
     except OSError as exc:
         raise UserError(f"--listen {args.listen}: {exc.strerror or exc}") from None
     result = serve.result(served, model, options)

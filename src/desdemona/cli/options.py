@@ -369,6 +369,9 @@ def _add_serve_parser(sub) -> None:
                        help="T_h (default: 2 on dfs and dfs-yaw; 4 with the track)")
     serve.add_argument("--reach", type=float, default=None, metavar="SECONDS",
                        help="how far each plan looks, at least T_h (default: as online)")
+    serve.add_argument("--tail-step", type=float, default=0.1, metavar="SECONDS", dest="tail_step",
+                       help="the plan's step beyond its first 0.4 s (default: 0.1; 0.2 keeps full within 10 ms a "
+                            "cycle at 20 Hz, 0 the cycle throughout)")
     serve.add_argument("--timeout", type=int, default=5, metavar="CYCLES",
                        help="cycles without a valid host message before the machine is parked (default: 5)")
     serve.add_argument("--duration", type=float, default=None, metavar="SECONDS",
