@@ -218,3 +218,38 @@ def test_parking_stops_each_joint_as_quickly_as_its_limits_allow():
         if np.all(np.abs(state.qd) <= lim.jerk * h**2 / 4) and np.all(np.abs(state.a) <= lim.jerk * h / 4):
             break
     assert (k + 1) * h <= bound + 3 * h
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
+def test_a_second_sigint_stops_at_once_after_one_braking_command(tmp_path):
+    """The first Ctrl-C starts parking the spinning machine; a second one ends the service after one
+    more braking command, long before the machine could be at rest."""
+    port, out = _free_port(), tmp_path / "served"
+    stand_in = _Machine(20.0)
+    proc = subprocess.Popen([sys.executable, "-m", "desdemona", "serve", "--config", "dfs", "--listen",
+                             f"{LOOPBACK}:{port}", "--send", f"{LOOPBACK}:{stand_in.address[1]}", "--out", str(out),
+                             "--horizon", "1", "--duration", "15", "--no-view"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert "serving dfs at 50 Hz" in proc.stderr.readline()
+        data, at = _motion(profiles.get_profile("dfs-catapult"), 8.0, delay=0.0)
+        host = _send(port, data, at)
+        deadline = time.monotonic() + 10
+        while time.monotonic() < deadline and not any(s.status == "running" and abs(s.rate[0]) > 0.2
+                                                      for s in stand_in.setpoints):
+            time.sleep(0.05)
+        os.kill(proc.pid, signal.SIGINT)
+        time.sleep(0.1)
+        os.kill(proc.pid, signal.SIGINT)
+        stopped = time.monotonic()
+        proc.communicate(timeout=30)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+    host.join(timeout=10)
+    stand_in.join()
+    assert proc.returncode == 130
+    last = stand_in.setpoints[-1]
+    assert last.status == "parking", [(s.status, round(s.rate[0], 3)) for s in stand_in.setpoints[-5:]]
+    assert abs(last.rate[0]) > 0.05  # still turning: it did not wait to park
+    _continuous(stand_in.setpoints, Model(config="dfs"))

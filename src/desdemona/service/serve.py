@@ -135,7 +135,7 @@ class _Inbox:
             now = self.clock()
             if now >= until or (self.fresh and now >= opens):
                 return
-            self.selector.select((opens if self.fresh else until) - now)
+            self.selector.select((min(opens, until) if self.fresh else until) - now)
 
     def drain(self) -> None:
         while True:
@@ -231,8 +231,8 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
         k = 0
         while True:
             opens, closes = start + (k - 0.5) * h, start + (k + 0.5) * h
-            if not stops:
-                inbox.wait(closes, opens)
+            # stopping, the cycles keep their times; else each starts as a new host message comes
+            inbox.wait(start + k * h, np.inf) if stops else inbox.wait(closes, opens)
             began = clock()
             alive = inbox.arrived is not None and began - inbox.arrived <= serving.timeout * h
             if stops:
