@@ -81,9 +81,9 @@ def _motion(path, until: float, delay: float = 0.2, skip=None):
     return data, delay + path.t[keep]
 
 
-def _session(duration: float, **kwargs):
+def _session(duration: float, predictor: str = "hold", **kwargs):
     model = Model(config="dfs")
-    options = session.live(model, channels=1, rate=50.0, span=duration, horizon=1.0).options
+    options = session.live(model, channels=1, rate=50.0, span=duration, horizon=1.0, predictor=predictor).options
     port = _free_port()
     stand_in = _Machine(duration + 3.0)
     serving = serve.ServeOptions(listen=(LOOPBACK, port), send=stand_in.address, channels=1, duration=duration,
@@ -91,9 +91,9 @@ def _session(duration: float, **kwargs):
     return model, options, port, stand_in, serving
 
 
-def _serve(duration: float, data, at, extra=(), **serving):
+def _serve(duration: float, data, at, extra=(), predictor: str = "hold", **serving):
     """A session of ``duration`` [s] on dfs at 50 Hz, the host sending ``data`` at ``at`` once it listens."""
-    model, options, port, stand_in, serving = _session(duration, **serving)
+    model, options, port, stand_in, serving = _session(duration, predictor, **serving)
     go = threading.Event()
     host = _send(port, data, at, extra, go=go)
     served = serve.serve(model, options, serving, ready=go.set)
@@ -241,7 +241,6 @@ def test_a_second_sigint_stops_at_once_after_one_braking_command(tmp_path):
         os.kill(proc.pid, signal.SIGINT)
         time.sleep(0.1)
         os.kill(proc.pid, signal.SIGINT)
-        stopped = time.monotonic()
         proc.communicate(timeout=30)
     finally:
         if proc.poll() is None:
@@ -253,3 +252,26 @@ def test_a_second_sigint_stops_at_once_after_one_braking_command(tmp_path):
     assert last.status == "parking", [(s.status, round(s.rate[0], 3)) for s in stand_in.setpoints[-5:]]
     assert abs(last.rate[0]) > 0.05  # still turning: it did not wait to park
     _continuous(stand_in.setpoints, Model(config="dfs"))
+
+
+def test_the_forecast_predictor_plans_on_the_hosts_own_forecast():
+    """A host that sends the next second with each message (here the true future): every plan is made
+    on it (no fallback for want of a preview), and the session follows the path better than with the
+    present value held."""
+    path = profiles.get_profile("dfs-catapult")
+    keep = path.t <= 5.0  # the launch's pulse comes at about 4 s
+    step = float(path.t[1] - path.t[0])
+    M = np.where(keep, path.M_d, path.M_d[keep][-1])  # the host's motion ends at 5 s, held after
+    data = []
+    for k in np.flatnonzero(keep):
+        ahead = M[k + 1:k + 1 + int(round(1.0 / step))]
+        data.append(protocol.pack(protocol.Motion(k + 1, float(path.t[k]), np.array([path.M_d[k]]),
+                                                  ahead[:, None], step)))
+    at = 0.2 + path.t[keep]
+    model, options, forecast, _ = _serve(5.5, data, at, predictor="forecast")
+    running = forecast.columns["status"] == "running"
+    assert running.sum() > 100 and not any("preview" in r for r in forecast.loop.reasons)
+    plain = [protocol.pack(protocol.Motion(k + 1, float(path.t[k]), np.array([path.M_d[k]])))
+             for k in np.flatnonzero(keep)]
+    _, hold_options, held, _ = _serve(5.5, plain, at)
+    assert serve.result(forecast, model, options).check.rms < serve.result(held, model, hold_options).check.rms
