@@ -130,7 +130,8 @@ def _felt_force_rms(folder: Path, recording: Path, modulus: bool, offset: float 
 
 
 def _cycles(folder: Path) -> list[dict]:
-    with open(folder / "cycles.csv", newline="") as fh:
+    """Every cycle of a served session (``session.csv``)."""
+    with open(folder / "session.csv", newline="") as fh:
         return list(csv.DictReader(fh))
 
 
@@ -143,7 +144,6 @@ def measure(name: str) -> dict:
     stand_in = json.loads((folder / "machine" / "summary.json").read_text())
     cycles = _cycles(folder / "served")
     running = [float(c["t"]) for c in cycles if c["status"] == "running"]
-    span = (running[0], running[-1])
     reference = recording(modulus, rate)
     row = {"run": name, "config": config, "rate": rate, "tail": tail, "latency_ms": {k: 1e3 * v for k, v in service["latency_s"].items()},
            "over_deadline": service["compute_over_deadline"], "cycles": service["cycles"],
@@ -151,11 +151,13 @@ def measure(name: str) -> dict:
            "passed": stand_in["passed"], "received": service["received"],
            "served_rms": _felt_force_rms(folder / "served", reference, modulus, service["host_time_offset_s"]),
            "online_rms": _felt_force_rms(folder / "online", reference, modulus)}
-    row.update(_parking(cycles, folder / "served", rate, Model(config=config), span[0] + OUTAGE[0] if lossy else None))
+    row.update(_parking(cycles, folder / "served", rate, Model(config=config), running[0] + OUTAGE[0] if lossy else None,
+                        service["judged_span_s"][0]))
     return row
 
 
-def _parking(cycles: list[dict], folder: Path, rate: float, model: Model, outage_at: float | None) -> dict:
+def _parking(cycles: list[dict], folder: Path, rate: float, model: Model, outage_at: float | None,
+             judged_from: float) -> dict:
     """How the session parked: after the host's last message, the time from the first parking cycle to
     parked, against the time the limits allow from the rates and accelerations it had
     (:func:`desdemona.service.serve.stopping_time`, and the two cycles of coming to rest); with an
@@ -165,8 +167,8 @@ def _parking(cycles: list[dict], folder: Path, rate: float, model: Model, outage
     last = max(i for i, s in enumerate(status) if s == "running")
     begin = next(i for i in range(last, len(status)) if status[i] == "parking")
     end = next((i for i in range(begin, len(status)) if status[i] == "parked"), None)
-    col = read_table(folder / "trajectory.csv")
-    k = int(np.searchsorted(col["t"], t[begin] - 1e-9))
+    col = read_table(folder / "trajectory.csv")  # the judged span, its time from judged_from
+    k = min(int(np.searchsorted(col["t"], t[begin] - judged_from - 1e-9)), len(col["t"]) - 1)
     names, lim = model.config.joint_names, model.limits
     qd = np.array([col[f"qd_{j}"][k] for j in names])
     a = np.array([col[f"qdd_{j}"][k] for j in names])

@@ -193,9 +193,12 @@ def test_sigint_parks_the_machine_writes_the_session_and_exits_130(tmp_path):
     assert "the machine was parked" in stderr and "written to" in stdout
     summary = json.loads((out / "summary.json").read_text())
     assert summary["service"]["stopped_by"] == "SIGINT"
-    rows = (out / "cycles.csv").read_text().splitlines()
+    rows = (out / "cycles.csv").read_text().splitlines()  # the cycles it followed the host
     assert rows[0].split(",")[-4:] == ["message_age_s", "latency_s", "command", "status"]
-    assert rows[-1].endswith(",park,parked")
+    assert rows[-1].endswith(",plan,running")
+    session = (out / "session.csv").read_text().splitlines()  # every cycle, the parking too
+    assert session[-1].split(",")[1:3] == ["parked", "park"]
+    assert summary["service"]["judged_span_s"][1] < float(session[-1].split(",")[0])
     last = stand_in.setpoints[-1]
     assert last.status == "parked" and not np.any(last.rate) and not np.any(last.acceleration)
     _continuous(stand_in.setpoints, Model(config="dfs"))
@@ -275,3 +278,16 @@ def test_the_forecast_predictor_plans_on_the_hosts_own_forecast():
              for k in np.flatnonzero(keep)]
     _, hold_options, held, _ = _serve(5.5, plain, at)
     assert serve.result(forecast, model, options).check.rms < serve.result(held, model, hold_options).check.rms
+
+
+def test_a_host_restarted_after_the_timeout_is_taken_back():
+    """A host that starts again from sequence 1 and time 0 after the watchdog parked the machine is the
+    host back: followed again, its times continuing from where it left off."""
+    path = profiles.get_profile("dfs-catapult")
+    first, at_first = _motion(path, 0.8)
+    again, at_again = _motion(path, 0.8, delay=1.6)  # the same messages, sequence and time from the start
+    model, options, served, _ = _serve(3.0, first + again, np.r_[at_first, at_again], timeout=5)
+    statuses = list(served.columns["status"])
+    parked = statuses.index("parking")
+    assert "running" in statuses[parked:] and not served.dropped
+    assert np.all(np.diff(served.received_t) > 0) and len(served.received_t) == len(first) + len(again)

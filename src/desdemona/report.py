@@ -36,7 +36,8 @@ from desdemona.simulate import Trajectory, trajectory_table
 
 RESULT_FORMAT = "desdemona result"  # the mark in summary.json that makes a folder ours to replace
 # Everything a result folder of ours may hold: replacing one never deletes anything else.
-RESULT_FILES = {"trajectory.csv", "summary.json", "trajectory.mat", "cycles.csv", "classical.csv", "view.html"}
+RESULT_FILES = {"trajectory.csv", "summary.json", "trajectory.mat", "cycles.csv", "classical.csv", "view.html",
+                "session.csv"}
 UNITS = "units: SI (s, rad, m, rad/s, m/s, rad/s^2, m/s^2, N*m, N, W)"
 
 
@@ -486,14 +487,15 @@ def online_summary(result, command: str | None = None) -> dict:
 
 def write_online(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False,
                  unreachable: dict | None = None, protect=(), view: bool = True, cycle_columns: dict | None = None,
-                 extra_summary: dict | None = None) -> Path:
+                 extra_summary: dict | None = None, files: dict | None = None) -> Path:
     """The result folder of an on-line :class:`~desdemona.online.OnlineResult`: the usual files plus
     ``cycles.csv`` (per-cycle compute time, source of the command, fallback reason), ``classical.csv``
     (the classical loop's run, columns as trajectory.csv's; none where there is no baseline), ``online.png``
     (like thesis figures 7.5/7.6) and ``compute_time.png`` (compute time per cycle against the deadline).
     unreachable, protect, view : as in :func:`write`; cycle_columns : more columns of ``cycles.csv``,
     name -> one value per cycle (the real-time service's message age, latency, status); extra_summary :
-    more entries of ``summary.json``."""
+    more entries of ``summary.json``; files : more files of the folder, name -> text (each name one of
+    :data:`RESULT_FILES`)."""
     if unreachable is None:
         from desdemona import sizing
 
@@ -513,6 +515,8 @@ def write_online(result, out_dir: str | Path, command: str | None = None, overwr
             with open(folder / "classical.csv", "w") as fh:
                 fh.write(f"# classical loop; {UNITS}\n{','.join(names)}\n")
                 np.savetxt(fh, table, delimiter=",", fmt="%.10g")
+        for name, text in (files or {}).items():
+            (folder / name).write_text(text)
         figures.draw_online(result, folder)
 
     return write_folder(result.trajectory, summary, result.model.config, out_dir, overwrite, extra,

@@ -185,9 +185,9 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     if (predictor == "route") != (reference is not None):
         raise ChoiceError("--predictor route needs --reference, a recording of the same course" if reference is None
                          else "--reference is used only with --predictor route")
+    weighted = cost(path, model, choices)
     try:
-        mpc = MPCOptions(horizon=horizon, step=step, reach=reach, perception=perception,
-                         **cost(path, model, choices), **timing)
+        mpc = MPCOptions(horizon=horizon, step=step, reach=reach, perception=perception, **weighted, **timing)
     except ValueError as exc:
         raise ChoiceError(f"--replan: {exc}") from None
     size = sizing.check_fits_online(path, model.config, mpc)
@@ -198,6 +198,8 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
 
 #: How long a live session is assumed to last when it is sized before it starts [s].
 LIVE_SPAN = 600.0
+#: The fastest cycle of a live session [Hz].
+MAX_LIVE_RATE = 200.0
 
 
 def live(model: Model, choices: Choices = Choices(), *, channels: int, rate: float | None = None,
@@ -209,8 +211,9 @@ def live(model: Model, choices: Choices = Choices(), *, channels: int, rate: flo
     predictor one of :data:`desdemona.predictors.LIVE` (default ``hold``)."""
     if channels not in (1, 6):
         raise ChoiceError(f"--channels {channels}: 6 (S) or 1 (the modulus)")
-    if rate is not None and not (math.isfinite(rate) and rate > 0):
-        raise ChoiceError(f"--rate {rate:g}: a positive number of cycles a second")
+    if rate is not None and not (math.isfinite(rate) and 0 < rate <= MAX_LIVE_RATE):
+        raise ChoiceError(f"--rate {rate:g}: at most {MAX_LIVE_RATE:g} cycles a second (the controller takes "
+                          f"several milliseconds a cycle; see docs/benchmarks.md, 'Real-time service')")
     from desdemona.predictors import LIVE
 
     predictor = online_kwargs.setdefault("predictor", LIVE[0])

@@ -17,7 +17,7 @@ import numpy as np
 
 from desdemona import guard, profiles, session, sizing
 from desdemona import perception as perception_models
-from desdemona.cli.exits import EXIT_NOT_CONVERGED, EXIT_UNSAFE, UserError
+from desdemona.cli.exits import EXIT_NOT_CONVERGED, EXIT_UNSAFE, EXIT_USAGE, UserError
 from desdemona.configs import get_configuration
 from desdemona.model import Model
 from desdemona.params import load_params
@@ -365,7 +365,8 @@ def run_serve(args) -> int:
     report.check_replaceable(out, protect=_inputs(args))
     channels = args.channels or (1 if model.config.takes_modulus else 6)
     try:
-        serving = serve.ServeOptions(listen=protocol.address(args.listen), send=protocol.address(args.send),
+        listen, send = protocol.address(args.listen, "--listen"), protocol.address(args.send, "--send")
+        serving = serve.ServeOptions(listen=listen, send=send,
                                      channels=channels, timeout=args.timeout, duration=args.duration,
                                      quiet_end=args.quiet_end)
     except ValueError as exc:
@@ -380,16 +381,26 @@ def run_serve(args) -> int:
         print(f"desdemona: serving {model.config.name} at {1.0 / options.mpc.step:g} Hz: motion from {args.listen}, "
               f"setpoints to {args.send}; Ctrl-C parks the machine and ends the session", file=sys.stderr, flush=True)
 
+    def dropping(reason):
+        print(f"desdemona: dropping datagrams: {reason}", file=sys.stderr, flush=True)
+
     try:
-        served = serve.serve(model, options, serving, ready=ready)
+        served = serve.serve(model, options, serving, ready=ready, on_drop=dropping)
     except OSError as exc:
         raise UserError(f"--listen {args.listen}: {exc.strerror or exc}") from None
+    if not np.any(served.columns["status"] == "running"):
+        dropped = sum(served.dropped.values())
+        print(f"desdemona: the session never followed the host: no valid motion came to {args.listen} "
+              f"({dropped} datagrams dropped); nothing written", file=sys.stderr)
+        return EXIT_USAGE if served.stopped_by is None else 128 + served.stopped_by
     result = serve.result(served, model, options)
     summary = serve.summary(served, serving)
+    k0, k1 = served.span()
     report.write_online(result, out, report.command_line(), args.overwrite, protect=_inputs(args), view=args.view,
-                        cycle_columns=served.columns, extra_summary={"service": summary})
+                        cycle_columns={k: v[k0:k1] for k, v in served.columns.items()},
+                        extra_summary={"service": summary}, files={"session.csv": serve.session_table(served)})
     print(serve.describe(summary) + f"; written to {out}")
-    print(f"  felt: {result.quality.headline()}")
+    print(f"  felt while following the host: {result.quality.headline()}")
     if served.stopped_by is not None:
         print(f"desdemona: stopped ({signal.Signals(served.stopped_by).name}): the machine was parked",
               file=sys.stderr)
@@ -402,7 +413,7 @@ def run_machine(args) -> int:
 
     model = _machine(args)
     try:
-        listen = protocol.address(args.listen)
+        listen = protocol.address(args.listen, "--listen")
         with guard.handled_here(_stop_here):  # the stand-in writes what it has as it stops
             report = machine.run(model, listen, args.out, idle=args.idle, duration=args.duration)
     except ValueError as exc:
@@ -410,6 +421,10 @@ def run_machine(args) -> int:
     except OSError as exc:
         raise UserError(f"--listen {args.listen}: {exc.strerror or exc}") from None
     print(report.describe())
+    if report.received == 0:
+        print(f"desdemona: no setpoint came to {args.listen}: is it the address 'serve --send' sends to?",
+              file=sys.stderr)
+        return 1
     if not report.passed:
         return machine.exit_code(report)
     return 128 + signal.SIGINT if report.stopped.startswith("interrupted") else 0
@@ -432,7 +447,7 @@ def _host_options(args) -> dict:
         if len(outage) != 2:
             raise UserError(f"--outage {args.outage!r}: give START,LENGTH in seconds, e.g. 30,1")
     try:
-        to = protocol.address(args.to)
+        to = protocol.address(args.to, "--to")
     except ValueError as exc:
         raise UserError(str(exc)) from None
     return {"to": to, "speed": args.speed, "forecast": args.forecast, "modulus": args.modulus, "drop": args.drop,
@@ -453,8 +468,8 @@ def run_host_replay(args) -> int:
     print(f"desdemona: sending {path.name} ({path.duration:g} s) to {args.to}", file=sys.stderr, flush=True)
     try:
         counts = hosts.replay(path, **options)
-    except ValueError as exc:
-        raise UserError(str(exc)) from None
+    except (ValueError, OSError) as exc:
+        raise UserError(f"--to {args.to}: {exc.strerror}" if isinstance(exc, OSError) and exc.strerror else str(exc)) from None
     _say_sent(counts, args.to)
     return 0
 
@@ -466,8 +481,8 @@ def run_host_jsbsim(args) -> int:
     print(f"desdemona: flying {args.script} and sending its motion to {args.to}", file=sys.stderr, flush=True)
     try:
         counts = hosts.jsbsim(args.script, rate=args.rate, start=args.start, end=args.end, **options)
-    except ValueError as exc:
-        raise UserError(str(exc)) from None
+    except (ValueError, OSError) as exc:
+        raise UserError(f"--to {args.to}: {exc.strerror}" if isinstance(exc, OSError) and exc.strerror else str(exc)) from None
     _say_sent(counts, args.to)
     print(f"  {counts['aircraft']}, from {counts['start']:g} s ({counts['start_reason']}); {counts['ended']}")
     return 0

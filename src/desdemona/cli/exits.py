@@ -5,7 +5,8 @@ EXIT_UNSAFE = 3  # no trajectory within every limit was found: nothing is writte
 EXIT_NOT_CONVERGED = 4  # a result within every limit is written, but the solver did not converge
 EXIT_CODES = """exit codes:
   0    done: the result is written
-  1    an unexpected error (a bug: please report it with the command)
+  1    an unexpected error (a bug: please report it with the command); for `machine`: a setpoint broke
+       a limit, or none came
   2    bad input (profile, CSV, parameters, options, --out), --out being written by another run, or a
        problem too large for this machine's memory; nothing is run and nothing is written
   3    no trajectory within every limit was found; nothing is written (batch: for some job)

@@ -316,16 +316,16 @@ def run(model: Model, listen: tuple[str, int], out: str | Path, idle: float = 2.
     """
     if not (idle > 0):
         raise ValueError(f"idle {idle!r}: must be a positive number of seconds")
-    out = prepare(out)
     checker = Checker(model)
-    report = Report(out=out, counts={k: 0 for k in KINDS})
     sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
     try:
         try:
             sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4 << 20)
         except OSError:
             pass
-        sock.bind(listen)
+        sock.bind(listen)  # before the folder: a port in use leaves nothing behind
+        out = prepare(out)
+        report = Report(out=out, counts={k: 0 for k in KINDS})
         report.address = sock.getsockname()[:2]
         with (beside(out / "setpoints.csv") as setpoints_tmp, beside(out / "violations.csv") as violations_tmp,
               open(setpoints_tmp, "w", newline="") as sfile, open(violations_tmp, "w", newline="") as vfile):

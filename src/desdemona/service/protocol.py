@@ -179,15 +179,16 @@ def _unpack_setpoint(data: bytes, sequence: int, time: float) -> Setpoint:
                     cycle_time, step, *table.T)
 
 
-def address(text: str) -> tuple[str, int]:
-    """(host, port) of ``HOST:PORT`` (e.g. ``127.0.0.1:5500``); ValueError naming the problem."""
+def address(text: str, option: str = "address") -> tuple[str, int]:
+    """(host, port) of ``HOST:PORT`` (IPv4, e.g. ``127.0.0.1:5500``); ValueError naming ``option`` and
+    the problem."""
     host, sep, port = text.rpartition(":")
-    if not sep or not host:
-        raise ValueError(f"{text!r}: give HOST:PORT, e.g. 127.0.0.1:5500")
+    if not sep or not host or ":" in host or host.startswith("["):
+        raise ValueError(f"{option} {text!r}: give an IPv4 HOST:PORT, e.g. 127.0.0.1:5500")
     try:
         number = int(port)
     except ValueError:
-        raise ValueError(f"{text!r}: the port must be a number") from None
+        raise ValueError(f"{option} {text!r}: the port must be a number") from None
     if not 0 < number < 65536:
-        raise ValueError(f"{text!r}: the port must be between 1 and 65535")
+        raise ValueError(f"{option} {text!r}: the port must be between 1 and 65535")
     return host, number

@@ -97,28 +97,49 @@ class Served:
     deadline: float = 0.0
     offset: float = 0.0  # the session's time [s] of the host's time 0
 
-    def path(self, model: Model) -> DesiredPath:
-        """The motion received, on the session's clock from t = 0 (held at its first value before it
-        came), as the desired path the session is judged against."""
-        if len(self.received_t) == 0:
-            raise ProfileError("the host sent no valid motion: nothing to judge the session against")
-        t, values = self.received_t, self.received
+    def span(self) -> tuple[int, int]:
+        """(k0, k1): the cycles the session followed the host, from the first that answered a host
+        message to the last that did (one past it): what it is judged on, without the wait before the
+        host came and the parking after it had gone."""
+        running = np.flatnonzero(self.columns["status"] == "running")
+        if len(running) == 0:
+            raise ProfileError("the session never followed the host (no valid host message was answered): "
+                               "nothing to judge")
+        return int(running[0]), int(running[-1]) + 1
+
+    def judged(self, model: Model) -> tuple[DesiredPath, ClosedLoop]:
+        """The motion received and the machine's plan over :meth:`span`, the time from its start: the
+        desired path (held at the first message's value until it came) and the loop from the state the
+        machine had there."""
+        k0, k1 = self.span()
+        plan = self.loop.plan
+        t0 = plan.t_nodes[k0]
+        q, qd, _ = plan.at([t0])
+        cropped = Plan(plan.t_nodes[k0:k1 + 1] - t0, q[0], qd[0], plan.u[k0:k1], plan.jerk[k0:k1])
+        loop = ClosedLoop(cropped, self.loop.cycle_times[k0:k1] - t0, self.loop.sources[k0:k1],
+                          self.loop.compute_times[k0:k1], self.loop.reasons[k0:k1])
+        t, values = self.received_t - t0, self.received
         if t[0] > 0.0:
             t, values = np.r_[0.0, t], np.vstack([values[:1], values])
-        if len(t) < 2:
-            t, values = np.r_[t, t[-1] + 1.0], np.vstack([values, values])
         if values.shape[1] == 1:
-            return model.config.cue_path(DesiredPath("host", t, None, modulus=values[:, 0],
+            path = model.config.cue_path(DesiredPath("host", t, None, modulus=values[:, 0],
                                                      description="received from the host"))
-        return DesiredPath("host", t, values, description="received from the host")
+        else:
+            path = DesiredPath("host", t, values, description="received from the host")
+        return path, loop
 
 
 class _Inbox:
     """The host's datagrams: read without blocking, checked, the newest valid message kept; the motion
-    received so far (host times) for the predictor and the log."""
+    received so far for the predictor and the log, on the host's clock. A host that starts again
+    (its sequence and time from the beginning) after it has been silent for ``restart_after`` seconds
+    is taken as the same host back: its times continue from where it left off. ``on_drop(reason)`` is
+    told of each new reason to drop a datagram."""
 
-    def __init__(self, sock: socket.socket, channels: int, clock):
+    def __init__(self, sock: socket.socket, channels: int, clock, restart_after: float = np.inf, on_drop=None):
         self.sock, self.channels, self.clock = sock, channels, clock
+        self.restart_after, self.on_drop = restart_after, on_drop
+        self.shift = 0.0  # added to a returning host's times
         self.selector = selectors.DefaultSelector()
         self.selector.register(sock, selectors.EVENT_READ)
         self.dropped: Counter = Counter()
@@ -152,19 +173,25 @@ class _Inbox:
         try:
             message = protocol.unpack(data)
         except protocol.ProtocolError as exc:
-            self.dropped[str(exc).split(":")[0]] += 1
-            return
+            return self._drop(str(exc).split(":")[0])
         if not isinstance(message, protocol.Motion):
-            self.dropped["not a motion message"] += 1
-        elif message.channels != self.channels:
-            self.dropped[f"{message.channels} channels, the session takes {self.channels}"] += 1
-        elif self.newest is not None and (message.sequence <= self.newest.sequence or message.time <= self.newest.time):
-            self.dropped["out of order or repeated"] += 1
-        else:
-            self.newest, self.arrived, self.fresh = message, arrived, True
-            self.t.append(message.time)
-            self.values.append(message.values)
-            self.arrivals.append(arrived)
+            return self._drop("not a motion message")
+        if message.channels != self.channels:
+            return self._drop(f"{message.channels} channels, the session takes {self.channels} (--channels)")
+        if self.newest is not None and (message.sequence <= self.newest.sequence
+                                        or message.time + self.shift <= self.t[-1]):
+            if arrived - self.arrived <= self.restart_after:
+                return self._drop("out of order or repeated")
+            self.shift = self.t[-1] + (arrived - self.arrived) - message.time  # the host is back, restarted
+        self.newest, self.arrived, self.fresh = message, arrived, True
+        self.t.append(message.time + self.shift)
+        self.values.append(message.values)
+        self.arrivals.append(arrived)
+
+    def _drop(self, reason: str) -> None:
+        self.dropped[reason] += 1
+        if self.dropped[reason] == 1 and self.on_drop is not None:
+            self.on_drop(reason)
 
     def recent(self, seconds: float) -> tuple[np.ndarray, np.ndarray]:
         """(t, values) of the motion of the last ``seconds`` (host time)."""
@@ -200,11 +227,13 @@ class _Preview:
         return self.predict(self.model.config.cue_path(path), float(t[-1]), self.horizon)
 
 
-def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=time.monotonic, ready=None) -> Served:
+def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=time.monotonic, ready=None,
+          on_drop=None) -> Served:
     """Run a session (see the module's docstring) until ``serving.duration``, ``serving.quiet_end`` or
     a stop signal; returns what it did. The controller's options are ``options.mpc`` (a plan every
     step: the session's step is the cycle); its predictor ``options.predictor``
-    (:data:`desdemona.predictors.LIVE`). ``ready()``, if given, is called once the service listens."""
+    (:data:`desdemona.predictors.LIVE`). ``ready()``, if given, is called once the service listens;
+    ``on_drop(reason)`` the first time a datagram is dropped for a reason."""
     mpc = options.mpc
     if options.predictor not in LIVE:
         raise ValueError(f"predictor {options.predictor!r}: a live session uses one of {', '.join(LIVE)}")
@@ -225,7 +254,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
         inbound.setblocking(False)
         if ready is not None:
             ready()
-        inbox = _Inbox(inbound, channels, clock)
+        inbox = _Inbox(inbound, channels, clock, serving.timeout * h, on_drop)
         session = _Session(model, controller, h, guard_use)
         start = clock()
         k = 0
@@ -395,14 +424,31 @@ def stopping_time(qd, a, A, J) -> np.ndarray:
 
 
 def result(served: Served, model: Model, options: OnlineOptions) -> OnlineResult:
-    """The session judged as an on-line run (:func:`desdemona.online.judge`) against the motion the
-    host sent; :class:`~desdemona.simulate.LimitViolation` if the machine's motion broke a limit."""
-    return judge(served.path(model), model, options, served.loop, served.deadline)
+    """The session judged as an on-line run (:func:`desdemona.online.judge`) over the span it followed
+    the host (:meth:`Served.judged`), against the motion the host sent, with the classical loop run
+    beside it over the same span from the same state; :class:`~desdemona.simulate.LimitViolation` if
+    the machine's motion broke a limit."""
+    path, loop = served.judged(model)
+    return judge(path, model, options, loop, served.deadline)
+
+
+def session_table(served: Served) -> str:
+    """``session.csv``: every cycle of the session, on its clock (also before the host came and after
+    it had gone): its time, status, command, the host message's age, the latency and the compute time
+    [s], and the reason of a fallback."""
+    columns, loop = served.columns, served.loop
+    lines = ["t,status,command,message_age_s,latency_s,compute_time_s,reason"]
+    for k, t in enumerate(loop.cycle_times):
+        lines.append(f"{t:.6g},{columns['status'][k]},{columns['command'][k]},{columns['message_age_s'][k]:.6g},"
+                     f"{columns['latency_s'][k]:.6g},{loop.compute_times[k]:.6g},\"{loop.reasons[k]}\"")
+    return "\n".join(lines) + "\n"
 
 
 def summary(served: Served, serving: ServeOptions) -> dict:
     """The ``service`` entry of the session's ``summary.json``: addresses, counts of cycles by status and
-    command, datagrams dropped by reason, and the times that matter for real time [s]."""
+    command, datagrams dropped by reason, and the times that matter for real time [s], all over the
+    whole session; the span it is judged on (``judged_span_s``, on the session's clock) and the
+    judged result's time of the host's time 0 (``host_time_offset_s``)."""
     columns, times = served.columns, served.loop.compute_times
     latency, age = columns["latency_s"], columns["message_age_s"]
 
@@ -418,7 +464,8 @@ def summary(served: Served, serving: ServeOptions) -> dict:
             "dropped": dict(served.dropped), "received": int(len(served.received_t)),
             "latency_s": spread(latency), "message_age_s": spread(age),
             "compute_over_deadline": int(np.sum(times > served.deadline)),
-            "host_time_offset_s": served.offset,
+            "judged_span_s": [float(served.loop.plan.t_nodes[k]) for k in served.span()],
+            "host_time_offset_s": served.offset - float(served.loop.plan.t_nodes[served.span()[0]]),
             "stopped_by": None if served.stopped_by is None else signal.Signals(served.stopped_by).name}
 
 
