@@ -291,3 +291,37 @@ def test_a_host_restarted_after_the_timeout_is_taken_back():
     parked = statuses.index("parking")
     assert "running" in statuses[parked:] and not served.dropped
     assert np.all(np.diff(served.received_t) > 0) and len(served.received_t) == len(first) + len(again)
+
+
+def test_the_readme_s_three_commands_together(tmp_path):
+    """machine, serve and host replay as three processes, as the README runs them: the stand-in checks
+    every setpoint and passes, the session is written and judged, and each command says what it did."""
+    machine_port, serve_port = _free_port(), _free_port()
+    short = tmp_path / "short.csv"
+    path = profiles.get_profile("dfs-catapult")
+    keep = path.t <= 2.0
+    profiles.write_csv(short, profiles.DesiredPath("short", path.t[keep], None, modulus=path.M_d[keep]))
+    run = [sys.executable, "-m", "desdemona"]
+    stand_in = subprocess.Popen([*run, "machine", "--config", "dfs", "--listen", f"{LOOPBACK}:{machine_port}",
+                                 "--out", str(tmp_path / "machine-log"), "--idle", "2", "--duration", "30"],
+                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    server = subprocess.Popen([*run, "serve", "--config", "dfs", "--listen", f"{LOOPBACK}:{serve_port}",
+                               "--send", f"{LOOPBACK}:{machine_port}", "--out", str(tmp_path / "session"),
+                               "--horizon", "1", "--quiet-end", "0.5", "--duration", "30", "--no-view"],
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert "serving dfs at 50 Hz" in server.stderr.readline()
+        host = subprocess.run([*run, "host", "replay", str(short), "--to", f"{LOOPBACK}:{serve_port}"],
+                              capture_output=True, text=True, timeout=30)
+        served, _ = server.communicate(timeout=30)
+        checked, _ = stand_in.communicate(timeout=30)
+    finally:
+        for proc in (stand_in, server):
+            if proc.poll() is None:
+                proc.kill()
+    assert host.returncode == 0 and f"sent {keep.sum()} messages" in host.stdout
+    assert server.returncode == 0 and "served" in served and "written to" in served
+    assert stand_in.returncode == 0 and "PASSED" in checked, checked
+    summary = json.loads((tmp_path / "session" / "summary.json").read_text())
+    assert summary["service"]["received"] == keep.sum() and summary["metrics"]["limits_kept"]
+    assert json.loads((tmp_path / "machine-log" / "summary.json").read_text())["received"] > 50
