@@ -33,7 +33,7 @@ from desdemona.model import Model
 from desdemona.perception import VestibularModel
 from desdemona.plan import Plan, State, advance
 from desdemona.problem import ProblemOptions
-from desdemona.profiles import ALIGNED_WEIGHTS, DesiredPath, vertical_force
+from desdemona.profiles import ALIGNED_WEIGHTS, G, DesiredPath, vertical_force
 from desdemona.simulate import TOLERANCE
 from desdemona.transcription import CueingProblem, RealTimeIteration
 
@@ -191,6 +191,20 @@ class _Solved(NamedTuple):
     cost: float | None
 
 
+def at_least_g(values) -> np.ndarray:
+    """A modulus (K,) at least G, or the force of S (K, 6) at least G long, in its direction (straight
+    up where it is zero); NaN stays NaN."""
+    values = np.array(values, dtype=float)
+    if values.ndim == 1:
+        return np.where(values < G, G, values)
+    f = values[:, 3:]
+    size = np.linalg.norm(f, axis=1)
+    weak = size < G
+    up = np.tile([0.0, 0.0, 1.0], (int(weak.sum()), 1))
+    f[weak] = np.where(size[weak, None] > 0, f[weak] * (G / np.where(size[weak] > 0, size[weak], 1.0))[:, None], G * up)
+    return values
+
+
 class MPC:
     """The model predictive cueing controller, built once for a model and options, then stepped."""
 
@@ -321,14 +335,25 @@ class MPC:
         self.z_d = self._z_d_next
 
     def _preview_arrays(self, preview):
+        """(t, values) of a preview, as the problem takes them: S_d, or the modulus M_d on a modulus
+        configuration, a modulus turned into the force along the occupant's vertical on one whose cabin
+        follows the force.
+
+        On those configurations (``dfs``, ``dfs-yaw``: no heave, the head at the gimbals' centre) the
+        felt force is never weaker than g, and a desired force below g is planned for as g in its
+        direction, the nearest the machine can do: chased as it is, one QP per cycle linearised at the
+        last plan meets residuals its Gauss-Newton model does not see and turned the cabin over
+        ("Modulus below g on-line"). The run is judged against the path as it is."""
         if isinstance(preview, DesiredPath):
             preview = self.model.config.cue_path(preview)
-            values = preview.M_d if self.model.config.modulus_cost else preview.S_d
-            return preview.t, values
-        t, values = preview
-        values = None if values is None else np.asarray(values, dtype=float)
-        if values is not None and values.ndim == 1 and self.model.config.aligned:
-            values = vertical_force(values)  # a modulus, for a cabin that follows the force
+            t, values = preview.t, preview.M_d if self.model.config.modulus_cost else preview.S_d
+        else:
+            t, values = preview
+            values = None if values is None else np.asarray(values, dtype=float)
+            if values is not None and values.ndim == 1 and self.model.config.aligned:
+                values = vertical_force(values)  # a modulus, for a cabin that follows the force
+        if values is not None and self.model.config.takes_modulus:
+            values = at_least_g(values)
         return np.asarray(t, dtype=float), values
 
     def _preview_problem(self, t, values) -> str:
