@@ -165,16 +165,22 @@ def test_bad_datagrams_are_dropped_and_counted_never_used():
     assert any("channels" in reason for reason in served.dropped)
 
 
-@pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
-def test_sigint_parks_the_machine_writes_the_session_and_exits_130(tmp_path):
+def _serve_process(tmp_path):
+    """``desdemona serve`` on dfs as its own process, a stand-in receiving, once the service listens."""
     port, out = _free_port(), tmp_path / "served"
     stand_in = _Machine(20.0)
     proc = subprocess.Popen([sys.executable, "-m", "desdemona", "serve", "--config", "dfs", "--listen",
                              f"{LOOPBACK}:{port}", "--send", f"{LOOPBACK}:{stand_in.address[1]}", "--out", str(out),
                              "--horizon", "1", "--duration", "15", "--no-view"],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    assert "serving dfs at 50 Hz" in proc.stderr.readline()  # the service is up
+    return port, out, stand_in, proc
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
+def test_sigint_parks_the_machine_writes_the_session_and_exits_130(tmp_path):
+    port, out, stand_in, proc = _serve_process(tmp_path)
     try:
-        assert "serving dfs at 50 Hz" in proc.stderr.readline()  # the service is up
         path = profiles.get_profile("dfs-catapult")
         data, at = _motion(path, 6.0, delay=0.0)
         host = _send(port, data, at)
@@ -227,14 +233,8 @@ def test_parking_stops_each_joint_as_quickly_as_its_limits_allow():
 def test_a_second_sigint_stops_at_once_after_one_braking_command(tmp_path):
     """The first Ctrl-C starts parking the spinning machine; a second one ends the service after one
     more braking command, long before the machine could be at rest."""
-    port, out = _free_port(), tmp_path / "served"
-    stand_in = _Machine(20.0)
-    proc = subprocess.Popen([sys.executable, "-m", "desdemona", "serve", "--config", "dfs", "--listen",
-                             f"{LOOPBACK}:{port}", "--send", f"{LOOPBACK}:{stand_in.address[1]}", "--out", str(out),
-                             "--horizon", "1", "--duration", "15", "--no-view"],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    port, out, stand_in, proc = _serve_process(tmp_path)
     try:
-        assert "serving dfs at 50 Hz" in proc.stderr.readline()
         data, at = _motion(profiles.get_profile("dfs-catapult"), 8.0, delay=0.0)
         host = _send(port, data, at)
         deadline = time.monotonic() + 10
