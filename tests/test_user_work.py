@@ -331,3 +331,21 @@ def test_profiles_writes_a_builtin_path_to_csv(tmp_path, capsys):
     assert main(["profiles", "catapult", "--csv", str(target), "--overwrite"]) == 0
     assert main(["profiles", "nope", "--csv", str(tmp_path / "x.csv")]) == 2
     assert main(["profiles"]) == 0 and "catapult" in capsys.readouterr().out
+
+
+def test_a_stop_raised_while_a_class_is_created_is_still_a_stop(monkeypatch, capsys):
+    """A Ctrl-C that lands while a module defines a dataclass reaches the command as a RuntimeError
+    caused by the interrupt (Python wraps what a field's __set_name__ raises): it is reported as the
+    interrupt it is, exit 130 and one line, not a traceback."""
+    from desdemona import guard
+    from desdemona.cli import commands
+
+    def loading(args):
+        try:
+            raise guard.Interrupted(signal.SIGINT)
+        except guard.Interrupted as exc:
+            raise RuntimeError("Error calling __set_name__ on 'Field' instance") from exc
+
+    monkeypatch.setattr(commands, "run_model", loading)
+    assert main(["model", "--config", "dfs"]) == 130
+    assert "interrupted (SIGINT)" in capsys.readouterr().err

@@ -58,3 +58,14 @@ def main(argv: list[str] | None = None) -> int:
         end_bar = "\n" if sys.stderr.isatty() else ""  # a progress bar may be half drawn
         print(f"{end_bar}desdemona: {exc.message}", file=sys.stderr)
         return exc.code
+    except RuntimeError as exc:
+        # a stop that came while a module was being loaded: Python reports an exception raised inside
+        # a class's creation (a dataclass field's __set_name__) as a RuntimeError caused by it
+        stop = exc.__cause__
+        if isinstance(stop, guard.Interrupted):
+            print(f"desdemona: {stop.message}", file=sys.stderr)
+            return stop.code
+        if isinstance(stop, KeyboardInterrupt):
+            print(f"desdemona: {guard.Interrupted(signal.SIGINT).message}", file=sys.stderr)
+            return 128 + signal.SIGINT
+        raise
