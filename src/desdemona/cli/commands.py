@@ -62,15 +62,21 @@ def _claim_out(args) -> Path:
 
 def _run_inputs(args):
     """The machine, the desired path and the output folder of a run, each checked before any work."""
-    from desdemona import report
-
     model = _machine(args)
     path = profiles.load(args.profile)
+    return model, path, _result_folder(args)
+
+
+def _result_folder(args) -> Path:
+    """``args.out``, held for this run (:func:`_claim_out`), refused where it exists unless
+    ``--overwrite`` and it is an earlier result that holds none of the run's inputs."""
+    from desdemona import report
+
     out = _claim_out(args)
     if out.exists() and not args.overwrite:
         raise UserError(f"{out}: already exists; choose another folder or add --overwrite")
     report.check_replaceable(out, protect=_inputs(args))
-    return model, path, out
+    return out
 
 
 def run_optimize(args) -> int:
@@ -359,11 +365,8 @@ def run_serve(args) -> int:
     from desdemona.service import protocol, serve
 
     model = _machine(args)
-    out = _claim_out(args)
-    if out.exists() and not args.overwrite:
-        raise UserError(f"{out}: already exists; choose another folder or add --overwrite")
-    report.check_replaceable(out, protect=_inputs(args))
-    channels = args.channels or (1 if model.config.takes_modulus else 6)
+    out = _result_folder(args)
+    channels = args.channels or serve.default_channels(model.config)
     try:
         listen, send = protocol.address(args.listen, "--listen"), protocol.address(args.send, "--send")
         serving = serve.ServeOptions(listen=listen, send=send,

@@ -54,6 +54,18 @@ from desdemona.simulate import TOLERANCE, ClosedLoop
 SOURCE_NAMES = {"mpc": "plan", "shifted": "previous plan", "brake": "brake"}
 
 
+def default_channels(config) -> int:
+    """What a host sends by default: the modulus (1) on the configurations that take it, else S (6)."""
+    return 1 if config.takes_modulus else 6
+
+
+def _host_path(t, values, description: str = "") -> DesiredPath:
+    """Motion received from the host, (K,) times and (K, 1) moduli or (K, 6) S, as a desired path."""
+    if values.shape[1] == 1:
+        return DesiredPath("host", t, None, description=description, modulus=values[:, 0])
+    return DesiredPath("host", t, values, description=description)
+
+
 @dataclass(frozen=True)
 class ServeOptions:
     """listen, send : (host, port) of the host's messages and of the machine; channels : what the host
@@ -121,12 +133,7 @@ class Served:
         t, values = self.received_t - t0, self.received
         if t[0] > 0.0:
             t, values = np.r_[0.0, t], np.vstack([values[:1], values])
-        if values.shape[1] == 1:
-            path = model.config.cue_path(DesiredPath("host", t, None, modulus=values[:, 0],
-                                                     description="received from the host"))
-        else:
-            path = DesiredPath("host", t, values, description="received from the host")
-        return path, loop
+        return model.config.cue_path(_host_path(t, values, "received from the host")), loop
 
 
 class _Inbox:
@@ -222,9 +229,7 @@ class _Preview:
         if len(t) < 2:  # one sample: held
             held = np.repeat(values[:1], 2, axis=0)
             return np.array([0.0, self.horizon]), held[:, 0] if held.shape[1] == 1 else held
-        path = DesiredPath("host", t, values if values.shape[1] == 6 else None,
-                           modulus=values[:, 0] if values.shape[1] == 1 else None)
-        return self.predict(self.model.config.cue_path(path), float(t[-1]), self.horizon)
+        return self.predict(self.model.config.cue_path(_host_path(t, values)), float(t[-1]), self.horizon)
 
 
 def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=time.monotonic, ready=None,
@@ -241,7 +246,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
         raise ValueError("a live session plans every cycle: no --replan")
     h = mpc.step
     controller = MPC(model, mpc, weights=mpc.weights)
-    channels = serving.channels or (1 if model.config.takes_modulus else 6)
+    channels = serving.channels or default_channels(model.config)
     if channels == 1 and not model.config.takes_modulus:
         raise ValueError(f"configuration {model.config.name!r} needs the six channels of S, not the modulus")
     preview = _Preview(options.predictor, model, mpc.horizon, options.reference, serving.history)
