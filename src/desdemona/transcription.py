@@ -53,6 +53,14 @@ RTI_COMPILE_WORK = 300_000
 # double pulse 23 against 31, triple pulse 34 against 45, car lap on yaw-track-cabin 39 against 41;
 # the cosine on full 17 against 16.
 MUMPS_ORDERING = 6
+
+#: With ``ProblemOptions.gauss_newton_first``: the Gauss-Newton phase stops at this tolerance or after
+#: this many iterations, and the exact phase starts from there with IPOPT's warm start
+#: ("Gauss-Newton first" in docs/benchmarks.md).
+GAUSS_NEWTON_TOL, GAUSS_NEWTON_ITER = 1e-3, 100
+WARM_START = {"warm_start_init_point": "yes", "mu_init": 1e-6, "warm_start_bound_push": 1e-9,
+              "warm_start_bound_frac": 1e-9, "warm_start_slack_bound_push": 1e-9,
+              "warm_start_slack_bound_frac": 1e-9, "warm_start_mult_bound_push": 1e-9}
 # fatrop reports a number (its FatropAlg::optimize return code, CasADi 3.7); the words IPOPT uses for it.
 FATROP_STATUS = {0: "Solve_Succeeded", 1: "Maximum_Iterations_Exceeded"}
 
@@ -140,6 +148,7 @@ class CueingProblem(Formulation):
         initial = self._initial_constraint()(X[:, 0], U[:, 0])
         self.n_initial = initial.numel()
         self.expanded = self._expand()
+        self.gauss_newton_first = self.gauss_newton_first and not self.expanded  # a flat graph: exact
         stage = self._stage_derivatives()
         self.compiled = self._compile(stage)
         # f and g on two threads too, unless the graph is flattened (on-line and small problems)
@@ -184,14 +193,15 @@ class CueingProblem(Formulation):
         wanted = self.options.compile
         if self.expanded or self.parametric or self.options.solver != "ipopt" or wanted is False:
             return False  # a flat graph cannot hold compiled code; on-line problems are flattened too
-        functions = [stage[k] for k in COMPILED]
+        keys = [k for k in (*COMPILED, "hess_gn") if k in stage]
+        functions = [stage[k] for k in keys]
         if wanted is None and self.N * stage["jac"].n_instructions() < COMPILE_WORK \
                 and not compiled.is_cached(functions):
             return False
         functions = compiled.compiled(functions)
         if functions is None:
             return False
-        stage.update(zip(COMPILED, functions))
+        stage.update(zip(keys, functions))
         return True
 
     def _stage_derivatives(self) -> dict[str, ca.Function]:
@@ -209,17 +219,23 @@ class CueingProblem(Formulation):
         # the position families lead each stage's g, the torque and power limits follow
         curved = g.numel() if self.limit_curvature else sum(
             f.expression.numel() for f in self.families if f.name in ("position", "stopping"))
-        lagrangian = sigma * L - ca.dot(l_gap, x_next) + ca.dot(l_path[:curved], g[:curved])
-        H = ca.triu(ca.hessian(lagrangian, xu)[0])
-        H0 = ca.triu(ca.hessian(lagrangian + ca.dot(l_init, init), xu)[0])
+        gaps, limits = -ca.dot(l_gap, x_next), ca.dot(l_path[:curved], g[:curved])
         J = ca.jacobian(ca.vertcat(-x_next, g), xu)
         J0 = ca.jacobian(ca.vertcat(-x_next, init, g), xu)
-        hess = ca.Function("stage_hess", [x, u, d, sigma, l_gap, l_path], [H])
-        hess0 = ca.Function("stage_hess0", [x, u, d, sigma, l_gap, l_init, l_path], [H0])
-        jac = ca.Function("stage_jac", [x, u, d], [J])
-        jac0 = ca.Function("stage_jac0", [x, u, d], [J0])
-        grad = ca.Function("stage_grad", [x, u, d], [L, ca.gradient(L, xu)])
-        return {"stage": self.stage, "hess": hess, "hess0": hess0, "jac": jac, "jac0": jac0, "grad": grad}
+        functions = {"stage": self.stage, "jac": ca.Function("stage_jac", [x, u, d], [J]),
+                     "jac0": ca.Function("stage_jac0", [x, u, d], [J0]),
+                     "grad": ca.Function("stage_grad", [x, u, d], [L, ca.gradient(L, xu)])}
+        # per Hessian: (a term given as a matrix, the rest of the Lagrangian, differentiated)
+        hessians = {"hess": (None, sigma * L + gaps + limits)}
+        if self.gauss_newton_first:  # the cost is sum(r^2): 2 J_r^T J_r, without the residuals' curvature
+            J_r = ca.jacobian(self.residual(x, u, d), xu)
+            hessians["hess_gn"] = (2 * sigma * ca.mtimes(J_r.T, J_r), gaps + limits)
+        for key, (given, rest) in hessians.items():
+            H, H0 = (ca.hessian(e, xu)[0] for e in (rest, rest + ca.dot(l_init, init)))
+            H, H0 = (ca.triu(M if given is None else given + M) for M in (H, H0))
+            functions[key] = ca.Function(f"stage_{key}", [x, u, d, sigma, l_gap, l_path], [H])
+            functions[key + "0"] = ca.Function(f"stage_{key}0", [x, u, d, sigma, l_gap, l_init, l_path], [H0])
+        return functions
 
     def _derivative_functions(self, w, XU, data, stage: dict[str, ca.Function]) -> dict[str, ca.Function]:
         """Exact Jacobian of the constraints and Hessian of the Lagrangian, assembled from stages.
@@ -229,26 +245,15 @@ class CueingProblem(Formulation):
         mapping the result over the horizon is three to four times faster to evaluate than
         differentiating through the mapped stage (measured on the full configuration).
         """
-        N, nx, nw, ni = self.N, self.nx, self.nx + self.nu, self.n_initial
-        hess, hess0, jac, jac0, grad = (stage[k] for k in ("hess", "hess0", "jac", "jac0", "grad"))
-
-        lam_f, lam_g = ca.MX.sym("lam_f"), ca.MX.sym("lam_g", self.nlp["g"].numel())
-        npath = self.n_path
+        N, nx, nw, ni, npath = self.N, self.nx, self.nx + self.nu, self.n_initial, self.n_path
+        jac, jac0, grad = (stage[k] for k in ("jac", "jac0", "grad"))
         X, U = XU[:nx, :], XU[nx:, :]
-        l0 = lam_g[: nx + ni + npath]
-        h_blocks = [hess0(X[:, 0], U[:, 0], data[:, 0], lam_f, l0[:nx], l0[nx:nx + ni], l0[nx + ni:])]
         j_blocks = [jac0(X[:, 0], U[:, 0], data[:, 0])]
         if N > 1:
-            rest = ca.reshape(lam_g[nx + ni + npath: lam_g.numel() - self.n_terminal], nx + npath, N - 1)
-            hm = hess.map(N - 1, MAP_MODE, MAP_THREADS)(X[:, 1:], U[:, 1:], data[:, 1:], ca.repmat(lam_f, 1, N - 1),
-                                           rest[:nx, :], rest[nx:, :])
             jm = jac.map(N - 1, MAP_MODE, MAP_THREADS)(X[:, 1:], U[:, 1:], data[:, 1:])
-            h_blocks += [hm[:, k * nw:(k + 1) * nw] for k in range(N - 1)]
             j_blocks += [jm[:, k * nw:(k + 1) * nw] for k in range(N - 1)]
-        end, l_end = w[N * nw:], lam_g[lam_g.numel() - self.n_terminal:]
+        end = w[N * nw:]
         terminal = self._terminal_derivatives()
-        h_blocks.append(terminal["hess"](end, lam_f, l_end) if terminal else ca.MX(nx, nx))
-        hessian = ca.diagcat(*h_blocks)
         # the +I of x_{k+1} in the gap rows of stage k
         row0 = np.r_[0, nx + ni + npath + (nx + npath) * np.arange(N - 1)]
         rows = (row0[:, None] + np.arange(nx)[None, :]).ravel()
@@ -263,12 +268,33 @@ class CueingProblem(Formulation):
             L_end, grad_end = terminal["grad"](end)
             f += L_end
         gradient = ca.densify(ca.vertcat(ca.vec(grad_all), grad_end))
+        if self.gauss_newton_first:
+            self.gauss_newton_hessian = self._lagrangian_hessian(w, XU, data, stage["hess_gn"], stage["hess_gn0"],
+                                                                 terminal)
         return {
             "grad_f": ca.Function("nlp_grad_f", [w, p], [f, gradient], ["x", "p"], ["f", "grad_f_x"]),
-            "hess_lag": ca.Function("nlp_hess_l", [w, p, lam_f, lam_g], [hessian],
-                                    ["x", "p", "lam_f", "lam_g"], ["hess_gamma_x_x"]),
+            "hess_lag": self._lagrangian_hessian(w, XU, data, stage["hess"], stage["hess0"], terminal),
             "jac_g": ca.Function("nlp_jac_g", [w, p], [self.nlp["g"], jacobian], ["x", "p"], ["g", "jac_g_x"]),
         }
+
+    def _lagrangian_hessian(self, w, XU, data, hess, hess0, terminal) -> ca.Function:
+        """IPOPT's Hessian of the Lagrangian, block diagonal in stage order: the first stage's
+        ``hess0``, the others' ``hess`` mapped, the terminal stage's."""
+        N, nx, nw, ni, npath = self.N, self.nx, self.nx + self.nu, self.n_initial, self.n_path
+        lam_f, lam_g = ca.MX.sym("lam_f"), ca.MX.sym("lam_g", self.nlp["g"].numel())
+        X, U = XU[:nx, :], XU[nx:, :]
+        l0 = lam_g[: nx + ni + npath]
+        blocks = [hess0(X[:, 0], U[:, 0], data[:, 0], lam_f, l0[:nx], l0[nx:nx + ni], l0[nx + ni:])]
+        if N > 1:
+            rest = ca.reshape(lam_g[nx + ni + npath: lam_g.numel() - self.n_terminal], nx + npath, N - 1)
+            hm = hess.map(N - 1, MAP_MODE, MAP_THREADS)(X[:, 1:], U[:, 1:], data[:, 1:], ca.repmat(lam_f, 1, N - 1),
+                                           rest[:nx, :], rest[nx:, :])
+            blocks += [hm[:, k * nw:(k + 1) * nw] for k in range(N - 1)]
+        l_end = lam_g[lam_g.numel() - self.n_terminal:]
+        blocks.append(terminal["hess"](w[N * nw:], lam_f, l_end) if terminal else ca.MX(nx, nx))
+        p = ca.vec(data) if self.parametric else ca.MX(0, 1)
+        return ca.Function("nlp_hess_l", [w, p, lam_f, lam_g], [ca.diagcat(*blocks)],
+                           ["x", "p", "lam_f", "lam_g"], ["hess_gamma_x_x"])
 
     def _terminal_derivatives(self) -> dict[str, ca.Function] | None:
         """Hessian block (of the cost, and of the limits with ``limit_curvature``), Jacobian and
@@ -306,6 +332,11 @@ class CueingProblem(Formulation):
             # the cabin follows the force from home, level: the gimbals' start is not free (three
             # angles give the same level cabin, some near gimbal lock), and so is the arm's, by symmetry
             lbx[:n] = ubx[:n] = 0.0
+        elif o.initial in ("rest", "free") and self._arm_symmetric():
+            # Nothing depends on the arm's angle (gravity is along its axis), so a free start of it
+            # is a flat direction of the whole problem: IPOPT drifted it to 1e13 rad on real data,
+            # where round-off alone left the gaps unsatisfiable and the solve stalled.
+            lbx[0] = ubx[0] = 0.0
         if o.initial == "given":
             q0, qd0 = start_state(o.initial_state, n)
             lbx[:n] = ubx[:n] = q0
@@ -348,6 +379,13 @@ class CueingProblem(Formulation):
         return (np.r_[rows_lo[0][:nx], initial, rows_lo[0][nx:], *rows_lo[1:], -terminal],
                 np.r_[rows_hi[0][:nx], initial, rows_hi[0][nx:], *rows_hi[1:], terminal])
 
+    def _arm_symmetric(self) -> bool:
+        """Whether the arm (q1) is free and without position limits: then the problem is the same
+        whatever its angle, and the start fixes it at 0."""
+        config, lim = self.model.config, self.model.limits
+        return bool(config.free and config.free[0] == 0 and not np.isfinite(lim.position_min[0])
+                    and not np.isfinite(lim.position_max[0]))
+
     def bounds_from(self, q0) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """(lbx, ubx, lbg, ubg) for a plan that starts at the positions q0 (n,).
 
@@ -387,20 +425,31 @@ class CueingProblem(Formulation):
     def _solver(self) -> ca.Function:
         o = self.options
         if o.solver == "ipopt":
-            opts = {"ipopt": {"print_level": 0, "max_iter": o.max_iter, "tol": o.tol,
-                              "sb": "yes", "mu_strategy": "adaptive",
-                              "linear_solver": "mumps", "mumps_pivot_order": MUMPS_ORDERING},
-                    "print_time": False, "expand": self.expanded}
-            if not self.expanded:  # a flat graph differentiates well by itself
-                opts.update(self.derivatives)
             if not self.parametric:  # off-line solves are long: stoppable by Ctrl-C, and reported on
                 self.monitor = guard.SolveMonitor(self.nlp["x"].numel(), self.nlp["g"].numel())
-                opts["iteration_callback"] = self.monitor
-            return ca.nlpsol("cueing", "ipopt", self.nlp, opts)
+            if self.gauss_newton_first:
+                self.first_solver = self._ipopt({"tol": GAUSS_NEWTON_TOL, "max_iter": GAUSS_NEWTON_ITER},
+                                                hess_lag=self.gauss_newton_hessian)
+                return self._ipopt(WARM_START)
+            return self._ipopt({})
         opts = {"structure_detection": "auto", "equality": self.equality, "print_time": False,
                 "expand": self.expanded,
                 "fatrop": {"print_level": 0, "max_iter": o.max_iter, "tol": o.tol}}
         return ca.nlpsol("cueing", "fatrop", self.nlp, opts)
+
+    def _ipopt(self, settings: dict, **derivatives) -> ca.Function:
+        """An IPOPT solver of the NLP with the stage-assembled derivatives (``derivatives`` replacing
+        some) and ``settings`` over the defaults."""
+        o = self.options
+        opts = {"ipopt": {"print_level": 0, "max_iter": o.max_iter, "tol": o.tol,
+                          "sb": "yes", "mu_strategy": "adaptive",
+                          "linear_solver": "mumps", "mumps_pivot_order": MUMPS_ORDERING, **settings},
+                "print_time": False, "expand": self.expanded}
+        if not self.expanded:  # a flat graph differentiates well by itself
+            opts.update(self.derivatives, **derivatives)
+        if self.monitor is not None:
+            opts["iteration_callback"] = self.monitor
+        return ca.nlpsol("cueing", "ipopt", self.nlp, opts)
 
     # ------------------------------------------------------------------------------------------
 
@@ -446,8 +495,12 @@ class CueingProblem(Formulation):
                 "lbg": self.lbg, "ubg": self.ubg}
         if warm is not None and warm.lam_g is not None and self.options.solver == "ipopt":
             args.update(lam_g0=warm.lam_g, lam_x0=warm.lam_x)
-        start = time.perf_counter()
+        start, iterations = time.perf_counter(), 0
         with guard.solving(self.monitor):  # raises guard.Interrupted after a stop was asked for
+            if self.gauss_newton_first:
+                first = self.first_solver(**args)
+                iterations = int(self.first_solver.stats()["iter_count"])
+                args.update(x0=first["x"], lam_g0=first["lam_g"], lam_x0=first["lam_x"])
             sol = self.solver(**args)
         elapsed = time.perf_counter() - start
         stats = self.solver.stats()
@@ -456,7 +509,7 @@ class CueingProblem(Formulation):
         if isinstance(status, int):
             status = FATROP_STATUS.get(status, f"fatrop_return_code_{status}")
         return Solution(t_nodes=self.t_nodes.copy(), x=x, u=u, cost=float(sol["f"]), status=status,
-                        success=bool(stats["success"]), iterations=int(stats.get("iter_count", -1)),
+                        success=bool(stats["success"]), iterations=iterations + int(stats.get("iter_count", -1)),
                         solve_time=elapsed, lam_g=np.asarray(sol["lam_g"]).ravel(),
                         lam_x=np.asarray(sol["lam_x"]).ravel(), smooth=self.smooth)
 
