@@ -2,14 +2,18 @@
 
     python benchmarks/real.py                          # build the corpus if missing, run every job, write the table
     python benchmarks/real.py --cases f16-turn --configs dfs --modes offline hold
+    python benchmarks/real.py --cases c172-doublet --modes hold perfect forecast --no-docs
     python benchmarks/real.py --table-only             # re-read the result folders, rewrite the table
     python benchmarks/real.py --dask tcp://scheduler:8786   # the jobs on a Dask cluster
 
 The corpus (``benchmarks/corpus.py``) holds flights from JSBSim's shipped scripts and aircraft, each
 in the six-channel form (``t,wx,wy,wz,fx,fy,fz``) and the modulus form (``t,M``). A six-channel case
 runs on ``yaw-track-cabin`` and ``full``, a modulus case on ``dfs``; each off-line (``desdemona
-optimize`` with its defaults) and on-line (``desdemona online --predictor hold`` and ``perfect``, the
-command's defaults otherwise). Every job is the command a user would type, run as its own process
+optimize`` with its defaults) and on-line (``desdemona online --predictor hold``, ``perfect`` and
+``forecast``, the command's defaults otherwise). ``forecast`` reads the aircraft's own forecasts
+(``NAME.forecast.csv``: every 0.1 s its model run 4 s ahead with the pilot's controls held, made with
+the corpus by ``corpus.py --forecasts`` where a case's are missing). Every job is the command a user
+would type, run as its own process
 (so its peak memory is its own: ``ru_maxrss`` of the process; ``--no-view``: the page is not
 timed), stopped with SIGINT after
 ``--timeout`` seconds; the jobs go through :func:`desdemona.batch.map_jobs` (local processes, or a
@@ -27,7 +31,10 @@ what the occupant feels, read from the result's ``summary.json`` ("quality"):
   reversals per second of the worst joint (swings across 5 % of its peak);
 - on-line rows: the p99 compute time per cycle [ms] and the deadlines missed; and the classical
   loop's felt force RMS, correlation, felt direction peak and felt rotation peak from the same run
-  (it reads only the present sample, as ``hold``), with MPC / classical for the felt force.
+  (it reads only the present sample, as ``hold``), with MPC / classical for the felt force;
+- on ``forecast`` rows, the share of the gap between ``hold`` and ``perfect`` that the forecast
+  closes: (hold - forecast) / (hold - perfect) of the felt force RMS ("-" where the gap is under
+  :data:`GAP` of hold's, or a row is missing).
 
 The machine's load average is recorded before and after the run.
 """
@@ -57,18 +64,27 @@ DOCS = HERE.parent / "docs" / "benchmarks.md"
 BEGIN, END = "<!-- real.py table: begin -->", "<!-- real.py table: end -->"
 
 CONFIGS = {"six": ("yaw-track-cabin", "full"), "modulus": ("dfs",)}
-MODES = ("offline", "hold", "perfect")
+MODES = ("offline", "hold", "perfect", "forecast")
+#: The smallest gap between hold and perfect, relative to hold's felt force RMS, for a "forecast closes".
+GAP = 0.02
 FORCE = ("fx", "fy", "fz")
 
 
-def corpus_cases(folder: Path, build: bool = True) -> list[dict]:
-    """The corpus index: one entry per file (name, file, form "six" or "modulus", duration_s, source),
-    the corpus built first (``build``) where it is missing or made from another definition
-    (:func:`corpus.definition`)."""
+def corpus_cases(folder: Path, build: bool = True, forecasts=()) -> list[dict]:
+    """The corpus index: one entry per file (name, file, form "six" or "modulus", duration_s, source,
+    and where made, forecast), the corpus built first (``build``) where it is missing or made from another
+    definition (:func:`corpus.definition`), and the forecasts of the cases named in ``forecasts`` where
+    they are missing."""
     index = folder / "index.json"
     if build and (not index.exists() or json.loads(index.read_text()).get("definition") != corpus.definition()):
         subprocess.run([sys.executable, str(HERE / "corpus.py"), "--out", str(folder)], check=True)
-    return json.loads(index.read_text())["cases"]
+    cases = json.loads(index.read_text())["cases"]
+    missing = sorted({c["name"] for c in cases if c["name"] in forecasts and "forecast" not in c})
+    if build and missing:
+        subprocess.run([sys.executable, str(HERE / "corpus.py"), "--out", str(folder), "--forecasts", "--cases",
+                        *missing], check=True)
+        cases = json.loads(index.read_text())["cases"]
+    return cases
 
 
 def command(case: dict, config: str, mode: str, out: Path) -> list[str]:
@@ -76,8 +92,9 @@ def command(case: dict, config: str, mode: str, out: Path) -> list[str]:
     base = [sys.executable, "-m", "desdemona"]
     if mode == "offline":
         return [*base, "optimize", case["file"], "--config", config, "--out", str(out), "--overwrite", "--quiet", "--no-view"]
-    return [*base, "online", case["file"], "--config", config, "--predictor", mode, "--out", str(out), "--overwrite",
-            "--no-view"]
+    forecast = ["--forecast", case["forecast"]] if mode == "forecast" else []
+    return [*base, "online", case["file"], "--config", config, "--predictor", mode, *forecast, "--out", str(out),
+            "--overwrite", "--no-view"]
 
 
 def run_job(case: dict, config: str, mode: str, out: str, timeout: float) -> dict:
@@ -153,8 +170,8 @@ def table(rows: list[dict]) -> str:
     """The markdown table of every job's row."""
     lines = ["| case | s | configuration | mode | exit | wall [s] | wall / s | peak [MB] | felt force RMS | "
              "corr | lag [s] | dir RMS / peak [deg] | rot peak [deg/s] | rev/s | p99 [ms] | missed | "
-             "classical: force RMS | corr | dir peak | rot peak | MPC / classical |",
-             "| --- " * 21 + "|"]
+             "classical: force RMS | corr | dir peak | rot peak | MPC / classical | forecast closes |",
+             "| --- " * 22 + "|"]
     for r in rows:
         ratio = (r["force_rms"] / r["classical_force_rms"]
                  if r.get("force_rms") is not None and r.get("classical_force_rms") else None)
@@ -167,8 +184,20 @@ def table(rows: list[dict]) -> str:
             f"{cell(r.get('p99_ms'), '.1f')} | {cell(r.get('misses'), 'd')} | "
             f"{cell(r.get('classical_force_rms'), '.3f')} | {cell(r.get('classical_correlation'), '.2f')} | "
             f"{cell(r.get('classical_direction_peak'), '.0f')} | {cell(r.get('classical_rotation_peak'), '.0f')} | "
-            f"{cell(ratio, '.2f')} |")
+            f"{cell(ratio, '.2f')} | {cell(r.get('forecast_closes'), '.0%')} |")
     return "\n".join(lines)
+
+
+def forecast_closes(rows: list[dict]) -> None:
+    """Set ``forecast_closes`` on each forecast row: (hold - forecast) / (hold - perfect) of the felt force
+    RMS of the same case and configuration, where the gap is at least :data:`GAP` of hold's."""
+    rms = {(r["case"], r["config"], r["mode"]): r.get("force_rms") for r in rows}
+    for r in rows:
+        if r["mode"] != "forecast":
+            continue
+        hold, perfect = rms.get((r["case"], r["config"], "hold")), rms.get((r["case"], r["config"], "perfect"))
+        if None not in (hold, perfect, r.get("force_rms")) and abs(hold - perfect) >= GAP * hold:
+            r["forecast_closes"] = (hold - r["force_rms"]) / (hold - perfect)
 
 
 def write_docs(text: str) -> None:
@@ -190,10 +219,13 @@ def main(argv=None) -> int:
     parser.add_argument("--no-docs", action="store_true", help="print the table, leave docs/benchmarks.md")
     args = parser.parse_args(argv)
 
-    cases = [c for c in corpus_cases(args.corpus, build=not args.table_only)
-             if args.cases is None or c["name"] in args.cases]
+    wanted = lambda name: args.cases is None or name in args.cases  # noqa: E731
+    forecasts = {name for name in corpus.CASES if wanted(name)} if "forecast" in args.modes else set()
+    cases = [c for c in corpus_cases(args.corpus, not args.table_only, forecasts) if wanted(c["name"])]
     for case in cases:
         case["file"] = str((args.corpus / case["file"]).resolve())
+        if "forecast" in case:
+            case["forecast"] = str((args.corpus / case["forecast"]).resolve())
     cases.sort(key=lambda c: c["duration_s"])  # the short cases' rows first: a long run shows them early
     jobs = [(case, config, mode) for case in cases for config in CONFIGS[case["form"]]
             if args.configs is None or config in args.configs for mode in args.modes]
@@ -221,6 +253,7 @@ def main(argv=None) -> int:
     for r in rows:  # the off-line rows beside the same classical loop
         if r["mode"] == "offline" and (r["case"], r["config"]) in online:
             r.update({k: v for k, v in online[(r["case"], r["config"])].items() if k.startswith("classical_")})
+    forecast_closes(rows)
     with open(args.out / "real.csv", "w", newline="") as fh:
         keys = sorted({k for r in rows for k in r} - {"output"})
         writer = csv.DictWriter(fh, keys, extrasaction="ignore")

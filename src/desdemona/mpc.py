@@ -35,7 +35,8 @@ from desdemona.plan import Plan, State, advance
 from desdemona.problem import ProblemOptions
 from desdemona.profiles import ALIGNED_WEIGHTS, G, DesiredPath, vertical_force
 from desdemona.simulate import TOLERANCE
-from desdemona.transcription import CueingProblem, RealTimeIteration
+from desdemona.realtime import RealTimeIteration
+from desdemona.transcription import CueingProblem
 
 
 REST_RATE = 0.05  # rad/s: below this over a whole seed the yaw counts as still (0.01 m/s^2 centripetal at 4 m)

@@ -238,11 +238,13 @@ def _worker_solve(guesses):
 
 
 def optimize(path: DesiredPath, model: Model, options: OptimizeOptions = OptimizeOptions(),
-             progress=None) -> Result:
+             progress=None, first=None) -> Result:
     """The best checked joint trajectory for a desired path (thesis chapters 3-7, off-line).
 
     model : the machine and configuration, e.g. ``Model(default_params(), "yaw-track-cabin")``;
-    progress : optional callable ``progress(done, total, best_cost)`` told after each start.
+    progress : optional callable ``progress(done, total, best_cost)`` told after each start;
+    first : optional callable ``first(problem) -> guesses`` of the guesses to try before the usual
+    ones (a window's: the window before, continued), within ``options.starts``.
     Raises :class:`LimitViolation` when no start yields a trajectory within every limit, and
     :class:`~desdemona.sizing.TooLarge` before building a problem that would not fit in memory.
     """
@@ -252,7 +254,8 @@ def optimize(path: DesiredPath, model: Model, options: OptimizeOptions = Optimiz
     build = time.perf_counter()
     full, rough = _problems(model, path, options)
     build = time.perf_counter() - build
-    guesses = initial_guesses(full, options.starts, options.seed)
+    guesses = [] if first is None else first(full)[:options.starts]
+    guesses += initial_guesses(full, options.starts - len(guesses), options.seed) if options.starts > len(guesses) else []
     solved = []
 
     def done(item):

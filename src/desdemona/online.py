@@ -22,8 +22,9 @@ from desdemona.classical import classical_dfs, classical_washout, steady_start
 from desdemona.model import Model
 from desdemona.mpc import MPC, MPCOptions
 from desdemona.plan import Plan, start_state
-from desdemona.predictors import LIVE_ONLY, PREDICTORS, predictor
+from desdemona.predictors import PREDICTORS, predictor
 from desdemona.profiles import DesiredPath
+from desdemona.profiles.forecast import Forecast
 from desdemona.simulate import (ClosedLoop, LimitCheck, LimitViolation, Trajectory, check, closed_loop, evaluate_plan,
                                 trajectory_dataframe)
 
@@ -35,7 +36,8 @@ INITIAL_CHOICES = ("rest", "home", "steady", "given")
 @dataclass(frozen=True)
 class OnlineOptions:
     """Options of :func:`run`: the controller's (:class:`MPCOptions`), the predictor's name
-    (:data:`desdemona.predictors.PREDICTORS`) and, for ``route``, its ``reference`` recording, and the
+    (:data:`desdemona.predictors.PREDICTORS`) and, for ``route``, its ``reference`` recording, for
+    ``forecast`` the vehicle's ``forecast`` (None in a live session, whose host sends it), and the
     machine's state when the session starts: ``initial``
 
     - "rest" (the default): still, where the first plan wants the machine: the positions are chosen with
@@ -52,16 +54,19 @@ class OnlineOptions:
     The classical baseline starts from the same state as the MPC."""
 
     mpc: MPCOptions = MPCOptions()
-    predictor: Literal["perfect", "hold", "linear", "route"] = "perfect"
+    predictor: Literal["perfect", "hold", "linear", "route", "forecast"] = "perfect"
     initial_state: tuple | None = None
     reference: DesiredPath | None = None
     initial: Literal["rest", "home", "steady", "given"] | None = None
+    forecast: Forecast | None = None
 
     def __post_init__(self):
-        if self.predictor not in PREDICTORS and self.predictor not in LIVE_ONLY:
-            raise ValueError(f"predictor = {self.predictor!r}: must be one of {', '.join([*PREDICTORS, *LIVE_ONLY])}")
+        if self.predictor not in PREDICTORS:
+            raise ValueError(f"predictor = {self.predictor!r}: must be one of {', '.join(PREDICTORS)}")
         if self.predictor == "route" and self.reference is None:
             raise ValueError("predictor 'route' needs a reference recording of the course")
+        if self.forecast is not None and self.predictor != "forecast":
+            raise ValueError("a forecast is read only by predictor 'forecast'")
         if self.initial is None:
             object.__setattr__(self, "initial", "rest" if self.initial_state is None else "given")
         if self.initial not in INITIAL_CHOICES:
@@ -131,11 +136,16 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
     """
     path = model.config.cue_path(path)
     reference = None if options.reference is None else model.config.cue_path(options.reference)
+    forecast = None if options.forecast is None else options.forecast.map(model.config.cue_path)
     q0, qd0 = options.start(path, model)
     controller = MPC(model, options.mpc, weights=path.weights)
+
+    def fresh():  # a fresh predictor: hold and route keep state from call to call
+        return predictor(options.predictor, reference, forecast)
+
     if options.initial == "rest":  # a fresh predictor's first preview: no state is kept
-        q0, qd0 = controller.place((q0, qd0), predictor(options.predictor, reference)(path, 0.0, options.mpc.horizon))
-    loop = closed_loop(controller, path, predictor(options.predictor, reference), q0=q0, qd0=qd0)
+        q0, qd0 = controller.place((q0, qd0), fresh()(path, 0.0, options.mpc.horizon))
+    loop = closed_loop(controller, path, fresh(), q0=q0, qd0=qd0)
     return judge(path, model, options, loop, controller.deadline)
 
 

@@ -10,13 +10,16 @@ on the vehicle to be simulated and the mission of the pilot". A predictor is a c
 - ``hold``: the present value held (:class:`HoldPredictor`: a line's end through the last 0.2 s,
   moved only when it leaves its noise band);
 - ``linear``: extrapolated from the last two samples;
-- ``forecast`` (a live session only, :data:`LIVE_ONLY`): the host's own forecast, sent with its motion;
+- ``forecast``: the vehicle's own forecast (:class:`ForecastPredictor`): its model run ahead with the
+  pilot's controls held, read from a forecast file (:mod:`desdemona.profiles.forecast`), or in a live
+  session the forecast block the host sends with its motion (:mod:`desdemona.service`);
 - ``route``: a known course (:class:`RoutePredictor`): the future taken from a reference recording of
   the same route (a car on a known track, a ride on a coaster, a rehearsed manoeuvre), aligned to the
   live signal by its recent past, so that a run that is faster, slower or noisier than the reference
   is still previewed in step with it.
 
 :func:`predictor` makes a fresh one by name (hold and route predictors carry state from call to call).
+A preview never reads the live path after ``now`` (``perfect`` aside): the tests poison it there.
 """
 
 from __future__ import annotations
@@ -24,6 +27,7 @@ from __future__ import annotations
 import numpy as np
 
 from desdemona.profiles import DesiredPath
+from desdemona.profiles.forecast import START_TOLERANCE, Forecast
 
 
 def predict_perfect(path: DesiredPath, now: float, horizon: float) -> DesiredPath:
@@ -180,28 +184,70 @@ class RoutePredictor:
         return DesiredPath(path.name, t, S, path.weights, f"route preview from {ref.name}", M)
 
 
+class ForecastPredictor:
+    """The ``forecast`` predictor: the vehicle's own forecasts (a :class:`~desdemona.profiles.forecast.Forecast`),
+    e.g. a flight simulator's model run ahead from each issue time with the pilot's controls held.
+
+    At ``now`` the preview is the latest forecast issued at t0 <= now: the present value of the live
+    path (its last sample at or before ``now``) as the first sample, so that the plan starts from what
+    is true, then the forecast's samples after ``now``, linearly interpolated onto the path's finest
+    step; where the forecast ends before ``now + horizon`` its last value is held, and before the first
+    forecast the present value is held. The live path is never read after ``now``.
+
+    The forecast file (:func:`~desdemona.profiles.forecast.read_forecast`): a CSV file with columns
+    ``t0,t,wx,wy,wz,fx,fy,fz`` (or ``t0,t,M`` for a modulus path), one row per forecast sample, the
+    forecasts in order of their issue time t0, each starting with its sample at ``t = t0``; times on
+    the motion file's clock, channels as the motion file's. Its values must be those of the path the
+    controller follows (gain and cueing applied as to the path: :meth:`Forecast.map`).
+    """
+
+    def __init__(self, forecast: Forecast):
+        self.forecast = forecast
+
+    def __call__(self, path: DesiredPath, now: float, horizon: float) -> DesiredPath:
+        if (path.S_d is None) != (self.forecast.S_d is None):
+            raise ValueError(f"the forecast's channels ({self.forecast.channels}) are not the path's")
+        k = max(0, int(np.searchsorted(path.t, now + START_TOLERANCE, side="right")) - 1)
+        knots = np.zeros(1)
+        S = None if path.S_d is None else path.S_d[k:k + 1]
+        M = None if path.modulus is None else path.modulus[k:k + 1]
+        issued = self.forecast.issued(now)
+        if issued is not None:
+            t, S_f, M_f = issued
+            ahead = t > now + START_TOLERANCE
+            knots = np.r_[knots, t[ahead] - now]
+            S = None if S is None else np.vstack([S, S_f[ahead]])
+            if M is not None:  # a path with S and its modulus: the forecast's own, or |f| of its S
+                M = np.r_[M, (M_f if M_f is not None else np.linalg.norm(S_f[:, 3:], axis=1))[ahead]]
+        grid = _grid(path, horizon)
+        S = None if S is None else np.column_stack([np.interp(grid, knots, S[:, i]) for i in range(6)])
+        M = None if M is None else np.interp(grid, knots, M)
+        return DesiredPath(path.name, grid, S, path.weights, "the vehicle's forecast", M)
+
+
 PREDICTORS = {"perfect": predict_perfect, "hold": HoldPredictor, "linear": predict_linear,
-              "route": RoutePredictor}
+              "route": RoutePredictor, "forecast": ForecastPredictor}
 
 
-#: Predictors that exist only in a live session: ``forecast`` reads the forecast block a simulator host
-#: sends with its motion (the vehicle's model run ahead, :mod:`desdemona.service`).
-LIVE_ONLY = ("forecast",)
-#: The predictors a live session can use: ``perfect`` would need the future.
-LIVE = ("hold", "linear", "route", *LIVE_ONLY)
+#: The predictors a live session can use (:mod:`desdemona.service`): ``perfect`` would need the future;
+#: ``forecast`` reads the forecast block a simulator host sends with its motion.
+LIVE = ("hold", "linear", "route", "forecast")
 
 
-def predictor(name: str, reference: DesiredPath | None = None):
-    """A fresh predictor called ``name`` (:data:`PREDICTORS`); ``route`` needs its reference recording."""
-    if name in LIVE_ONLY:
-        raise ValueError(f"the {name} predictor reads what a simulator host sends with its motion "
-                         f"(desdemona serve); a run on a recording has none")
+def predictor(name: str, reference: DesiredPath | None = None, forecast: Forecast | None = None):
+    """A fresh predictor called ``name`` (:data:`PREDICTORS`); ``route`` needs its reference recording,
+    ``forecast`` the vehicle's forecasts."""
     if name not in PREDICTORS:
         raise ValueError(f"unknown predictor {name!r}; valid: {', '.join(PREDICTORS)}")
     if name == "route":
         if reference is None:
             raise ValueError("the route predictor needs a reference recording of the course")
         return RoutePredictor(reference)
+    if name == "forecast":
+        if forecast is None:
+            raise ValueError("the forecast predictor reads the vehicle's forecasts: a forecast file (desdemona "
+                             "online --forecast FILE), or the block a simulator host sends (desdemona serve)")
+        return ForecastPredictor(forecast)
     made = PREDICTORS[name]
     return made() if isinstance(made, type) else made  # a class carries state: a fresh one per run
 

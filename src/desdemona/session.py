@@ -51,6 +51,8 @@ class Choices:
     h_u : the off-line control step [s];
     jerk_weight : the jerk's weight in the cost (:attr:`ProblemOptions.jerk_weight`), None: the
         default of the configuration, off-line or on-line.
+    window : off-line, solve in overlapping windows this long [s] (:mod:`desdemona.windows`); 0: the
+        whole path at once; None: windows above :data:`~desdemona.windows.WHOLE_UP_TO` seconds.
     """
 
     weights: str | tuple | None = None
@@ -60,6 +62,7 @@ class Choices:
     final: str = "centre"
     h_u: float = 0.05
     jerk_weight: float | None = None
+    window: float | None = None
 
     @classmethod
     def of(cls, namespace) -> Choices:
@@ -78,6 +81,7 @@ class Session:
     model: Model
     options: object
     size: sizing.Size
+    window: float | None = None
 
 
 def cued(path: DesiredPath, model: Model, choices: Choices) -> DesiredPath:
@@ -117,6 +121,7 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
             perception=None, workers: int = 1) -> Session:
     """The session of ``optimize`` and of each job of ``batch``: the cued path and its
     :class:`~desdemona.problem.ProblemOptions`, checked to fit in memory with ``workers`` at once."""
+    from desdemona import windows
     from desdemona.problem import ProblemOptions
 
     _check_h_u(choices.h_u, path)
@@ -126,8 +131,25 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
     initial, state = start(model, choices, OFFLINE_STARTS)
     problem = ProblemOptions(h_u=choices.h_u, solver=solver, perception=perception, initial=initial,
                              final=choices.final, initial_state=state, **cost(path, model, choices))
-    size = sizing.check_fits(path, model.config, problem, workers, model.limits.smooth)
-    return Session(path, model, problem, size)
+    window = _window(path, model, problem, choices.window, workers)
+    part = path if window is None else windows.part(path, 0.0, window)
+    size = sizing.check_fits(part, model.config, problem, workers, model.limits.smooth)
+    return Session(path, model, problem, size, window)
+
+
+def _window(path: DesiredPath, model: Model, problem, asked: float | None, workers: int) -> float | None:
+    """The off-line window (:func:`desdemona.windows.choose`), its errors as the user's."""
+    from desdemona import windows
+
+    if asked is not None and asked > 0 and problem.perception is not None:
+        raise ChoiceError("--perception needs the whole path in one solve (its filters' state is not carried "
+                          "from window to window): drop --window, or give --window 0")
+    if asked is None and problem.perception is not None:
+        return None
+    try:
+        return windows.choose(path, model, problem, asked, workers)
+    except windows.WindowError as error:
+        raise ChoiceError(str(error)) from None
 
 
 def thesis(path: DesiredPath, model: Model, choices: Choices = Choices()) -> Session:
@@ -135,6 +157,8 @@ def thesis(path: DesiredPath, model: Model, choices: Choices = Choices()) -> Ses
     a free start and a free end, a control step of at least 0.1 s."""
     from desdemona.problem import ProblemOptions
 
+    if choices.window:
+        raise ChoiceError("--method thesis solves the whole path at once: drop --window")
     if (choices.initial, choices.initial_state, choices.final, choices.weights) != (None, None, "centre", None):
         raise ChoiceError("--method thesis reproduces the thesis: its weights are the path's and its start "
                          "free; drop --initial, --initial-state, --final and --weights")
@@ -148,13 +172,15 @@ def thesis(path: DesiredPath, model: Model, choices: Choices = Choices()) -> Ses
 
 def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, horizon: float | None = None,
            reach: float | None = None, step: float = 0.02, predictor: str = "perfect",
-           reference: DesiredPath | None = None, perception=None, **timing) -> Session:
+           reference: DesiredPath | None = None, forecast=None, perception=None, **timing) -> Session:
     """The session of ``online``: the cued path and its :class:`~desdemona.online.OnlineOptions`.
 
     horizon : how far the preview reaches [s], None: :func:`~desdemona.mpc.default_horizon`
     (at most the path's duration); reach : how far each plan looks [s], None: at least the default
     horizon; step : the plan's step [s]; predictor and reference (a recording of the same course, for
-    "route"): :class:`OnlineOptions`; perception : a vestibular model through which the controller
+    "route"): :class:`OnlineOptions`; forecast : the vehicle's forecasts of ``path``
+    (:class:`~desdemona.profiles.forecast.Forecast`, for "forecast"; None in a live session, whose host
+    sends them), given the gain and cued as the path is; perception : a vestibular model through which the controller
     minimises the perceived difference, as :func:`offline` takes it; ``timing``: the other
     :class:`MPCOptions` fields (replan, delay, deadline, method, tail_step).
     """
@@ -166,6 +192,13 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     if reference is not None and (reference.S_d is None) != (path.S_d is None):
         raise ChoiceError(f"--reference {reference.name}: its channels ({'t,M' if reference.S_d is None else 'S'}) "
                          f"differ from the path's")
+    if forecast is not None:
+        if predictor != "forecast":
+            raise ChoiceError("--forecast is used only with --predictor forecast")
+        if forecast.channels != (1 if path.S_d is None else 6):
+            raise ChoiceError(f"--forecast: its channels ({'t0,t,M' if forecast.channels == 1 else 'S'}) differ "
+                              f"from the path's")
+        forecast = forecast.map(lambda forecast_path: cued(forecast_path, model, choices))
     path = cued(path, model, choices)
     default = min(default_horizon(model.config), path.duration)
     horizon = default if horizon is None else horizon
@@ -192,7 +225,8 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
         raise ChoiceError(f"--replan: {exc}") from None
     size = sizing.check_fits_online(path, model.config, mpc)
     initial, state = start(model, choices, ONLINE_STARTS)
-    options = OnlineOptions(mpc, predictor=predictor, reference=reference, initial=initial, initial_state=state)
+    options = OnlineOptions(mpc, predictor=predictor, reference=reference, initial=initial, initial_state=state,
+                            forecast=forecast)
     return Session(path, model, options, size)
 
 

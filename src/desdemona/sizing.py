@@ -101,11 +101,11 @@ def check_fits(path: DesiredPath, config: Configuration, options: ProblemOptions
     shorter = f", or a path shorter than {seconds:.0f} s" if seconds >= 1.0 else ""
     raise TooLarge(
         f"{path.name} on {config.name}: {size.intervals:,} control intervals ({path.duration:g} s at --h-u "
-        f"{options.h_u:g} s), {size.variables:,} variables, {_memory(size)}. Use --h-u {_round_up(h_u)} or "
+        f"{options.h_u:g} s), {size.variables:,} variables, {memory_words(size)}. Use --h-u {_round_up(h_u)} or "
         f"more{shorter}" + (", or fewer --workers" if workers > 1 else ""))
 
 
-def _memory(size: Size) -> str:
+def memory_words(size: Size) -> str:
     """How much memory a run needs against what is available, in words a reader takes in at once."""
     available = f"{size.available / 1e9:.1f} GB are available"
     if size.memory > 1000 * size.available:
@@ -146,7 +146,7 @@ def check_fits_online(path: DesiredPath, config: Configuration, mpc) -> Size:
     advice = f"Use --step {fitting:g} or more" if fitting is not None else "Use a larger --step or a shorter --horizon"
     raise TooLarge(
         f"{path.name} on-line on {config.name}: {size.intervals:,} intervals in each plan (--step {mpc.step:g} s "
-        f"over {mpc.length:g} s), {int(round(path.duration / mpc.step)):,} closed-loop steps, {_memory(size)}. "
+        f"over {mpc.length:g} s), {int(round(path.duration / mpc.step)):,} closed-loop steps, {memory_words(size)}. "
         f"{advice}")
 
 

@@ -41,8 +41,9 @@ def run_model(args) -> int:
 
 def _inputs(args) -> tuple:
     """The files a run reads: a replaced result folder must not hold them."""
-    given = (getattr(args, "profile", None), getattr(args, "reference", None), args.params)
-    return tuple(p for p in given if p is not None and os.path.exists(p))
+    given = (getattr(args, "profile", None), getattr(args, "reference", None), getattr(args, "forecast", None),
+             args.params)
+    return tuple(p for p in given if isinstance(p, str) and os.path.exists(p))
 
 
 def _claim_out(args) -> Path:
@@ -83,16 +84,18 @@ def run_optimize(args) -> int:
     from desdemona import report
     from desdemona.thesis import ThesisOptions
     from desdemona.offline import OptimizeOptions, optimize, thesis_result
+    from desdemona.windows import optimize_windowed
 
     model, path, out = _run_inputs(args)
-    if args.starts < 1 or args.workers < 1:
+    if args.starts < 1 or (args.workers is not None and args.workers < 1):
         raise UserError("--starts and --workers must be at least 1")
     choices = session.Choices.of(args)
     if args.method == "thesis":
         resolved = session.thesis(path, model, choices)
+        args.workers = args.workers or 1
     else:
         perception = perception_models.get_model(args.perception) if args.perception else None
-        resolved = session.offline(path, model, choices, args.method, perception, args.workers)
+        resolved = _offline_session(args, path, model, choices, perception)
     path, problem, size = resolved.path, resolved.options, resolved.size
     unreachable = sizing.unreachable(path, model)
     progress = None if args.quiet else _Progress(args.starts, size, path, model.config)
@@ -102,7 +105,12 @@ def run_optimize(args) -> int:
         else:
             options = OptimizeOptions(problem, starts=args.starts, seed=args.seed, workers=args.workers,
                                       refine=args.refine)
-            result = optimize(path, model, options, progress=None if progress is None else progress.start_done)
+            told = None if progress is None else progress.start_done
+            if resolved.window is None:
+                result = optimize(path, model, options, progress=told)
+            else:
+                result = optimize_windowed(path, model, options, resolved.window, progress=told,
+                                           announce=None if progress is None else progress.window)
     report.write(result, out, command=report.command_line(), overwrite=args.overwrite, unreachable=unreachable,
                  protect=_inputs(args), view=args.view)
     c = result.check
@@ -115,6 +123,23 @@ def run_optimize(args) -> int:
           f"written to {out}")
     print(f"  felt: {result.quality.headline()}")
     return 0 if result.converged else EXIT_NOT_CONVERGED
+
+
+def _offline_session(args, path, model, choices, perception) -> session.Session:
+    """:func:`session.offline` with ``args.workers`` settled: without ``--workers``, one process per core
+    and at most one per start, fewer where they would not fit in memory together."""
+    if args.workers is not None:
+        return session.offline(path, model, choices, args.method, perception, args.workers)
+    workers = max(1, min(len(os.sched_getaffinity(0)), args.starts))
+    while True:
+        try:
+            resolved = session.offline(path, model, choices, args.method, perception, workers)
+            args.workers = workers
+            return resolved
+        except sizing.TooLarge:
+            if workers == 1:
+                raise
+            workers -= 1
 
 
 class _Progress:
@@ -139,6 +164,9 @@ class _Progress:
                   flush=True)
         else:
             self._say(f"start {done}/{total} done, {time.perf_counter() - self.begin:.1f} s, best cost so far {best:.6g}")
+
+    def window(self, index: int, count: int, start: float, end: float) -> None:
+        self._say(f"window {index}/{count}: {start:g}-{end:g} s")
 
     def solving(self, iteration: int, cost: float, seconds: float) -> None:
         if not self.tty:
@@ -185,11 +213,12 @@ def run_online(args) -> int:
 
     model, path, out = _run_inputs(args)
     reference = None if args.reference is None else profiles.load(args.reference)
+    forecast = _forecast(args, path)
     timing = {k: getattr(args, k) for k in ("replan", "delay", "deadline", "method", "tail_step")}
     perception = perception_models.get_model(args.perception) if args.perception else None
     resolved = session.online(path, model, session.Choices.of(args), horizon=args.horizon, reach=args.reach,
-                              step=args.step, predictor=args.predictor, reference=reference, perception=perception,
-                              **timing)
+                              step=args.step, predictor=args.predictor, reference=reference, forecast=forecast,
+                              perception=perception, **timing)
     path, options = resolved.path, resolved.options
     result = online.run(path, model, options)
     unreachable = sizing.unreachable(path, model)
@@ -220,6 +249,18 @@ def run_online(args) -> int:
     if result.baseline_quality is not None:
         print(f"  felt with the classical loop: {result.baseline_quality.headline()}")
     return 0
+
+
+def _forecast(args, path):
+    """The forecast file of ``online --forecast``, read on the motion file's clock; None without one."""
+    from desdemona.profiles import forecast
+
+    if (args.predictor == "forecast") != (args.forecast is not None):
+        raise UserError("--predictor forecast needs --forecast FILE, the vehicle's forecasts (README, 'Predictors')"
+                        if args.forecast is None else "--forecast is used only with --predictor forecast")
+    if args.forecast is None:
+        return None
+    return forecast.read_forecast(args.forecast, path, origin=forecast.time_origin(args.profile))
 
 
 def run_profiles(args) -> int:

@@ -49,8 +49,9 @@ def build_parser() -> argparse.ArgumentParser:
     opt.add_argument("--refine", action="store_true",
                      help="solve with the simplified dynamics (centres of mass at the frame origins) first, "
                           "then refine with the full dynamics (thesis 5.7)")
-    opt.add_argument("--workers", type=int, default=1, metavar="N",
-                     help="parallel processes for the starts (default: 1)")
+    opt.add_argument("--workers", type=int, default=None, metavar="N",
+                     help="parallel processes for the starts (default: one per core, at most one per start, "
+                          "as many as fit in memory)")
     _add_overwrite_option(opt)
     opt.add_argument("--quiet", action="store_true",
                      help="no progress on stderr (default: a bar on a terminal, else a line per start)")
@@ -114,13 +115,19 @@ def build_parser() -> argparse.ArgumentParser:
                              "--replan 0.4 --delay)")
     online.add_argument("--deadline", type=float, default=None, metavar="SECONDS",
                         help="compute budget per plan; a later plan is not used (default: T_c)")
-    online.add_argument("--predictor", choices=("perfect", "hold", "linear", "route"), default="perfect",
+    online.add_argument("--predictor", choices=("perfect", "hold", "linear", "route", "forecast"), default="perfect",
                         help="how the future path is guessed from what is known now: the true future "
-                             "(perfect), the present held (hold), extrapolated (linear), or from a "
+                             "(perfect), the present held (hold), extrapolated (linear), from a "
                              "recording of the same course aligned to the live signal (route, needs "
-                             "--reference) (default: perfect)")
+                             "--reference), or the vehicle's own forecasts, its model run ahead "
+                             "(forecast, needs --forecast) (default: perfect)")
     online.add_argument("--reference", metavar="PROFILE_OR_CSV", default=None,
                         help="with --predictor route: a recording of the course (same channels as the path)")
+    online.add_argument("--forecast", metavar="FILE", default=None,
+                        help="with --predictor forecast: the vehicle's forecasts, a CSV file with columns "
+                             "t0,t,wx,wy,wz,fx,fy,fz (or t0,t,M, as the path): for each issue time t0, the "
+                             "forecast samples from t = t0 on, times on the motion file's clock (README, "
+                             "'Predictors')")
     online.add_argument("--initial", choices=session.ONLINE_STARTS, default=None,
                         help="the machine's state when the session starts: rest: still, where the first "
                              "plan wants it (default; the positions are chosen before the session from the "
@@ -289,6 +296,10 @@ def _add_start_options(parser: argparse.ArgumentParser, starts: int) -> None:
     parser.add_argument("--seed", type=int, default=0, help="seed of the random starts (default: 0)")
     parser.add_argument("--h-u", type=float, default=0.05, metavar="SECONDS", dest="h_u",
                         help="control step: joint accelerations are held this long (default: 0.05)")
+    parser.add_argument("--window", type=float, default=None, metavar="SECONDS",
+                        help="solve in overlapping windows this long, each starting from the state the one "
+                             "before reached, the whole re-checked; memory is bounded by the window. 0: the "
+                             "whole path at once (default: windows of 60 s for paths over 150 s)")
 
 
 def _add_session_options(parser: argparse.ArgumentParser, given: bool = True) -> None:

@@ -85,7 +85,9 @@ class Flight:
     """A JSBSim run sampled after every step (none before the first: the model has not computed its
     accelerations yet): ``t`` (N,) [s] of sim time, ``omega_body`` (N, 3) [rad/s] (p, q, r), ``f_body``
     (N, 3) [m/s^2] at the pilot station, body axes (x forward, y right, z down), ``attitude`` (N, 2)
-    [rad] bank and pitch (phi, theta), ``trimmed`` (N,) bool: a trim has completed (:data:`TRIMMED`)."""
+    [rad] bank and pitch (phi, theta), ``trimmed`` (N,) bool: a trim has completed (:data:`TRIMMED`);
+    ``ahead``: the runs ahead with the controls held (:func:`fly`), (t [s], rows (n, 9): t, p, q, r, the
+    pilot station's force [g], phi, theta) each."""
 
     script: Path
     aircraft: str
@@ -95,6 +97,7 @@ class Flight:
     f_body: np.ndarray
     attitude: np.ndarray
     trimmed: np.ndarray | None = None
+    ahead: tuple = ()
 
 
 @contextlib.contextmanager
@@ -154,9 +157,12 @@ def _script_use(script: Path) -> tuple[str, str]:
     return use.get("aircraft"), use.get("initialize", "")
 
 
-def fly(script: str | Path, end: float | None = None) -> Flight:
+def fly(script: str | Path, end: float | None = None, ahead: tuple[np.ndarray, float] | None = None) -> Flight:
     """Run a JSBSim script (a shipped one by name, or a file) as fast as it computes, up to its own end
-    or ``end`` [s] of sim time, sampling every step. JSBSim's printing is silenced."""
+    or ``end`` [s] of sim time, sampling every step. JSBSim's printing is silenced.
+
+    ``ahead`` = (times [s of sim time], seconds): at the step nearest each time, the model is
+    also run ``seconds`` ahead with the pilot's controls held (:func:`_run_ahead`), into ``Flight.ahead``."""
     jsbsim = _jsbsim()
     path = script_file(script).resolve()  # JSBSim reads a relative path from its own root folder
     root = Path(jsbsim.get_default_root_dir())
@@ -180,10 +186,16 @@ def fly(script: str | Path, end: float | None = None) -> Flight:
                     manager = fdm.get_property_manager()
                     props = [manager.get_node(name) for name in RATES + FORCE + ATTITUDE]
                     trimmed = manager.get_node(TRIMMED)  # None if this JSBSim has no such property
+                    times, seconds = (np.zeros(0), 0.0) if ahead is None else (np.asarray(ahead[0]), ahead[1])
+                    past_end, runs, issued = _script_end(path) + 1.0, [], 0
                     while fdm.run():  # sampled after each step: before the first, no accelerations
                         t = fdm.get_sim_time()
                         rows.append([t, *(node.get_double_value() for node in props),
                                      trimmed.get_double_value() if trimmed is not None else 0.0])
+                        half_step = 0.5 * fdm.get_delta_t()
+                        if issued < len(times) and t >= times[issued] - half_step:  # the step nearest it
+                            runs.append((t, _run_ahead(fdm, props, seconds, past_end)))
+                            issued = int(np.searchsorted(times, t + half_step, side="right"))
                         if end is not None and t > end:
                             break
             except (jsbsim.BaseError, OSError) as exc:  # a trim that fails, a file that does not exist, ...
@@ -200,7 +212,49 @@ def fly(script: str | Path, end: float | None = None) -> Flight:
     keep = np.concatenate([np.diff(data[:, 0]) > 0, [True]])  # a trim may repeat a time: its last sample
     data = data[keep]
     return Flight(path, aircraft, jsbsim.__version__, data[:, 0], data[:, 1:4], data[:, 4:7] * G, data[:, 7:9],
-                  data[:, 9] > 0.5)
+                  data[:, 9] > 0.5, tuple(runs))
+
+
+def _run_ahead(fdm, nodes, seconds: float, past_end: float) -> np.ndarray:
+    """The model run ``seconds`` ahead from its present state with the pilot's controls held: rows (n, 1 +
+    len(nodes)) of sim time and the nodes' values after each step.
+
+    JSBSim cannot copy a running model, so the process forks: the child is the model as it is now. It
+    holds the controls by running without the script: its clock is set past the script's end
+    (``past_end`` [s]), before which FGScript::RunScript returns without processing any event (a ramp
+    under way stops where it is; the aircraft's own systems, an autopilot among them, keep running), and
+    no model of the shipped aircraft reads the clock. It steps, sends its samples through a pipe and
+    exits; a run that fails ends early, with what it ran."""
+    read_end, write_end = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: never returns
+        try:
+            os.close(read_end)
+            now, dt = fdm.get_sim_time(), fdm.get_delta_t()
+            fdm.set_sim_time(past_end)
+            rows = []
+            try:
+                for k in range(1, int(np.ceil(seconds / dt - 1e-9)) + 1):
+                    fdm.run()
+                    rows.append([now + k * dt, *(node.get_double_value() for node in nodes)])
+            except Exception:  # noqa: BLE001, S110 -- a diverged run ahead: what it ran is the forecast
+                pass
+            with os.fdopen(write_end, "wb") as sink:
+                sink.write(np.asarray(rows, dtype="<f8").tobytes())
+        finally:
+            os._exit(0)
+    os.close(write_end)
+    with os.fdopen(read_end, "rb") as source:
+        data = source.read()
+    os.waitpid(pid, 0)
+    return np.frombuffer(data, dtype="<f8").reshape(-1, 1 + len(nodes))
+
+
+def _script_end(script: Path) -> float:
+    """The end time [s] of a script's ``<run>``."""
+    import xml.etree.ElementTree as ET
+
+    return float(ET.parse(script).getroot().find("run").get("end"))
 
 
 def default_start(flight: Flight) -> tuple[float, str]:
@@ -239,10 +293,52 @@ def from_jsbsim(script: str | Path, start: float | None = None, end: float | Non
     |f| is within :data:`.convert.MAGNITUDE_TOLERANCE` of 1 g, a ballistic or weightless stretch being no
     rest, and JSBSim's units its own; a flight without one is not checked).
     """
+    rate = _rate(rate)
+    return _path_of(fly(script, None if end is None else end + FILTER_MARGIN), start, end, rate, modulus)
+
+
+def _rate(rate: float | None) -> float:
     rate = DEFAULT_RATE if rate is None else float(rate)
     if not rate > 0:
         raise ProfileError(f"--rate {rate:g}: must be a positive number of samples per second")
-    flight = fly(script, None if end is None else end + FILTER_MARGIN)
+    return rate
+
+
+def forecast_from_jsbsim(script: str | Path, start: float, end: float, every: float, seconds: float,
+                         rate: float | None = None):
+    """The desired path of a JSBSim flight from ``start`` to ``end`` [s of sim time] (as
+    :func:`from_jsbsim`), its ``source:`` lines, and the forecasts its own model makes of it
+    (:class:`~desdemona.profiles.forecast.Forecast`, on the path's clock): every ``every`` seconds of the
+    crop, the model run ``seconds`` ahead from its state with the pilot's controls held (the script's
+    later events not run, :func:`_run_ahead`), converted as the path is."""
+    from desdemona.profiles.forecast import Forecast
+
+    rate = _rate(rate)
+    times = start + every * np.arange(int(np.floor((end - start) / every + 1e-9)) + 1)
+    flight = fly(script, end + FILTER_MARGIN, ahead=(times, seconds + FILTER_MARGIN))
+    path, comments = _path_of(flight, start, end, rate, False)
+    blocks = [_forecast_of(flight, t, rows, start, seconds, rate) for t, rows in flight.ahead if t <= end + 1e-9]
+    return path, comments, Forecast.of(blocks)
+
+
+def _forecast_of(flight: Flight, t_issue: float, rows: np.ndarray, start: float, seconds: float, rate: float):
+    """(t0, t, S) of one run ahead on the path's clock: the last :data:`FILTER_MARGIN` s of the flight and
+    the run ahead, turned into the cabin frame and resampled as :func:`from_jsbsim` does (on the path's
+    grid), from the issue time to ``seconds`` after it."""
+    past = (flight.t >= t_issue - FILTER_MARGIN) & (flight.t <= t_issue + 1e-9)
+    t = np.r_[flight.t[past], rows[:, 0]]
+    omega = convert.turn_to_cabin(np.vstack([flight.omega_body[past], rows[:, 1:4]]), convert.R_CABIN_BODY)
+    f = convert.turn_to_cabin(np.vstack([flight.f_body[past], rows[:, 4:7] * G]), convert.R_CABIN_BODY)
+    t, X = convert.uniform_grid(t, np.column_stack([omega, f]))
+    t, X = convert.resample(t, X, rate, start + np.ceil((t[0] - start) * rate - 1e-6) / rate)
+    present = [np.interp(t_issue, t, X[:, i]) for i in range(6)]
+    keep = (t > t_issue + 1e-9) & (t <= t_issue + seconds + 1e-9)
+    return t_issue - start, np.r_[t_issue, t[keep]] - start, np.vstack([present, X[keep]])
+
+
+def _path_of(flight: Flight, start: float | None, end: float | None, rate: float,
+             modulus: bool) -> tuple[DesiredPath, list[str]]:
+    """The desired path of a flown flight and its ``source:`` lines (:func:`from_jsbsim`)."""
     name = flight.script.stem
     omega = convert.turn_to_cabin(flight.omega_body, convert.R_CABIN_BODY)
     f = convert.turn_to_cabin(flight.f_body, convert.R_CABIN_BODY)

@@ -1,0 +1,192 @@
+"""A recording of any length, off-line: solved in overlapping windows, checked as a whole.
+
+A whole-recording solve holds every interval in memory at once (about 1 GB for ten minutes on
+``yaw-track-cabin``) and its time per iteration grows with the length. In windows, each window is an
+off-line problem of its own (:func:`desdemona.offline.optimize`, its starts and check); it keeps its
+plan up to where the next window starts, ``overlap`` before its end, and the next window starts
+exactly from that state (positions, rates and accelerations). So the part kept never depends on how
+a window ends, every window but the last ends stoppable (every state can still brake to rest within
+the position limits, the on-line end condition of chapter 7), and memory is bounded by the window,
+not the recording. The stitched plan is re-checked as a whole against every limit
+(:func:`desdemona.simulate.check`); a violation is an error, as for any result.
+
+``choose(duration, model, options, asked)`` decides: the window asked for (refused with the length
+that would do where it is shorter than the machine needs to stop twice over, or longer than the
+memory allows), else windows of :data:`DEFAULT_WINDOW` above :data:`WHOLE_UP_TO` seconds.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import replace
+
+import numpy as np
+
+from desdemona import sizing
+from desdemona.model import Model
+from desdemona.offline import OptimizeOptions, Result, optimize
+from desdemona.profiles import DesiredPath
+from desdemona.simulate import LimitViolation, check, evaluate_plan
+from desdemona.transcription import Solution
+
+#: Recordings up to this long [s] are solved whole by default, longer ones in windows
+#: ("Windows" in docs/benchmarks.md).
+WHOLE_UP_TO = 150.0
+
+#: The default window [s].
+DEFAULT_WINDOW = 60.0
+
+#: The shortest overlap [s]: the part of a window solved but not kept.
+MIN_OVERLAP = 10.0
+
+
+class WindowError(ValueError):
+    """A window length that cannot work; the message says which length would."""
+
+
+def stopping_time(model: Model, braking: float = 0.5) -> float:
+    """The longest time [s] a joint needs to come to rest from its velocity limit, braking at
+    ``braking`` x its acceleration limit (the stoppable condition's), the ramp at the jerk limit
+    counted."""
+    lim = model.limits
+    a = braking * lim.acceleration
+    ramp = a / lim.jerk if lim.smooth else 0.0
+    return float(np.max(lim.velocity / a + ramp))
+
+
+def overlap(model: Model) -> float:
+    """The overlap of two windows [s]: at least the time the machine needs to stop, twice over."""
+    return max(MIN_OVERLAP, math.ceil(2.0 * stopping_time(model)))
+
+
+def choose(path: DesiredPath, model: Model, options, asked: float | None, workers: int = 1) -> float | None:
+    """The window [s] for ``path`` (None: solve it whole). ``asked``: the user's ``--window`` (0: whole,
+    None: the default). Raises :class:`WindowError` for a window that cannot work."""
+    if asked is not None and asked <= 0:
+        return None
+    if asked is None:
+        if path.duration <= WHOLE_UP_TO:
+            return None
+        asked = DEFAULT_WINDOW
+        shortest = 2 * overlap(model)
+        asked = max(asked, shortest)
+    if asked >= path.duration:
+        return None
+    shortest = 2 * overlap(model)
+    if asked < shortest:
+        raise WindowError(f"--window {asked:g}: shorter than the machine needs. On {model.config.name} a joint "
+                          f"takes up to {stopping_time(model):.1f} s to stop, each window overlaps the next by "
+                          f"{overlap(model):g} s; use --window {shortest:g} or more")
+    size = sizing.estimate(part(path, 0.0, asked), model.config, options, workers, model.limits.smooth)
+    if not size.fits:
+        fitting = asked * (size.available - sizing.BASE_BYTES) / (size.memory - sizing.BASE_BYTES)
+        advice = (f"use --window {math.floor(fitting):g} or less" if fitting >= shortest else
+                  f"no window fits (the shortest that works is {shortest:g} s); use a larger --h-u")
+        raise WindowError(f"--window {asked:g}: {size.intervals:,} control intervals in a window need "
+                          f"{sizing.memory_words(size)}; {advice}")
+    return float(asked)
+
+
+def part(path: DesiredPath, start: float, end: float) -> DesiredPath:
+    """The desired path on [start, end], its time from 0: its own samples inside, the ends
+    interpolated."""
+    inside = path.t[(path.t > start) & (path.t < end)]
+    t = np.r_[start, inside, end]
+    S_d = path.sample(t) if path.S_d is not None else None
+    modulus = path.sample_modulus(t) if path.modulus is not None else None
+    return replace(path, t=t - start, S_d=S_d, modulus=modulus)
+
+
+def _windows(duration: float, window: float, keep: float) -> list[tuple[float, float]]:
+    """(start, end) of each window: each starts ``keep`` after the one before; the last reaches the end."""
+    spans, start = [], 0.0
+    while start + window < duration - 1e-9:
+        spans.append((start, start + window))
+        start += keep
+    spans.append((start, duration))
+    return spans
+
+
+def optimize_windowed(path: DesiredPath, model: Model, options: OptimizeOptions, window: float,
+                      progress=None, announce=None) -> Result:
+    """:func:`~desdemona.offline.optimize` in windows of ``window`` seconds (see the module's
+    docstring). ``announce(index, count, start, end)`` is told as each window begins; ``progress`` is
+    passed on to each window's solve. Raises :class:`LimitViolation` when the stitched plan breaks a
+    limit."""
+    wall = time.perf_counter()
+    problem = options.problem
+    if problem.perception is not None:
+        raise WindowError("--perception needs the whole recording in one solve: its filters' state is not "
+                          "carried from window to window; use --window 0")
+    path = model.config.cue_path(path)
+    h_u = problem.h_u
+    keep = h_u * round((window - overlap(model)) / h_u)
+    spans = _windows(path.duration, h_u * round(window / h_u), keep)
+    pieces, reports, state, guess = [], [], None, None
+    for index, (start, end) in enumerate(spans):
+        if announce is not None:
+            announce(index + 1, len(spans), start, end)
+        last = index == len(spans) - 1
+        window_path = part(path, start, end)
+        settings = problem if last else replace(problem, final="none", stoppable=True)
+        if state is not None:
+            settings = replace(settings, initial="given", initial_state=state)
+        result = optimize(window_path, model, replace(options, problem=settings), progress=progress, first=guess)
+        reports += [replace(r, guess=f"window {index + 1}/{len(spans)}: {r.guess}") for r in result.starts]
+        sol = result.solution
+        if last:
+            pieces.append((start, sol, len(sol.u)))
+            break
+        k = int(round(keep / h_u))
+        pieces.append((start, sol, k))
+        n = model.n
+        x = sol.x[k]
+        state = (x[:n].copy(), x[n:2 * n].copy()) + ((x[2 * n:3 * n].copy(),) if sol.smooth else ())
+        guess = _continued(sol, k)
+    return _stitched(path, model, options, pieces, reports, wall)
+
+
+def _continued(sol: Solution, k: int):
+    """The next window's first guess: this window's accelerations after node k, then held at zero."""
+    n = sol.u.shape[1]
+    rest = sol.accelerations[k:]
+    return lambda problem: [("the window before, continued",
+                             *problem.guess(sol.x[k, :n], sol.x[k, n:2 * n],
+                                            np.vstack([rest, np.zeros((max(0, problem.N - len(rest)), n))])[:problem.N],
+                                            sol.x[k, 2 * n:3 * n] if sol.smooth else None))]
+
+
+def _stitched(path: DesiredPath, model: Model, options: OptimizeOptions, pieces, reports, wall: float) -> Result:
+    """One result of the windows' kept parts, checked as a whole."""
+    t, x, u = [], [], []
+    for start, sol, k in pieces:
+        t.append(start + sol.t_nodes[:k])
+        x.append(sol.x[:k])
+        u.append(sol.u[:k])
+    start, sol, k = pieces[-1]
+    t.append([start + sol.t_nodes[-1]])
+    x.append(sol.x[-1:])
+    chosen = [p[1] for p in pieces]
+    whole = Solution(t_nodes=np.concatenate(t), x=np.vstack(x), u=np.vstack(u),
+                     cost=float(sum(s.cost for s in chosen)), status=sol.status,
+                     success=all(s.success for s in chosen), iterations=sum(s.iterations for s in chosen),
+                     solve_time=sum(s.solve_time for s in chosen), smooth=sol.smooth)
+    problem = options.problem
+    h_sub = problem.h_u / problem.substeps
+    result_check, _ = check(model, path, whole.plan, h_sub, weights=_weights(path, model, problem))
+    if not result_check.passed:
+        raise LimitViolation(result_check, "the windows' stitched trajectory")
+    fractions = np.arange(problem.substeps) / problem.substeps
+    nodes = whole.t_nodes
+    grid = np.r_[(nodes[:-1, None] + np.diff(nodes)[:, None] * fractions[None, :]).ravel(), nodes[-1]]
+    trajectory = evaluate_plan(model, path, whole.plan, grid)
+    timings = {"build": 0.0, "solve": sum(r.solve_time for r in reports), "wall": time.perf_counter() - wall,
+               "windows": len(pieces)}
+    return Result(path=path, model=model, options=options, method=problem.solver, solution=whole,
+                  trajectory=trajectory, check=result_check, starts=tuple(reports), timings=timings)
+
+
+def _weights(path: DesiredPath, model: Model, problem) -> np.ndarray:
+    return np.asarray(problem.weights if problem.weights is not None else path.weights, float)
+

@@ -1,0 +1,71 @@
+"""Off-line in overlapping windows: the choice of the window, its refusals, and a stitched result that
+starts each window where the one before was and passes the whole check."""
+
+import numpy as np
+import pytest
+
+from desdemona import profiles, session, sizing, windows
+from desdemona.cli import main
+from desdemona.model import Model
+from desdemona.offline import OptimizeOptions, optimize
+from desdemona.problem import ProblemOptions
+from desdemona.simulate import check
+
+
+def _long(duration: float):
+    return profiles.cosine(amplitude=3.0, omega=0.4, duration=duration, dt=0.05)
+
+
+def test_the_default_is_whole_up_to_its_length_and_windows_above(params):
+    model, options = Model(params, "yaw-track"), ProblemOptions(h_u=0.2)
+    assert windows.choose(_long(windows.WHOLE_UP_TO), model, options, None) is None
+    assert windows.choose(_long(windows.WHOLE_UP_TO + 10), model, options, None) == windows.DEFAULT_WINDOW
+    assert windows.choose(_long(windows.WHOLE_UP_TO + 10), model, options, 0) is None
+    assert windows.choose(_long(40.0), model, options, 50.0) is None  # longer than the path: whole
+
+
+def test_a_window_shorter_than_the_machine_can_stop_in_says_which_would_do(params):
+    model = Model(params, "yaw-track")
+    shortest = 2 * windows.overlap(model)
+    assert windows.overlap(model) >= 2 * windows.stopping_time(model)
+    with pytest.raises(windows.WindowError, match=f"use --window {shortest:g} or more"):
+        windows.choose(_long(100.0), model, ProblemOptions(h_u=0.2), shortest - 1)
+
+
+def test_a_window_larger_than_the_memory_says_which_would_fit(params, monkeypatch):
+    monkeypatch.setattr(sizing, "available_memory", lambda: 0.6e9)
+    with pytest.raises(windows.WindowError, match=r"use --window \d+ or less"):
+        windows.choose(_long(2000.0), Model(params, "full"), ProblemOptions(h_u=0.05), 1000.0)
+
+
+def test_the_command_refuses_a_bad_window_before_any_work(tmp_path, capsys):
+    path = tmp_path / "long.csv"
+    profiles.write_csv(path, _long(60.0))
+    out = tmp_path / "out"
+    code = main(["optimize", str(path), "--config", "yaw-track", "--out", str(out), "--window", "5", "--quiet"])
+    assert code == 2 and not out.exists()
+    assert "--window 5: shorter than the machine needs" in capsys.readouterr().err
+
+
+def test_perception_is_refused_in_windows(params):
+    with pytest.raises(session.ChoiceError, match="--window 0"):
+        session.offline(_long(60.0), Model(params, "yaw-track-cabin"), session.Choices(window=40.0),
+                        perception=object())
+
+
+def test_windows_stitch_into_one_checked_plan_close_to_the_whole_solve(params):
+    path, model = _long(50.0), Model(params, "yaw-track")
+    options = OptimizeOptions(ProblemOptions(h_u=0.2, initial="rest", final="centre"), starts=1)
+    told = []
+    result = windows.optimize_windowed(path, model, options, 30.0, announce=lambda *a: told.append(a))
+    assert [a[:2] for a in told] == [(1, 3), (2, 3), (3, 3)]
+    assert [a[2] for a in told] == pytest.approx([0.0, 15.0, 30.0]) and told[-1][3] == pytest.approx(50.0)
+    assert result.check.passed and result.converged
+    plan = result.plan
+    assert plan.t_nodes[0] == 0.0 and plan.t_nodes[-1] == pytest.approx(50.0)
+    assert np.all(np.diff(plan.t_nodes) > 0)
+    # the stitched plan, integrated from its start, passes through every window's own states
+    again, _ = check(model, path, plan, 0.1)
+    assert again.passed and again.rms == pytest.approx(result.check.rms)
+    whole = optimize(path, model, options)
+    assert result.check.rms <= 1.05 * whole.check.rms + 1e-3, (result.check.rms, whole.check.rms)
