@@ -40,6 +40,10 @@ DEFAULT_WINDOW = 60.0
 #: The shortest overlap [s]: the part of a window solved but not kept.
 MIN_OVERLAP = 10.0
 
+#: Starts of every window after the first, at most: the window before, continued (a warm start near
+#: the optimum, which the first window's starts already chose among), and the first smart guess.
+LATER_STARTS = 2
+
 
 class WindowError(ValueError):
     """A window length that cannot work; the message says which length would."""
@@ -132,7 +136,9 @@ def optimize_windowed(path: DesiredPath, model: Model, options: OptimizeOptions,
         settings = problem if last else replace(problem, final="none", stoppable=True)
         if state is not None:
             settings = replace(settings, initial="given", initial_state=state)
-        result = optimize(window_path, model, replace(options, problem=settings), progress=progress, first=guess)
+        starts = options.starts if state is None else min(options.starts, LATER_STARTS)
+        result = optimize(window_path, model, replace(options, problem=settings, starts=starts),
+                          progress=progress, first=guess)
         reports += [replace(r, guess=f"window {index + 1}/{len(spans)}: {r.guess}") for r in result.starts]
         sol = result.solution
         if last:
