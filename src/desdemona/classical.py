@@ -5,7 +5,8 @@
   qd1_ref = sqrt(sqrt(M_d^2 - g^2) / R) (the inversion of eq. 7.7 without yaw acceleration), tracked by
   a rate- and acceleration-limited first-order loop; on ``dfs`` the gimbals follow the force's
   direction. Its result (a :class:`~desdemona.plan.Plan`) gives the thesis' M_org.
-- :func:`classical_washout`: the classical washout (Reid & Nahon) on the other configurations.
+- :func:`~desdemona.washout.classical_washout` (in :mod:`desdemona.washout`, found here too): the
+  classical washout (Reid & Nahon) on the other configurations, with the arm's sustained force.
 
 Both run step by step on a time grid and never look ahead. On a machine with jerk limits each joint's
 acceleration is continuous and ramps towards its command at most at the jerk limit (:class:`_Follower`),
@@ -19,10 +20,8 @@ The thesis' own optimiser, the other baseline, is :mod:`desdemona.thesis`.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
-import scipy.signal
 
 from desdemona.kinematics import gimbal_alignment
 from desdemona.model import Model
@@ -391,115 +390,11 @@ def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.
     return Plan(t, q0, qd0, u, jerk)
 
 
-# ---------------------------------------------------------------------------------------------------
-# The classical washout
+def __getattr__(name: str):
+    """The classical washout lives in :mod:`desdemona.washout` (it builds on this module's followers);
+    ``from desdemona.classical import classical_washout`` still finds it."""
+    if name in ("Washout", "WASHOUT", "classical_washout"):
+        from desdemona import washout
 
-@dataclass(frozen=True)
-class Washout:
-    """Settings of the classical washout (:func:`classical_washout`), after Reid & Nahon's classical
-    algorithm; assumptions chosen for Desdemona's 8 m track and 2 m heave, not the thesis'.
-
-    omega_hp, zeta_hp : second-order high-pass of the specific force sent to the track and heave
-    [rad/s, -]; omega_centre, zeta_centre : the spring that washes them back to the centre;
-    omega_lp, zeta_lp : second-order low-pass of f_x, f_y for tilt coordination; tilt_rate : the
-    largest tilt rate [rad/s], at the perception threshold so that the tilt is not felt as rotation;
-    omega_rot : first-order high-pass of the angular velocity [rad/s]; gain : scale of S_d - rest.
-    The defaults had the lowest mean RMS of a small grid (omega_hp 0.5-1.5, omega_centre 0.2-0.5, gain
-    0.5-1) over the catapult, car lap, cosine and double pulse on yaw-track and full.
-    """
-
-    omega_hp: float = 0.5
-    zeta_hp: float = 0.7
-    omega_centre: float = 0.5
-    zeta_centre: float = 1.0
-    omega_lp: float = 2.0
-    zeta_lp: float = 0.7
-    tilt_rate: float = math.radians(3.0)
-    omega_rot: float = 0.5
-    gain: float = 0.5
-
-
-def _filtered(numerator, denominator, u, dt, steady: bool = False) -> np.ndarray:
-    """The response of a continuous SISO filter to ``u`` (K,) sampled at ``dt``, inputs held (ZOH),
-    from a zero state, or from the steady state of the first input (``steady``)."""
-    b, a, _ = scipy.signal.cont2discrete((numerator, denominator), dt, method="zoh")
-    b = np.ravel(b)
-    if not steady:
-        return scipy.signal.lfilter(b, a, u)
-    return scipy.signal.lfilter(b, a, u, zi=scipy.signal.lfilter_zi(b, a) * u[0])[0]
-
-
-def classical_washout(path: DesiredPath, model: Model, times=None, settings: Washout = Washout(),
-                      state=None, trimmed: bool = False) -> Plan:
-    """The classical washout a motion simulator runs today, on the yaw-track, yaw-track-cabin and
-    full configurations (Reid & Nahon's classical algorithm, with tilt coordination where the cabin
-    can tilt).
-
-    - Translational: f_y (track) and f_z - g (heave) through a second-order high-pass, plus a spring
-      that washes the joint back to its centre.
-    - Tilt coordination (full): the low-passed f_x and f_y held by tilting the cabin (q6 pitch: f_x
-      = -g sin q6; q4 roll: f_y = g sin q4), at most ``tilt_rate``, below the rotation threshold.
-    - Rotational: omega_z through a first-order high-pass as the yaw's rate (omega_x, omega_y the same
-      on the gimbals where they are free).
-
-    The rate loops' commands are no larger than the jerk limit can end without overshoot. Every command
-    then passes the limits (:class:`_Follower`): on a machine with jerk limits the acceleration ramps
-    from where it was (zero at the start) towards the command at most at the jerk limit; rate and
-    position stay where the joint can still stop, a bounded joint braking at :data:`BRAKE` x its
-    acceleration limit with the ramp there counted (it brakes earlier by the distance covered while
-    the acceleration turns); then torque, power and the rest over the step
-    (:meth:`Model.step_limit_use`), the command (and so the jerk) scaled down until it passes. Without
-    jerk limits the accelerations step, as before.
-    Returns the free joints' plan on ``times`` (default: the path's grid), from ``state`` =
-    (q0, qd0[, qdd0]) (default rest). ``trimmed``: the filters start in the steady state of the first
-    sample, as for a session that begins trimmed to it (:func:`steady_start`); else from zero, as if
-    the path had been at rest before t = 0.
-    """
-    o = settings
-    t = path.t if times is None else np.asarray(times, dtype=float)
-    dt = float(np.min(np.diff(t)))
-    S_d = path.sample(t)
-    g = model.params.gravity
-    rest = np.array([0.0, 0.0, 0.0, 0.0, 0.0, g])
-    S_d = rest + o.gain * (S_d - rest)
-    free, lim = model.config.free, model.limits
-    hp2 = ([1.0, 0.0, 0.0], [1.0, 2 * o.zeta_hp * o.omega_hp, o.omega_hp**2])
-    lp2 = ([o.omega_lp**2], [1.0, 2 * o.zeta_lp * o.omega_lp, o.omega_lp**2])
-    hp1 = ([1.0, 0.0], [1.0, o.omega_rot])
-    # per free joint: what it follows
-    target_acc = np.zeros((len(t), model.n))  # translational: high-passed specific force
-    target_rate = np.zeros((len(t), model.n))  # rotational: high-passed angular velocity
-    target_angle = np.full((len(t), model.n), np.nan)  # tilt coordination
-    for k, joint in enumerate(free):
-        if joint == 1:
-            target_acc[:, k] = _filtered(*hp2, S_d[:, 4], dt, trimmed)
-        elif joint == 2:
-            target_acc[:, k] = _filtered(*hp2, S_d[:, 5] - g, dt, trimmed)
-        elif joint in (0, 4) and (joint == 0 or 0 not in free):
-            target_rate[:, k] = _filtered(*hp1, S_d[:, 2], dt, trimmed)
-        elif joint == 3:
-            target_rate[:, k] = _filtered(*hp1, S_d[:, 0], dt, trimmed)
-            target_angle[:, k] = tilt_angles(0.0, _filtered(*lp2, S_d[:, 4], dt, trimmed), g)[0]
-        elif joint == 5:
-            target_rate[:, k] = _filtered(*hp1, S_d[:, 1], dt, trimmed)
-            target_angle[:, k] = tilt_angles(_filtered(*lp2, S_d[:, 3], dt, trimmed), 0.0, g)[1]
-    prismatic = np.array([model.params.joints[j].kind == "prismatic" for j in free])
-    tilt = ~np.isnan(target_angle[0])
-    q, qd = start_state(state, model.n)
-    a = start_acceleration(state, model.n)
-    q0, qd0 = q.copy(), qd.copy()
-    follower = _Follower(model, np.arange(model.n))
-    u, jerk = np.zeros((len(t) - 1, model.n)), np.zeros((len(t) - 1, model.n))
-    wc, zc = o.omega_centre, o.zeta_centre
-    guard = _Guard(model)
-    for k in range(len(t) - 1):
-        h = float(t[k + 1] - t[k])
-        command = np.where(prismatic, target_acc[k] - wc**2 * q - 2 * zc * wc * qd,
-                           _rate_command(target_rate[k] - qd, 1.0 / RATE_LOOP, follower.J))
-        if tilt.any():  # follow the tilt angle with the rate below the threshold
-            rate = np.clip((np.nan_to_num(target_angle[k]) - q) * 2.0, -o.tilt_rate, o.tilt_rate) + target_rate[k]
-            command = np.where(tilt, _rate_command(rate - qd, 1.0 / RATE_LOOP, follower.J), command)
-        command = np.clip(command, -lim.acceleration, lim.acceleration)
-        u[k], jerk[k] = guard.first(q, qd, h, (follower.step(q, qd, a, h, s * command) for s in SCALES))
-        q, qd, a = State(q, qd, a).advance(u[k], h, jerk[k])
-    return Plan(t, q0, qd0, u, jerk)
+        return getattr(washout, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
