@@ -26,6 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
+from desdemona.profiles.log import data_lines
 from desdemona.profiles.path import CHANNELS, MAX_SPECIFIC_FORCE, DesiredPath, ProfileError
 
 #: The columns of a forecast of a full path and of a modulus path.
@@ -113,16 +114,7 @@ def read_forecast(file: str | Path, path: DesiredPath | None = None, origin: flo
     |f| above 100 g, no data: :class:`ProfileError` naming the file and the line.
     """
     file = Path(file)
-    try:
-        text = file.read_bytes().decode("utf-8-sig")
-    except OSError as exc:
-        raise ProfileError(f"{file}: cannot read: {exc.strerror or exc}") from None
-    except UnicodeDecodeError:
-        raise ProfileError(f"{file}: not UTF-8 text; save it as UTF-8 CSV") from None
-    lines = [(i + 1, line) for i, line in enumerate(text.splitlines())
-             if line.strip() and not line.lstrip().startswith("#")]
-    if not lines:
-        raise ProfileError(f"{file}: no header and no data")
+    lines = data_lines(file)
     columns = [c.strip() for c in next(csv.reader([lines[0][1]]))]
     layout = next((c for c in (FORECAST_COLUMNS, MODULUS_FORECAST_COLUMNS) if sorted(columns) == sorted(c)), None)
     if layout is None:

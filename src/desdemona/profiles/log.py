@@ -66,11 +66,9 @@ class LogFormat:
         convert.axes_rotation(self.axes)  # raises on a left-handed or degenerate set
 
 
-def read_log(file: str | Path, columns: list[str]) -> dict[str, np.ndarray]:
-    """The named columns of a CSV log as float arrays. ``#`` lines are comments; the first other line
-    names the columns. A missing column, a cell that is not a number, fewer than two rows raise
-    :class:`ProfileError` naming them (and the log's columns)."""
-    file = Path(file)
+def data_lines(file: Path) -> list[tuple[int, str]]:
+    """(line number, text) of a UTF-8 CSV's lines other than blank ones and ``#`` comments; the first is
+    its header. A file that cannot be read, is not UTF-8 or holds no line raises :class:`ProfileError`."""
     try:
         text = file.read_bytes().decode("utf-8-sig")
     except OSError as exc:
@@ -81,6 +79,15 @@ def read_log(file: str | Path, columns: list[str]) -> dict[str, np.ndarray]:
              if line.strip() and not line.lstrip().startswith("#")]
     if not lines:
         raise ProfileError(f"{file}: no header and no data")
+    return lines
+
+
+def read_log(file: str | Path, columns: list[str]) -> dict[str, np.ndarray]:
+    """The named columns of a CSV log as float arrays. ``#`` lines are comments; the first other line
+    names the columns. A missing column, a cell that is not a number, fewer than two rows raise
+    :class:`ProfileError` naming them (and the log's columns)."""
+    file = Path(file)
+    lines = data_lines(file)
     header = [c.strip() for c in next(csv.reader([lines[0][1]]))]
     missing = [c for c in columns if c not in header]
     if missing:
