@@ -216,8 +216,6 @@ class Formulation:
             (0.01 if parametric else 0.003) if large else 0.0)
         self.cost_weights = np.where(self.weights > 0, self.weights, floor)
         self.limit_curvature = options.limit_curvature if options.limit_curvature is not None else not large
-        self.gauss_newton_first = (options.gauss_newton_first if options.gauss_newton_first is not None
-                                   else model.config.takes_modulus) and options.solver == "ipopt" and not parametric
         self.jerk_weight = options.jerk_weight if options.jerk_weight is not None else default_jerk_weight(
             model.config, online=parametric)
         self.vestibular = options.perception

@@ -141,11 +141,6 @@ def _window(path: DesiredPath, model: Model, problem, asked: float | None, worke
     """The off-line window (:func:`desdemona.windows.choose`), its errors as the user's."""
     from desdemona import windows
 
-    if asked is not None and asked > 0 and problem.perception is not None:
-        raise ChoiceError("--perception needs the whole path in one solve (its filters' state is not carried "
-                          "from window to window): drop --window, or give --window 0")
-    if asked is None and problem.perception is not None:
-        return None
     try:
         return windows.choose(path, model, problem, asked, workers)
     except windows.WindowError as error:

@@ -146,7 +146,10 @@ class CueingProblem(Formulation):
         initial = self._initial_constraint()(X[:, 0], U[:, 0])
         self.n_initial = initial.numel()
         self.expanded = self._expand()
-        self.gauss_newton_first = self.gauss_newton_first and not self.expanded  # a flat graph: exact
+        o = self.options  # Gauss-Newton first: IPOPT off-line, on the derivatives assembled here
+        self.gauss_newton_first = ((o.gauss_newton_first if o.gauss_newton_first is not None
+                                    else self.model.config.takes_modulus)
+                                   and o.solver == "ipopt" and not self.parametric and not self.expanded)
         stage = self._stage_derivatives()
         self.compiled = self._compile(stage)
         # f and g on two threads too, unless the graph is flattened (on-line and small problems)

@@ -27,7 +27,7 @@ from desdemona import sizing
 from desdemona.model import Model
 from desdemona.offline import OptimizeOptions, Result, optimize
 from desdemona.profiles import DesiredPath
-from desdemona.simulate import LimitViolation, check, evaluate_plan
+from desdemona.simulate import LimitViolation, check, evaluate_plan, fine_grid
 from desdemona.transcription import Solution
 
 #: Recordings up to this long [s] are solved whole by default, longer ones in windows
@@ -66,18 +66,21 @@ def overlap(model: Model) -> float:
 
 def choose(path: DesiredPath, model: Model, options, asked: float | None, workers: int = 1) -> float | None:
     """The window [s] for ``path`` (None: solve it whole). ``asked``: the user's ``--window`` (0: whole,
-    None: the default). Raises :class:`WindowError` for a window that cannot work."""
+    None: the default; with a perception model the default is whole). Raises :class:`WindowError` for a
+    window that cannot work."""
     if asked is not None and asked <= 0:
         return None
+    if options.perception is not None:
+        if asked is None:
+            return None
+        _refuse_perception()
+    shortest = 2 * overlap(model)
     if asked is None:
         if path.duration <= WHOLE_UP_TO:
             return None
-        asked = DEFAULT_WINDOW
-        shortest = 2 * overlap(model)
-        asked = max(asked, shortest)
+        asked = max(DEFAULT_WINDOW, shortest)
     if asked >= path.duration:
         return None
-    shortest = 2 * overlap(model)
     if asked < shortest:
         raise WindowError(f"--window {asked:g}: shorter than the machine needs. On {model.config.name} a joint "
                           f"takes up to {stopping_time(model):.1f} s to stop, each window overlaps the next by "
@@ -90,6 +93,11 @@ def choose(path: DesiredPath, model: Model, options, asked: float | None, worker
         raise WindowError(f"--window {asked:g}: {size.intervals:,} control intervals in a window need "
                           f"{sizing.memory_words(size)}; {advice}")
     return float(asked)
+
+
+def _refuse_perception():
+    raise WindowError("--perception needs the whole path in one solve (its filters' state is not carried "
+                      "from window to window): drop --window, or give --window 0")
 
 
 def part(path: DesiredPath, start: float, end: float) -> DesiredPath:
@@ -121,12 +129,11 @@ def optimize_windowed(path: DesiredPath, model: Model, options: OptimizeOptions,
     wall = time.perf_counter()
     problem = options.problem
     if problem.perception is not None:
-        raise WindowError("--perception needs the whole recording in one solve: its filters' state is not "
-                          "carried from window to window; use --window 0")
+        _refuse_perception()
     path = model.config.cue_path(path)
     h_u = problem.h_u
-    keep = h_u * round((window - overlap(model)) / h_u)
-    spans = _windows(path.duration, h_u * round(window / h_u), keep)
+    k = int(round((window - overlap(model)) / h_u))  # the node where the next window starts
+    spans = _windows(path.duration, h_u * round(window / h_u), k * h_u)
     pieces, reports, state, guess = [], [], None, None
     for index, (start, end) in enumerate(spans):
         if announce is not None:
@@ -144,7 +151,6 @@ def optimize_windowed(path: DesiredPath, model: Model, options: OptimizeOptions,
         if last:
             pieces.append((start, sol, len(sol.u)))
             break
-        k = int(round(keep / h_u))
         pieces.append((start, sol, k))
         n = model.n
         x = sol.x[k]
@@ -180,19 +186,13 @@ def _stitched(path: DesiredPath, model: Model, options: OptimizeOptions, pieces,
                      solve_time=sum(s.solve_time for s in chosen), smooth=sol.smooth)
     problem = options.problem
     h_sub = problem.h_u / problem.substeps
-    result_check, _ = check(model, path, whole.plan, h_sub, weights=_weights(path, model, problem))
+    weights = problem.weights if problem.weights is not None else path.weights
+    result_check, _ = check(model, path, whole.plan, h_sub, weights=weights)
     if not result_check.passed:
         raise LimitViolation(result_check, "the windows' stitched trajectory")
-    fractions = np.arange(problem.substeps) / problem.substeps
-    nodes = whole.t_nodes
-    grid = np.r_[(nodes[:-1, None] + np.diff(nodes)[:, None] * fractions[None, :]).ravel(), nodes[-1]]
-    trajectory = evaluate_plan(model, path, whole.plan, grid)
+    trajectory = evaluate_plan(model, path, whole.plan, fine_grid(whole.t_nodes, h_sub))
     timings = {"build": 0.0, "solve": sum(r.solve_time for r in reports), "wall": time.perf_counter() - wall,
                "windows": len(pieces)}
     return Result(path=path, model=model, options=options, method=problem.solver, solution=whole,
                   trajectory=trajectory, check=result_check, starts=tuple(reports), timings=timings)
-
-
-def _weights(path: DesiredPath, model: Model, problem) -> np.ndarray:
-    return np.asarray(problem.weights if problem.weights is not None else path.weights, float)
 
