@@ -39,7 +39,10 @@ from desdemona.realtime import RealTimeIteration
 from desdemona.transcription import CueingProblem
 
 
-REST_RATE = 0.05  # rad/s: below this over a whole seed the yaw counts as still (0.01 m/s^2 centripetal at 4 m)
+# rad/s: below this over a whole seed the yaw counts as still. Only zero rate is a stationary point: at
+# any rate the linearisation sees what turning faster gives. 0.05 re-seeded a slow steady turn every
+# few cycles and kicked every joint each time ("Spin-up from rest").
+REST_RATE = 0.005
 
 
 @dataclass(frozen=True)
@@ -61,6 +64,12 @@ class MPCOptions:
     (chapter 6): the controller then carries the filter states of what the person has felt and of
     what they should have felt from step to step; spin_up : fraction of the yaw's acceleration limit
     with which a still yaw is seeded (:meth:`MPC._leave_rest`), 0 to switch it off.
+
+    rti_step : the share of each real-time iteration's QP step taken from the previous plan
+    (:class:`~desdemona.realtime.RealTimeIteration`; 1 from a fresh seed). The Gauss-Newton model leaves
+    out the curvature of large residuals: where the target is out of reach it overshoots, and one full
+    step a cycle swings from one side of the optimum to the other, cycle after cycle ("Damped real-time
+    iteration").
 
     tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon (None: ``step``
     throughout): what the plan does in a second matters only through where it leaves the machine, and
@@ -88,6 +97,7 @@ class MPCOptions:
     qp_solver: str = "hpipm"
     perception: VestibularModel | None = None
     spin_up: float = 0.2
+    rti_step: float = 0.5
     tail_step: float | None = 0.1
     fine: float = 0.4
     jerk_weight: float | None = None
@@ -102,6 +112,8 @@ class MPCOptions:
         if not (abs(r - round(r)) < 1e-9 and 1 <= round(r) and self.period <= self.horizon - self.step):
             raise ValueError(f"replan = {self.replan}: the re-plan period must be a whole number of steps "
                              f"({self.step:g} s) and shorter than the horizon ({self.horizon:g} s)")
+        if not 0.0 < self.rti_step <= 1.0:
+            raise ValueError(f"rti_step = {self.rti_step}: the share of the QP's step, in (0, 1]")
         if self.reach is not None and not self.reach >= self.horizon:
             raise ValueError(f"reach = {self.reach}: must be at least the horizon ({self.horizon:g} s)")
 
@@ -392,15 +404,17 @@ class MPC:
         Returns a :class:`_Solved`."""
         prob = self.problem
         method = method or self.options.plan_method
-        u = self._shifted_plan(prob) if self.plan is not None else np.zeros((prob.N, self.model.n))
-        u = self._leave_rest(qd, u)
+        seed = self._shifted_plan(prob) if self.plan is not None else np.zeros((prob.N, self.model.n))
+        u = self._leave_rest(qd, seed)
+        # a share of the step from the previous plan; the whole step from a fresh seed
+        share = self.options.rti_step if (self.plan is not None and u is seed) else 1.0
         # RTI: a consistent point, not clipped
         x, controls = prob.guess(q, qd, u, a, clip=method != "rti", filters=self.z if prob.nz else None)
         bounds = prob.start_bounds(q, qd, a, self.z, positions=self._placing(q) if place else None)
         if self.model.config.takes_modulus:
             self._one_way(qd, a, bounds)
         start = time.perf_counter()
-        w, success, cost = prob.solve_from(x, controls, bounds, data, self._rti if method == "rti" else None)
+        w, success, cost = prob.solve_from(x, controls, bounds, data, self._rti if method == "rti" else None, share)
         elapsed = time.perf_counter() - start
         q0, accelerations, jerks = prob.plan_of(w)
         return _Solved((accelerations, jerks), success, elapsed, q0, cost)

@@ -543,15 +543,16 @@ class CueingProblem(Formulation):
         else:
             bounds.ubx[rates] = np.minimum(bounds.ubx[rates], 0.0)
 
-    def solve_from(self, x, controls, bounds: Bounds, data, rti: RealTimeIteration | None = None):
+    def solve_from(self, x, controls, bounds: Bounds, data, rti: RealTimeIteration | None = None,
+                   share: float = 1.0):
         """Solve the parametric problem from the guess (node states ``x``, ``controls``) within
         ``bounds`` for the stages' ``data`` (:meth:`with_steps`): by one real-time iteration with
-        ``rti``, else by the solver to convergence. Returns (w, success, cost), the cost None for a
-        real-time iteration."""
+        ``rti`` (taking ``share`` of its step), else by the solver to convergence. Returns (w,
+        success, cost), the cost None for a real-time iteration."""
         p = np.asarray(data).ravel(order="F")
         w = self.pack(x, controls)
         if rti is not None:
-            w, success = rti(w, p, bounds)
+            w, success = rti(w, p, bounds, share)
             return w, success, None
         sol = self.solver(x0=w, lbx=bounds.lbx, ubx=bounds.ubx, lbg=bounds.lbg, ubg=bounds.ubg, p=p)
         return sol["x"], bool(self.solver.stats()["success"]), float(sol["f"])
