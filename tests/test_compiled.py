@@ -133,3 +133,19 @@ def test_the_last_node_is_limited(params):
         warnings.simplefilter("error")
         online = CueingProblem(Model(params, "full"), short(), ProblemOptions(h_u=0.1), parametric=True)
     assert online.n_terminal == 0 and not online.compiled
+
+
+def test_the_real_time_iterations_qp_data_compiled_gives_the_same_numbers():
+    """The QP data of the on-line controller compiled as its graph (one stage function per interval)
+    gives what the interpreted flat graph gives."""
+    from desdemona.mpc import MPC, MPCOptions
+    from desdemona.realtime import RealTimeIteration
+
+    problem = MPC(Model(config="yaw-track-cabin"), MPCOptions(horizon=1.0, step=0.05)).problem
+    machine = RealTimeIteration(problem, compile=True).data
+    flat = RealTimeIteration(problem, compile=False).data
+    assert machine.class_name() == "External" and flat.class_name() == "SXFunction"
+    rng = np.random.default_rng(3)
+    w, p = rng.normal(size=problem.nlp["x"].numel()), rng.normal(size=problem.nlp["p"].numel())
+    for a, b in zip(machine(w, p), flat(w, p)):
+        np.testing.assert_allclose(np.asarray(ca.densify(a)), np.asarray(ca.densify(b)), rtol=1e-12, atol=1e-12)

@@ -8,7 +8,7 @@ import pytest
 
 from desdemona import Model, profiles
 from desdemona.offline import OptimizeOptions, optimize
-from desdemona.mpc import MPC, MPCOptions
+from desdemona.mpc import MPC, REST_RATE, MPCOptions
 from desdemona.online import OnlineOptions, run
 from desdemona.plan import advance
 from desdemona.predictors import PREDICTORS, HoldPredictor, predict_hold, predict_linear, predict_perfect
@@ -518,3 +518,68 @@ def test_a_modulus_below_g_is_planned_for_as_g_and_the_cabin_stays_upright():
                                                                      reach=2.0)))
     assert result.quality.felt_direction()["peak_deg"] < 30.0
     assert result.check.rms < result.baseline_check.rms
+
+
+def _session_run(path, **timing):
+    """The ``online`` command's run on yaw-track-cabin with the hold predictor, without a deadline."""
+    from desdemona import session
+
+    model = Model(config="yaw-track-cabin")
+    cued = session.online(path, model, predictor="hold", deadline=float("inf"), **timing)
+    return run(cued.path, model, cued.options)
+
+
+def _worst_reversals(result) -> float:
+    return max(result.quality.to_dict()["joints"]["reversals_per_s"].values())
+
+
+@pytest.mark.parametrize("share", [1.0, 0.5])
+def test_an_unreachable_held_force_does_not_swing_the_plan_from_cycle_to_cycle(share):
+    """A sustained force beyond what yaw-track-cabin can hold (the rudder kick's -3.2 m/s^2 forward,
+    held by the hold predictor): the cabin's yaw turns the small force the machine can hold towards it.
+    The Gauss-Newton model leaves out the curvature of that large residual, so one full QP step a cycle
+    overshoots and the next swings back: 39 reversals a second of the cabin's acceleration. Half the
+    step from the previous plan (the default) is below one a second ("Damped real-time iteration")."""
+    t = np.arange(0, 10.0 + 1e-9, 0.01)
+    S = np.tile([0.0, 0.0, 0.0, -3.2, 1.2, 8.9], (len(t), 1))
+    S[:, 2] = 0.03 * np.sin(0.5 * t)
+    result = _session_run(DesiredPath("unreachable", t, S), rti_step=share)
+    if share == 1.0:
+        assert _worst_reversals(result) > 10.0  # the cause, shown: full steps swing
+    else:
+        assert _worst_reversals(result) < 1.0
+
+
+def test_a_still_yaw_is_drawn_towards_a_spin_up_by_degrees():
+    """A still yaw is seeded with a spin-up (zero rate is a stationary point of the cue). Switched to
+    a spin-up whenever the yaw's rate over the seed dipped below REST_RATE, a slow steady turn (the
+    737's, on yaw-track-cabin) was re-seeded every few cycles and each re-seed kicked every joint (5
+    reversals a second); the seed is drawn towards the spin-up by degrees now, all the way at rest and
+    not at all from REST_RATE on."""
+    model = Model(config="yaw-track-cabin")
+    mpc = MPC(model, MPCOptions(horizon=1.0, step=0.05, deadline=float("inf")))
+    N = mpc.problem.N
+    spin = mpc.options.spin_up * model.limits.acceleration[0]
+    seeds = []
+    for rate in (0.0, 0.5 * REST_RATE, 0.999 * REST_RATE, 1.001 * REST_RATE):
+        seeds.append(mpc._leave_rest(np.array([rate, 0.0, 0.0]), np.zeros((N, model.n)))[:, 0])
+    np.testing.assert_allclose(seeds[0], spin)
+    np.testing.assert_allclose(seeds[1], 0.5 * spin, rtol=0.05)
+    assert np.all(np.abs(seeds[2]) < 0.01 * spin) and np.all(seeds[3] == 0.0)
+
+
+def test_the_real_time_iteration_takes_the_share_of_its_step():
+    with pytest.raises(ValueError, match="rti_step"):
+        MPCOptions(rti_step=0.0)
+    model = Model(config="yaw-track-cabin")
+    mpc = MPC(model, MPCOptions(horizon=1.0, step=0.05, deadline=float("inf")))
+    prob = mpc.problem
+    x, u = prob.guess(np.zeros(model.n), np.array([0.3, 0.0, 0.0]), np.zeros((prob.N, model.n)), np.zeros(model.n))
+    w = prob.pack(x, u)
+    bounds = prob.start_bounds(np.zeros(model.n), np.array([0.3, 0.0, 0.0]), np.zeros(model.n))
+    data = np.asarray(prob.with_steps(np.tile([0, 0, 0.1, -2.0, 1.0, 9.0], (prob.N, len(prob.fractions))).T))
+    p = data.ravel(order="F")
+    whole, ok = mpc._rti(w, p, bounds)
+    half, ok_half = mpc._rti(w, p, bounds, 0.5)
+    assert ok and ok_half and np.linalg.norm(whole - w) > 1e-3
+    np.testing.assert_allclose(half - w, 0.5 * (whole - w), atol=1e-12)

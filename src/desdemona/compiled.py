@@ -47,13 +47,14 @@ def compiler() -> str | None:
     return shutil.which(os.environ.get("CC", "cc"))
 
 
-def library(functions: list[ca.Function]) -> tuple[str, Path]:
-    """The C source of ``functions`` and the path its compiled library has in the cache."""
+def library(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> tuple[str, Path]:
+    """The C source of ``functions`` and the path its compiled library (compiled with ``flags``) has
+    in the cache."""
     generator = ca.CodeGenerator("stages.c", {"with_header": False})
     for function in functions:
         generator.add(function)
     source = generator.dump()
-    key = hashlib.sha256("\n".join([ca.__version__, str(compiler()), *FLAGS, source]).encode()).hexdigest()
+    key = hashlib.sha256("\n".join([ca.__version__, str(compiler()), *flags, source]).encode()).hexdigest()
     return source, cache_dir() / f"stages-{key[:24]}.so"
 
 
@@ -62,10 +63,10 @@ def is_cached(functions: list[ca.Function]) -> bool:
     return library(functions)[1].exists()
 
 
-def compiled(functions: list[ca.Function]) -> list[ca.Function] | None:
-    """The same functions, evaluated by a compiled library from the cache (compiled now if it is not
-    there yet), or None without a working compiler (with a warning that says why)."""
-    source, path = library(functions)
+def compiled(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> list[ca.Function] | None:
+    """The same functions, evaluated by a library compiled with ``flags`` from the cache (compiled now
+    if it is not there yet), or None without a working compiler (with a warning that says why)."""
+    source, path = library(functions, flags)
     if not path.exists():
         cc = compiler()
         if cc is None:
@@ -82,7 +83,7 @@ def compiled(functions: list[ca.Function]) -> list[ca.Function] | None:
             c_file, so_file = Path(work) / "stages.c", Path(work) / path.name
             c_file.write_text(source)
             try:
-                subprocess.run([cc, *FLAGS, str(c_file), "-o", str(so_file), "-lm"], check=True,
+                subprocess.run([cc, *flags, str(c_file), "-o", str(so_file), "-lm"], check=True,
                                capture_output=True, text=True, timeout=TIMEOUT)
             except (OSError, subprocess.SubprocessError) as error:
                 detail = getattr(error, "stderr", "") or str(error)

@@ -39,10 +39,7 @@ from desdemona.realtime import RealTimeIteration
 from desdemona.transcription import CueingProblem
 
 
-# rad/s: below this over a whole seed the yaw counts as still. Only zero rate is a stationary point: at
-# any rate the linearisation sees what turning faster gives. 0.05 re-seeded a slow steady turn every
-# few cycles and kicked every joint each time ("Spin-up from rest").
-REST_RATE = 0.005
+REST_RATE = 0.05  # rad/s: below this over a whole seed the yaw counts as still (0.01 m/s^2 centripetal at 4 m)
 
 
 @dataclass(frozen=True)
@@ -66,9 +63,13 @@ class MPCOptions:
     with which a still yaw is seeded (:meth:`MPC._leave_rest`), 0 to switch it off.
 
     rti_step : the share of each real-time iteration's QP step taken from the previous plan
-    (:class:`~desdemona.realtime.RealTimeIteration`; 1 from a fresh seed). The Gauss-Newton model leaves
-    out the curvature of large residuals: where the target is out of reach it overshoots, and one full
-    step a cycle swings from one side of the optimum to the other, cycle after cycle ("Damped real-time
+    (:class:`~desdemona.realtime.RealTimeIteration`; 1 from a fresh seed); None: 0.5 where a gimbal
+    turns the cabin against the force the arm and track give (``yaw-track-cabin``, ``full``), else 1.
+    The Gauss-Newton model leaves out the curvature of large residuals: where the target is out of
+    reach, turning the small force the machine can hold towards it overshoots, and one full step a
+    cycle swings the plan from one side of the optimum to the other, cycle after cycle. Where the
+    cabin follows the force (``dfs``) it did not swing, and half steps lag a fast target; without a
+    gimbal (``yaw-track``) half steps led the plan where its QP had no solution ("Damped real-time
     iteration").
 
     tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon (None: ``step``
@@ -97,7 +98,7 @@ class MPCOptions:
     qp_solver: str = "hpipm"
     perception: VestibularModel | None = None
     spin_up: float = 0.2
-    rti_step: float = 0.5
+    rti_step: float | None = None
     tail_step: float | None = 0.1
     fine: float = 0.4
     jerk_weight: float | None = None
@@ -112,7 +113,7 @@ class MPCOptions:
         if not (abs(r - round(r)) < 1e-9 and 1 <= round(r) and self.period <= self.horizon - self.step):
             raise ValueError(f"replan = {self.replan}: the re-plan period must be a whole number of steps "
                              f"({self.step:g} s) and shorter than the horizon ({self.horizon:g} s)")
-        if not 0.0 < self.rti_step <= 1.0:
+        if self.rti_step is not None and not 0.0 < self.rti_step <= 1.0:
             raise ValueError(f"rti_step = {self.rti_step}: the share of the QP's step, in (0, 1]")
         if self.reach is not None and not self.reach >= self.horizon:
             raise ValueError(f"reach = {self.reach}: must be at least the horizon ({self.horizon:g} s)")
@@ -224,6 +225,8 @@ class MPC:
     def __init__(self, model: Model, options: MPCOptions = MPCOptions(), weights=None):
         self.model, self.options = model, options
         self.deadline = options.deadline if options.deadline is not None else options.period
+        gimbals = not model.config.aligned and any(j in model.config.free for j in (3, 4, 5))
+        self.rti_step = options.rti_step or (0.5 if gimbals else 1.0)
         steps = options.grid()
         t = np.r_[0.0, np.cumsum(steps)]
         # A placeholder path fixes the problem's shape; the preview arrives as its parameter each step.
@@ -404,10 +407,9 @@ class MPC:
         Returns a :class:`_Solved`."""
         prob = self.problem
         method = method or self.options.plan_method
-        seed = self._shifted_plan(prob) if self.plan is not None else np.zeros((prob.N, self.model.n))
-        u = self._leave_rest(qd, seed)
-        # a share of the step from the previous plan; the whole step from a fresh seed
-        share = self.options.rti_step if (self.plan is not None and u is seed) else 1.0
+        u = self._shifted_plan(prob) if self.plan is not None else np.zeros((prob.N, self.model.n))
+        u = self._leave_rest(qd, u)
+        share = self.rti_step if self.plan is not None else 1.0  # the whole step from a fresh seed
         # RTI: a consistent point, not clipped
         x, controls = prob.guess(q, qd, u, a, clip=method != "rti", filters=self.z if prob.nz else None)
         bounds = prob.start_bounds(q, qd, a, self.z, positions=self._placing(q) if place else None)
@@ -471,19 +473,23 @@ class MPC:
 
         Zero yaw rate is a stationary point of the cue: the centripetal terms and the modulus have no
         gradient there, so a solve linearised at a still yaw returns a still yaw forever, and a run
-        from rest never turns the arm. Where the yaw's rate stays below ``REST_RATE`` over the whole
-        seed, the seed spins it up at ``options.spin_up`` times its acceleration limit (in the
-        direction it already turns): the linearisation then sees what turning would give, and the
-        solve decides whether to turn ("Spin-up from rest").
+        from rest never turns the arm. Where the yaw's fastest rate over the seed is below
+        ``REST_RATE``, the seed's yaw acceleration is drawn towards ``options.spin_up`` times its limit
+        (in the direction it already turns), the more the stiller it is: the linearisation then sees
+        what turning would give, and the solve decides whether to turn ("Spin-up from rest"). Drawn by
+        degrees, not switched: a seed switched to a spin-up whenever a slow turn dipped below the
+        threshold kicked every joint each time ("Damped real-time iteration").
         """
         if 0 not in self.model.config.free or self.options.spin_up == 0.0:
             return u
         k = self.model.config.free.index(0)
         rates = qd[k] + np.cumsum(u[:, k] * self.problem.steps)
-        if np.any(np.abs(rates) >= REST_RATE):
+        stillness = 1.0 - float(np.max(np.abs(rates))) / REST_RATE
+        if stillness <= 0.0:
             return u
         u = u.copy()
-        u[:, k] = (1.0 if qd[k] >= 0 else -1.0) * self.options.spin_up * self.limits.acceleration[k]
+        spin = (1.0 if qd[k] >= 0 else -1.0) * self.options.spin_up * self.limits.acceleration[k]
+        u[:, k] += stillness * (spin - u[:, k])
         return u
 
     def _safe(self, q, qd, qdd, jerk) -> bool:

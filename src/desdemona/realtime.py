@@ -10,11 +10,15 @@ import numpy as np
 from desdemona import compiled
 from desdemona.transcription import Bounds, CueingProblem
 
-# The real-time iteration's QP data from which it is compiled (:mod:`desdemona.compiled`): the same
-# numbers, bit for bit, several times faster. Measured on full, 20 Hz, 4 s horizon with a 0.2 s tail
-# (about 350,000 instructions): 1.42 ms a cycle interpreted, 0.40 ms compiled, compiled once in 11 s
-# and kept in the cache; the 2 s dfs horizon at 50 Hz stays below it.
-RTI_COMPILE_WORK = 300_000
+# The real-time iteration's QP data is compiled to machine code (:mod:`desdemona.compiled`) as the graph
+# it is built as: one stage function called once per interval, so the C source stays small. Measured
+# on 2026-12-02, 4 s horizon on full at 50 Hz (56 intervals): 0.43-0.48 ms a cycle, compiled in 3 s,
+# against 3.4 ms flattened and interpreted and 8.6 ms flattened and compiled at -O0 (the straight-line
+# code of 740,000 instructions); the same numbers bit for bit ("Compiled QP data"). Below
+# RTI_COMPILE_WORK instructions of the flat graph the virtual machine is as fast (yaw-track-cabin's
+# 112,000: 0.3 ms either way) and nothing is compiled.
+RTI_FLAGS = ("-O2", "-fPIC", "-shared")
+RTI_COMPILE_WORK = 150_000
 
 
 class RealTimeIteration:
@@ -24,7 +28,8 @@ class RealTimeIteration:
     Cost: sum of squared stage residuals r (the problem's own), Hessian 2 J_r^T J_r (convex, so
     active-set solvers such as daqp apply), gradient 2 J_r^T r; constraints linearised with their
     exact Jacobian; all at the linearisation point w and the preview p. ``compile``: evaluate the QP's
-    data compiled to machine code (None: from :data:`RTI_COMPILE_WORK` instructions on)."""
+    data compiled to machine code (:data:`RTI_FLAGS`; None: from :data:`RTI_COMPILE_WORK` instructions
+    on, where a C compiler is found), else flattened to one SX graph in CasADi's virtual machine."""
 
     def __init__(self, prob: CueingProblem, qp_solver: str = "hpipm", compile: bool | None = None):
         N, nx, nu = prob.N, prob.nx, prob.nu
@@ -43,11 +48,12 @@ class RealTimeIteration:
         H = H + 1e-9 * ca.MX.eye(N * nw + nx)
         gradient = ca.vertcat(ca.vec(g_blocks), ca.MX.zeros(nx))
         g, A = prob.derivatives["jac_g"](w, p)
-        # flattened to SX: the mapped graph spends more time slicing than computing (0.22 -> 0.10 ms
-        # for the 2 s dfs horizon at 50 Hz; building the flat graph takes 0.01-0.1 s)
-        qp_data = ca.Function("qp_data", [w, p], [H, gradient, A, g]).expand()
+        graph = ca.Function("qp_data", [w, p], [H, gradient, A, g])
+        # interpreted, flattened to SX: the mapped graph spends more time slicing than computing
+        # (0.22 -> 0.10 ms for the 2 s dfs horizon at 50 Hz; building the flat graph takes 0.01-0.1 s)
+        qp_data = graph.expand()
         if compile is True or (compile is None and qp_data.n_instructions() >= RTI_COMPILE_WORK):
-            qp_data = (compiled.compiled([qp_data]) or [qp_data])[0]
+            qp_data = (compiled.compiled([graph], RTI_FLAGS) or [qp_data])[0]
         options = {"error_on_fail": False, "print_time": False}
         if qp_solver == "hpipm":
             # HPIPM exploits the stage structure (measured: 0.8 ms for the 2 s dfs horizon at 50 Hz in
@@ -64,15 +70,16 @@ class RealTimeIteration:
         qp = ca.conic("rti", qp_solver, {"h": qp_data.sparsity_out(0), "a": qp_data.sparsity_out(2)}, options)
         self.data, self.qp = qp_data, qp
 
-    def __call__(self, w, p, bounds: Bounds, share: float = 1.0) -> tuple[np.ndarray, bool]:
+    def __call__(self, w, p, bounds: Bounds, share=1.0) -> tuple[np.ndarray, bool]:
         """One QP step from the linearisation point ``w`` for the parameter ``p``: the new point, and
         whether the QP solver succeeded.
 
-        share : the share of the QP's step taken, in (0, 1]. The QP's constraints are linear, so a
-        point between ``w`` and the QP's solution keeps them as both ends do: a ``w`` that starts at
-        the measured state and follows the dynamics (the shifted plan) still does."""
+        share : the share of the QP's step taken, in (0, 1], or a function of the step that gives it.
+        The QP's constraints are linear, so a point between ``w`` and the QP's solution keeps each
+        one that both ends keep."""
         H, gradient, A, g = self.data(w, p)
         g = np.asarray(g).ravel()
         sol = self.qp(h=H, g=gradient, a=A, lba=bounds.lbg - g, uba=bounds.ubg - g, lbx=bounds.lbx - w,
                       ubx=bounds.ubx - w)
-        return w + share * np.asarray(sol["x"]).ravel(), bool(self.qp.stats()["success"])
+        step = np.asarray(sol["x"]).ravel()
+        return w + (share(step) if callable(share) else share) * step, bool(self.qp.stats()["success"])
