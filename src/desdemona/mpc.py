@@ -63,14 +63,14 @@ class MPCOptions:
     with which a still yaw is seeded (:meth:`MPC._leave_rest`), 0 to switch it off.
 
     rti_step : the share of each real-time iteration's QP step taken from the previous plan
-    (:class:`~desdemona.realtime.RealTimeIteration`; 1 from a fresh seed); None: 0.5 where a gimbal
-    turns the cabin against the force the arm and track give (``yaw-track-cabin``, ``full``), else 1.
-    The Gauss-Newton model leaves out the curvature of large residuals: where the target is out of
-    reach, turning the small force the machine can hold towards it overshoots, and one full step a
-    cycle swings the plan from one side of the optimum to the other, cycle after cycle. Where the
-    cabin follows the force (``dfs``) it did not swing, and half steps lag a fast target; without a
-    gimbal (``yaw-track``) half steps led the plan where its QP had no solution ("Damped real-time
-    iteration").
+    (:class:`~desdemona.realtime.RealTimeIteration`; 1 from a fresh seed); None: 0.5 where the cabin
+    turns about the vertical but cannot tilt (``yaw-track-cabin``), else 1. The Gauss-Newton model
+    leaves out the curvature of large residuals: where a sustained force is out of reach, turning the
+    small force the arm can hold towards it overshoots, and one full step a cycle swings the plan from
+    one side of the optimum to the other, cycle after cycle. A cabin that tilts reaches most sustained
+    forces with gravity, and there (``full``) as on ``dfs`` and ``yaw-track`` the plan did not swing,
+    while half steps lagged a fast target and led the plan, now and then, to a QP without a solution
+    ("Damped real-time iteration").
 
     tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon (None: ``step``
     throughout): what the plan does in a second matters only through where it leaves the machine, and
@@ -225,8 +225,9 @@ class MPC:
     def __init__(self, model: Model, options: MPCOptions = MPCOptions(), weights=None):
         self.model, self.options = model, options
         self.deadline = options.deadline if options.deadline is not None else options.period
-        gimbals = not model.config.aligned and any(j in model.config.free for j in (3, 4, 5))
-        self.rti_step = options.rti_step or (0.5 if gimbals else 1.0)
+        free = model.config.free
+        turns_only = 4 in free and 3 not in free and not model.config.aligned  # the cabin turns, cannot tilt
+        self.rti_step = options.rti_step or (0.5 if turns_only else 1.0)
         steps = options.grid()
         t = np.r_[0.0, np.cumsum(steps)]
         # A placeholder path fixes the problem's shape; the preview arrives as its parameter each step.
