@@ -70,16 +70,14 @@ class RealTimeIteration:
         qp = ca.conic("rti", qp_solver, {"h": qp_data.sparsity_out(0), "a": qp_data.sparsity_out(2)}, options)
         self.data, self.qp = qp_data, qp
 
-    def __call__(self, w, p, bounds: Bounds, share=1.0) -> tuple[np.ndarray, bool]:
+    def __call__(self, w, p, bounds: Bounds, share: float = 1.0) -> tuple[np.ndarray, bool]:
         """One QP step from the linearisation point ``w`` for the parameter ``p``: the new point, and
         whether the QP solver succeeded.
 
-        share : the share of the QP's step taken, in (0, 1], or a function of the step that gives it.
-        The QP's constraints are linear, so a point between ``w`` and the QP's solution keeps each
-        one that both ends keep."""
+        share : the share of the QP's step taken, in (0, 1]. The QP's constraints are linear, so a
+        point between ``w`` and the QP's solution keeps each one that both ends keep."""
         H, gradient, A, g = self.data(w, p)
         g = np.asarray(g).ravel()
         sol = self.qp(h=H, g=gradient, a=A, lba=bounds.lbg - g, uba=bounds.ubg - g, lbx=bounds.lbx - w,
                       ubx=bounds.ubx - w)
-        step = np.asarray(sol["x"]).ravel()
-        return w + (share(step) if callable(share) else share) * step, bool(self.qp.stats()["success"])
+        return w + share * np.asarray(sol["x"]).ravel(), bool(self.qp.stats()["success"])

@@ -544,12 +544,11 @@ class CueingProblem(Formulation):
             bounds.ubx[rates] = np.minimum(bounds.ubx[rates], 0.0)
 
     def solve_from(self, x, controls, bounds: Bounds, data, rti: RealTimeIteration | None = None,
-                   share=1.0):
+                   share: float = 1.0):
         """Solve the parametric problem from the guess (node states ``x``, ``controls``) within
         ``bounds`` for the stages' ``data`` (:meth:`with_steps`): by one real-time iteration with
-        ``rti`` (taking ``share`` of its step, a number or a function of the step), else by the solver
-        to convergence. Returns (w,
-        success, cost), the cost None for a real-time iteration."""
+        ``rti`` (taking ``share`` of its step), else by the solver to convergence. Returns (w, success,
+        cost), the cost None for a real-time iteration."""
         p = np.asarray(data).ravel(order="F")
         w = self.pack(x, controls)
         if rti is not None:
