@@ -68,8 +68,8 @@ class MPCOptions:
     leaves out the curvature of large residuals: where a sustained force is out of reach, turning the
     small force the arm can hold towards it overshoots, and one full step a cycle swings the plan from
     one side of the optimum to the other, cycle after cycle. A cabin that tilts reaches most sustained
-    forces with gravity, and there (``full``) as on ``dfs`` and ``yaw-track`` the plan did not swing,
-    while half steps lagged a fast target and led the plan, now and then, to a QP without a solution
+    forces with gravity; there (``full``), as on ``dfs`` and ``yaw-track``, the plan hardly swings,
+    and half steps lagged a fast target or led the plan, now and then, to a QP without a solution
     ("Damped real-time iteration").
 
     tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon (None: ``step``
