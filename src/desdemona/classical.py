@@ -39,12 +39,12 @@ GIMBAL_BANDWIDTH = {3: 5.0, 4: 5.0, 5: 1.5}
 MAX_TILT_SINE = 0.5
 
 
-def tilt_angles(f_x, f_y, g: float) -> tuple:
+def tilt_angles(f_x, f_y, g: float, limit: float = MAX_TILT_SINE) -> tuple:
     """The outer gimbal (q4, roll) and cabin gimbal (q6, pitch) angles [rad] at which gravity is felt
     as the horizontal specific forces f_y = g sin q4 and f_x = -g sin q6 (tilt coordination), each
-    within :data:`MAX_TILT_SINE`; arrays or numbers."""
-    return (np.arcsin(np.clip(np.asarray(f_y) / g, -MAX_TILT_SINE, MAX_TILT_SINE)),
-            -np.arcsin(np.clip(np.asarray(f_x) / g, -MAX_TILT_SINE, MAX_TILT_SINE)))
+    sine within ``limit``; arrays or numbers."""
+    return (np.arcsin(np.clip(np.asarray(f_y) / g, -limit, limit)),
+            -np.arcsin(np.clip(np.asarray(f_x) / g, -limit, limit)))
 
 
 #: Time constant [s] of the washout's rate loops (rotations and tilt).

@@ -32,7 +32,7 @@ import numpy as np
 import scipy.linalg
 import scipy.signal
 
-from desdemona.classical import MAX_TILT_SINE, RATE_LOOP, SCALES, _Follower, _Guard, _rate_command
+from desdemona.classical import MAX_TILT_SINE, RATE_LOOP, SCALES, _Follower, _Guard, _rate_command, tilt_angles
 from desdemona.model import Model
 from desdemona.plan import Plan, State, start_acceleration, start_state
 from desdemona.profiles import DesiredPath
@@ -265,11 +265,10 @@ def _targets(path: DesiredPath, model: Model, t, o: Washout, state, trimmed: boo
             rate[:, k] = _filtered(*hp1, S_d[:, 2], dt, trimmed)
         elif joint == 3:
             rate[:, k] = _filtered(*hp1, S_d[:, 0], dt, trimmed)
-            angle[:, k] = np.arcsin(np.clip(_filtered(*lp2, S_d[:, 4], dt, trimmed) / g, -o.tilt_limit, o.tilt_limit))
+            angle[:, k] = tilt_angles(0.0, _filtered(*lp2, S_d[:, 4], dt, trimmed), g, o.tilt_limit)[0]
         elif joint == 5:
             rate[:, k] = _filtered(*hp1, S_d[:, 1], dt, trimmed)
-            angle[:, k] = -np.arcsin(np.clip(_filtered(*lp2, S_d[:, 3], dt, trimmed) / g, -o.tilt_limit,
-                                             o.tilt_limit))
+            angle[:, k] = tilt_angles(_filtered(*lp2, S_d[:, 3], dt, trimmed), 0.0, g, o.tilt_limit)[1]
     return {"acc": acc, "rate": rate, "angle": angle, "centre": centre, "side": 0.0}
 
 
