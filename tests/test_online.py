@@ -11,10 +11,11 @@ from desdemona.offline import OptimizeOptions, optimize
 from desdemona.mpc import MPC, REST_RATE, MPCOptions
 from desdemona.online import OnlineOptions, run
 from desdemona.plan import advance
-from desdemona.predictors import PREDICTORS, HoldPredictor, predict_hold, predict_linear, predict_perfect
+from desdemona.predictors import (HOLD_PERSISTENCE, PREDICTORS, HoldPredictor, cue_age, predict_hold, predict_linear,
+                                  predict_perfect)
 from desdemona.perception import thesis_model
 from desdemona.problem import ProblemOptions
-from desdemona.profiles import DesiredPath
+from desdemona.profiles import DesiredPath, along_vertical
 from desdemona.simulate import check, closed_loop
 
 # No deadline in tests: timings are measured in the benchmark, never asserted here.
@@ -122,8 +123,9 @@ def test_predictors():
     line = np.polyfit(path.t[recent], path.S_d[recent, 4], 1)
     np.testing.assert_allclose(hold.S_d[:, 4], np.polyval(line, now), rtol=1e-9)
     np.testing.assert_allclose(predict_hold(path, now, horizon, window=1e-9).S_d[:, 4], path.sample([now])[0, 4])
-    fresh = HoldPredictor()  # with no history it holds the same estimate
+    fresh = HoldPredictor(persistence=None)  # with no history it holds the same estimate
     np.testing.assert_allclose(fresh(path, now, horizon).S_d, hold.S_d, rtol=1e-12)
+    np.testing.assert_allclose(HoldPredictor()(path, now, horizon).S_d[0], hold.S_d[0], rtol=1e-12)
     linear = predict_linear(path, now, horizon)
     k = np.searchsorted(path.t, now, side="right") - 1
     slope = (path.S_d[k, 4] - path.S_d[k - 1, 4]) / (path.t[k] - path.t[k - 1])
@@ -414,6 +416,42 @@ def test_hold_predictor_keeps_noise_out_and_follows_a_step():
         assert hold(ramp, now, 1.0).modulus[0] == pytest.approx(10.0 + 2.0 * now, abs=1e-9)
 
 
+def test_cue_age_is_how_long_a_channel_kept_half_its_departure_from_rest():
+    times = np.arange(0.0, 3.0, 0.5)  # 0 .. 2.5
+    values = np.array([[0.0, 1.0], [4.0, 1.0], [0.9, -2.0], [3.0, -2.0], [2.5, -3.0], [2.0, -2.0]])
+    # channel 0: 2.0 now, at >= 1.0 since the 0.9 at t = 1.0: 1.5 s; channel 1: -2.0 now, on that side
+    # at >= 1.0 since the +1.0 at t = 0.5: 2.0 s
+    np.testing.assert_allclose(cue_age(times, values, np.zeros(2)), [1.5, 2.0])
+    np.testing.assert_allclose(cue_age(times, values[:, :1] + 9.81, np.array([9.81])), [1.5])
+    np.testing.assert_allclose(cue_age(times, np.ones((6, 1)), np.zeros(1)), [2.5])  # never short: all of it
+
+
+def test_hold_predictor_expects_a_cue_to_last_as_long_as_it_has():
+    """f_z at 1 g with a 0.3 s spike to 20 m/s^2 at 2 s, then 14 m/s^2 from 4 s on, and a roll rate of
+    0.5 rad/s from 2 s on (50 Hz calls): 0.2 s into the spike f_z's departure from g is previewed
+    weighed by T / (T + tau) with T = HOLD_PERSISTENCE + 0.2 s, 20 s into the plateau with 0.5 + 20 s,
+    the roll rate with 0.5 + 0.2 s and 0.5 + 22 s; without persistence, or as a modulus, all are held."""
+    t = np.arange(0.0, 30.0, 0.01)
+    fz = np.where(t >= 4.0, 14.0, np.where((t >= 2.0) & (t < 2.3), 20.0, 9.81))
+    S = np.zeros((len(t), 6))
+    S[:, 5], S[:, 0] = fz, np.where(t >= 2.0, 0.5, 0.0)
+    path = DesiredPath("spike", t, S)
+    modulus = along_vertical(DesiredPath("spike", t, None, modulus=fz))  # as dfs cues it: S and the modulus
+    hold, held, hold_modulus = HoldPredictor(), HoldPredictor(persistence=None), HoldPredictor()
+    previews = {}
+    for now in np.arange(0.0, 24.0 + 1e-9, 0.02):
+        previews[round(now, 2)] = hold(path, now, 4.0), held(path, now, 4.0), hold_modulus(modulus, now, 4.0)
+    for now, level, age, roll_age in ((2.2, 20.0, 0.2, 0.2), (24.0, 14.0, 20.0, 22.0)):
+        decaying, kept, as_modulus = previews[now]
+        tau = decaying.t
+        lasting = [(HOLD_PERSISTENCE + a) / (HOLD_PERSISTENCE + a + tau) for a in (age, roll_age)]
+        np.testing.assert_allclose(decaying.S_d[:, 5] - 9.81, (level - 9.81) * lasting[0], atol=0.05 * (level - 9.81))
+        np.testing.assert_allclose(decaying.S_d[:, 0], 0.5 * lasting[1], atol=0.02)
+        np.testing.assert_allclose(kept.S_d, np.tile(kept.S_d[0], (len(tau), 1)))
+        np.testing.assert_allclose(as_modulus.S_d, np.tile(as_modulus.S_d[0], (len(tau), 1)))
+    assert previews[2.2][0].S_d[-1, 5] < 11.5 < 13.0 < previews[24.0][0].S_d[-1, 5]
+
+
 def test_a_steady_start_tilts_the_cabin_to_the_first_desired_force(params):
     """Off dfs, --initial steady starts still with the cabin tilted by tilt coordination of the path's
     first force (the cosine starts at f_y = 5 m/s^2, held at g/2 by 30 deg), and the classical
@@ -533,16 +571,25 @@ def _worst_reversals(result) -> float:
     return max(result.quality.to_dict()["joints"]["reversals_per_s"].values())
 
 
+class _HeldAsItIs(HoldPredictor):
+    def __init__(self):
+        super().__init__(persistence=None)
+
+
 @pytest.mark.parametrize("share", [1.0, 0.5])
-def test_an_unreachable_held_force_does_not_swing_the_plan_from_cycle_to_cycle(share):
+def test_an_unreachable_held_force_does_not_swing_the_plan_from_cycle_to_cycle(share, monkeypatch):
     """A sustained force beyond what yaw-track-cabin can hold (the rudder kick's -3.2 m/s^2 forward,
-    held by the hold predictor): the cabin's yaw turns the small force the machine can hold towards it.
-    The Gauss-Newton model leaves out the curvature of that large residual, so one full QP step a cycle
-    overshoots and the next swings back: 39 reversals a second of the cabin's acceleration. Half the
-    step from the previous plan (the default) is below one a second ("Damped real-time iteration")."""
+    held as it is over the horizon): the cabin's yaw turns the small force the machine can hold towards
+    it. The Gauss-Newton model leaves out the curvature of that large residual, so one full QP step a
+    cycle overshoots and the next swings back: 39 reversals a second of the cabin's acceleration. Half
+    the step from the previous plan (the default) is below one a second ("Damped real-time
+    iteration"), with the held force as it is and with the hold predictor's persistence."""
     t = np.arange(0, 10.0 + 1e-9, 0.01)
     S = np.tile([0.0, 0.0, 0.0, -3.2, 1.2, 8.9], (len(t), 1))
     S[:, 2] = 0.03 * np.sin(0.5 * t)
+    if share == 0.5:
+        assert _worst_reversals(_session_run(DesiredPath("unreachable", t, S), rti_step=share)) < 1.0
+    monkeypatch.setitem(PREDICTORS, "hold", _HeldAsItIs)
     result = _session_run(DesiredPath("unreachable", t, S), rti_step=share)
     if share == 1.0:
         assert _worst_reversals(result) > 10.0  # the cause, shown: full steps swing

@@ -8,7 +8,8 @@ on the vehicle to be simulated and the mission of the pilot". A predictor is a c
 
 - ``perfect``: the true future (the thesis' assumption; the bound for any other predictor);
 - ``hold``: the present value held (:class:`HoldPredictor`: a line's end through the last 0.2 s,
-  moved only when it leaves its noise band);
+  moved only when it leaves its noise band), its departure from rest expected to last about as long
+  as it has lasted so far;
 - ``linear``: extrapolated from the last two samples;
 - ``forecast``: the vehicle's own forecast (:class:`ForecastPredictor`): its model run ahead with the
   pilot's controls held, read from a forecast file (:mod:`desdemona.profiles.forecast`), or in a live
@@ -27,6 +28,7 @@ from __future__ import annotations
 import numpy as np
 
 from desdemona.profiles import DesiredPath
+from desdemona.params import GRAVITY as G
 from desdemona.profiles.forecast import START_TOLERANCE, Forecast
 
 
@@ -49,6 +51,44 @@ HOLD_WINDOW = 0.2
 HOLD_BAND = 2.0
 
 
+#: How long the hold predictor expects a cue to last, at the least [s]. What a held value departs from
+#: rest (no rotation and 1 g upright) is weighed tau ahead by T / (T + tau), T = HOLD_PERSISTENCE +
+#: ``age``, where ``age`` is how long the channel has kept the same side of rest at no less than
+#: :data:`HOLD_AGE_SHARE` of its present departure (in the predictor's own held values, which the noise
+#: band keeps clean): the chance that a cue of that age lasts tau more where cues' lengths have no
+#: typical scale (a Pareto law; a cue is expected to last about as long as it has lasted). A turn or a
+#: take-off run that has lasted 20 s is held nearly as it is; a spike (an elevator doublet's -2 g for
+#: half a second) is not planned for as if it would last the whole horizon. Held for 4 s, that spike turned the cabin on ``full`` over and back
+#: (c172-doublet: felt force RMS 11.8 against the classical washout's 9.2, correlation -0.58, false
+#: rotation 213 deg/s). A modulus path (``dfs``) is held as it is: there a modulus below g is planned
+#: as g and cannot turn the cabin over, and the arm's spin-up needs a sustained modulus seen early
+#: (measured worse with the persistence on 6 of the 7 corpus cases); see docs/benchmarks.md, "Hold
+#: predictor".
+HOLD_PERSISTENCE = 0.5
+
+#: The share of a channel's present departure from rest below which its cue counts as begun afresh.
+HOLD_AGE_SHARE = 0.5
+
+#: How far back the hold predictor remembers its held values for a cue's age [s]: older cues are held
+#: as they are.
+HOLD_AGE_MAX = 60.0
+
+
+def rest(path: DesiredPath) -> np.ndarray:
+    """What the path's channels are at rest: (0, 0, 0, 0, 0, G) for S_d, (G,) for a modulus."""
+    return np.array([0.0, 0.0, 0.0, 0.0, 0.0, G]) if path.S_d is not None else np.array([G])
+
+
+def cue_age(times, values, base) -> np.ndarray:
+    """How long [s] each channel of ``values`` (K, channels) at ``times`` (K,), increasing, has kept
+    the same side of ``base`` at no less than :data:`HOLD_AGE_SHARE` of its last row's departure from
+    it: the last time minus that of the last row short of it; the whole span where none is."""
+    departure = values[-1] - base
+    short = (values - base) * np.sign(departure) < HOLD_AGE_SHARE * np.abs(departure)
+    last = len(times) - 1 - np.argmax(short[::-1], axis=0)  # per channel, the last row short of it
+    return times[-1] - np.where(short.any(axis=0), times[last], times[0])
+
+
 def _present(path: DesiredPath, now: float, window: float) -> tuple[np.ndarray, np.ndarray]:
     """(value, standard error) per channel of the present value: the least-squares line through the
     samples in (now - window, now] at ``now``, and its standard error from the line's residuals; the
@@ -67,11 +107,20 @@ def _present(path: DesiredPath, now: float, window: float) -> tuple[np.ndarray, 
     return line[1], spread * np.sqrt(leverage)
 
 
-def _held(path: DesiredPath, now: float, horizon: float, value) -> DesiredPath:
-    t = now + _grid(path, horizon)
-    S = None if path.S_d is None else np.tile(value, (len(t), 1))
-    M = None if path.S_d is not None else np.full(len(t), max(float(value[0]), 0.0))
-    return DesiredPath(path.name, t - now, S, path.weights, path.description, M)
+def _held(path: DesiredPath, now: float, horizon: float, value, persistence=np.inf) -> DesiredPath:
+    """``value`` over [now, now + horizon], its departure from rest weighed by the chance that it lasts
+    tau more, T / (T + tau), with T = ``persistence`` (per channel, or one for all; infinite: held as
+    it is)."""
+    tau = _grid(path, horizon)
+    base = rest(path)
+    persistence = np.broadcast_to(np.asarray(persistence, dtype=float), base.shape)
+    held = np.isinf(persistence)
+    finite = np.where(held, 1.0, persistence)
+    lasting = np.where(held, 1.0, finite / (finite + tau[:, None]))
+    values = base + (np.asarray(value, dtype=float) - base) * lasting
+    S = None if path.S_d is None else values
+    M = None if path.S_d is not None else np.maximum(values[:, 0], 0.0)
+    return DesiredPath(path.name, tau, S, path.weights, path.description, M)
 
 
 def predict_hold(path: DesiredPath, now: float, horizon: float, window: float | None = None) -> DesiredPath:
@@ -84,7 +133,9 @@ def predict_hold(path: DesiredPath, now: float, horizon: float, window: float | 
 
 class HoldPredictor:
     """The ``hold`` predictor: the present value (:func:`predict_hold`) held over the horizon, with a
-    memory that keeps the noise of a recorded signal out of the plan.
+    memory that keeps the noise of a recorded signal out of the plan, its departure from rest expected
+    to last about as long as it has lasted (:data:`HOLD_PERSISTENCE`; ``persistence=None``: held as it
+    is, whatever its age).
 
     From call to call the held value moves only where the new estimate lies more than ``band``
     standard errors of the estimate (from the line's residuals) away from it, and then only by the
@@ -94,10 +145,28 @@ class HoldPredictor:
     (:func:`predictor`).
     """
 
-    def __init__(self, window: float = HOLD_WINDOW, band: float = HOLD_BAND):
-        if not (window > 0 and band >= 0):
-            raise ValueError("the hold predictor needs window > 0 and band >= 0")
-        self.window, self.band, self.value = window, band, None
+    def __init__(self, window: float = HOLD_WINDOW, band: float = HOLD_BAND,
+                 persistence: float | None = HOLD_PERSISTENCE):
+        if not (window > 0 and band >= 0 and (persistence is None or persistence > 0)):
+            raise ValueError("the hold predictor needs window > 0, band >= 0 and persistence > 0 (or None)")
+        self.window, self.band, self.persistence, self.value = window, band, persistence, None
+        self.times, self.values, self.count = np.zeros(0), None, 0  # the held values, for their age
+
+    def _remember(self, now: float) -> None:
+        """Add (now, held value) to the memory, whose rows older than :data:`HOLD_AGE_MAX` are dropped
+        when it fills (amortised: a copy per filled buffer)."""
+        if self.count == len(self.times):
+            keep = self.times[:self.count] >= now - HOLD_AGE_MAX
+            times = self.times[:self.count][keep]
+            size = max(64, 2 * len(times))
+            values, self.values = self.values, np.zeros((size, len(self.value)))
+            if values is not None:
+                self.values[:len(times)] = values[:self.count][keep]
+            self.times = np.zeros(size)
+            self.times[:len(times)] = times
+            self.count = len(times)
+        self.times[self.count], self.values[self.count] = now, self.value
+        self.count += 1
 
     def __call__(self, path: DesiredPath, now: float, horizon: float) -> DesiredPath:
         estimate, error = _present(path, now, self.window)
@@ -107,7 +176,12 @@ class HoldPredictor:
             excess = estimate - self.value
             width = self.band * error
             self.value = np.where(np.abs(excess) > width, estimate - np.sign(excess) * width, self.value)
-        return _held(path, now, horizon, self.value)
+        if self.persistence is None or path.modulus is not None:  # a modulus is held as it is (HOLD_PERSISTENCE)
+            return _held(path, now, horizon, self.value)
+        self._remember(now)
+        recent = slice(np.searchsorted(self.times[:self.count], now - HOLD_AGE_MAX), self.count)
+        age = cue_age(self.times[recent], self.values[recent], rest(path))
+        return _held(path, now, horizon, self.value, self.persistence + age)
 
 
 def predict_linear(path: DesiredPath, now: float, horizon: float) -> DesiredPath:
