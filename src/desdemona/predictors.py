@@ -58,12 +58,12 @@ HOLD_BAND = 2.0
 #: band keeps clean): the chance that a cue of that age lasts tau more where cues' lengths have no
 #: typical scale (a Pareto law; a cue is expected to last about as long as it has lasted). A turn or a
 #: take-off run that has lasted 20 s is held nearly as it is; a spike (an elevator doublet's -2 g for
-#: half a second) is not planned for as if it would last the whole horizon. Held for 4 s, that spike turned the cabin on ``full`` over and back
-#: (c172-doublet: felt force RMS 11.8 against the classical washout's 9.2, correlation -0.58, false
-#: rotation 213 deg/s). A modulus path (``dfs``) is held as it is: there a modulus below g is planned
-#: as g and cannot turn the cabin over, and the arm's spin-up needs a sustained modulus seen early
-#: (measured worse with the persistence on 6 of the 7 corpus cases); see docs/benchmarks.md, "Hold
-#: predictor".
+#: half a second) is not planned for as if it would last the whole horizon. Held for 4 s, that spike
+#: turned the cabin on ``full`` over and back (c172-doublet: felt force RMS 11.8 against the classical
+#: washout's 9.2, correlation -0.58, false rotation 213 deg/s). A modulus path (``dfs``) is held as it
+#: is: there a modulus below g is planned as g and cannot turn the cabin over, and the arm's spin-up
+#: needs a sustained modulus seen early (measured worse with the persistence on 6 of the 7 corpus
+#: cases); see docs/benchmarks.md, "Hold predictor".
 HOLD_PERSISTENCE = 0.5
 
 #: The share of a channel's present departure from rest below which its cue counts as begun afresh.
