@@ -104,3 +104,18 @@ def test_batch_evaluation_equals_one_by_one(params):
         np.testing.assert_array_equal(batch[k], model.S(q[k], qd[k], qdd[k]))
     with pytest.raises(ValueError, match="shape"):
         model.S(q[:, :5], qd, qdd)
+
+
+def test_gimbal_twin_is_the_same_cabin_attitude_on_the_other_branch():
+    """Rx(a) Rz(b) Ry(c) = Rx(a + pi) Rz(pi - b) Ry(c + pi): the same pose, and at rest the same S."""
+    from desdemona.kinematics import S, cabin_pose, gimbal_twin
+
+    rng = np.random.default_rng(7)
+    for _ in range(5):
+        q = np.r_[rng.uniform(-3, 3), rng.uniform(-4, 4), rng.uniform(-1, 1), rng.uniform(-3, 3, 3)]
+        twin = gimbal_twin(q)
+        np.testing.assert_allclose(cabin_pose(twin), cabin_pose(q), atol=1e-12)
+        np.testing.assert_allclose(S(twin, np.zeros(6), np.zeros(6)), S(q, np.zeros(6), np.zeros(6)), atol=1e-12)
+        assert np.all(np.abs(twin[3:]) <= np.pi) and np.all(twin[:3] == q[:3])
+        wrapped = (q[3:] + np.pi) % (2 * np.pi) - np.pi
+        np.testing.assert_allclose(gimbal_twin(twin)[3:], wrapped, atol=1e-12)

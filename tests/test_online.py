@@ -663,3 +663,22 @@ def test_the_real_time_iteration_takes_the_share_of_its_step():
     half, ok_half = mpc._rti(w, p, bounds, 0.5)
     assert ok and ok_half and np.linalg.norm(whole - w) > 1e-3
     np.testing.assert_allclose(half - w, 0.5 * (whole - w), atol=1e-12)
+
+
+def test_the_classical_loop_starts_on_the_gimbal_branch_it_steers_from():
+    """A placed start with the outer gimbal turned past 90 deg (the cabin's attitude on the gimbals'
+    other branch): the classical loop starts from the same pose on the branch near home, still; from a
+    start it steers from already, or with the gimbals moving, it starts where the MPC did."""
+    from desdemona.kinematics import cabin_pose
+    from desdemona.online import _loop_start
+
+    model = Model(config="full")
+    placed = np.array([0.0, -3.73, -0.99, 3.07, 0.04, -3.14])  # b737-steady-turn's placed start
+    start = _loop_start(model, placed, np.zeros(6))
+    assert abs(start[3]) < 0.1 and abs(start[5]) < 0.01
+    np.testing.assert_allclose(cabin_pose(start), cabin_pose(placed), atol=1e-12)
+    home_branch = np.array([0.0, 0.03, -0.99, -0.04, 3.12, 0.0])
+    assert np.all(_loop_start(model, home_branch, np.zeros(6)) == home_branch)
+    moving = np.r_[0.0, 0.0, 0.0, 0.1, 0.0, 0.0]
+    assert np.all(_loop_start(model, placed, moving) == placed)
+    assert np.all(_loop_start(Model(config="yaw-track-cabin"), placed[[0, 1, 5]], np.zeros(3)) == placed[[0, 1, 5]])

@@ -120,6 +120,22 @@ def gimbal_alignment(f):
     return np.arctan2(-f[..., 1], f[..., 2]), np.arctan2(f[..., 0], np.hypot(f[..., 1], f[..., 2]))
 
 
+#: The outer gimbal, inner gimbal and cabin in the full joint vector: Rx(q4) Rz(q5) Ry(q6) (eq. A.7).
+GIMBALS = (3, 4, 5)
+
+
+def gimbal_twin(q) -> np.ndarray:
+    """The same joint positions with the gimbals on their other branch of the same cabin attitude:
+    Rx(a) Rz(b) Ry(c) = Rx(a + pi) Rz(pi - b) Ry(c + pi), each angle wrapped to [-pi, pi).
+
+    q : (6,) [rad | m]. At rest the two are the same state for the occupant: the same pose, the same S.
+    """
+    twin = np.array(q, dtype=float)
+    a, b, c = twin[list(GIMBALS)]
+    twin[list(GIMBALS)] = (np.array([a + np.pi, np.pi - b, c + np.pi]) + np.pi) % (2.0 * np.pi) - np.pi
+    return twin
+
+
 def path_expression(q, qd, qdd, gravity: float, head_offset) -> ca.SX:
     """S = (omega_cabin, f_cabin) as a CasADi expression (eq. 3.2, A.10-A.19).
 

@@ -19,6 +19,7 @@ import numpy as np
 
 from desdemona import metrics
 from desdemona.classical import classical_dfs, classical_washout, steady_start
+from desdemona.kinematics import GIMBALS, gimbal_twin
 from desdemona.model import Model
 from desdemona.mpc import MPC, MPCOptions
 from desdemona.plan import Plan, start_state
@@ -149,6 +150,23 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
     return judge(path, model, options, loop, controller.deadline)
 
 
+def _loop_start(model: Model, q0, qd0) -> np.ndarray:
+    """Where the classical loop starts: the MPC's start, with a still outer gimbal turned past 90 deg
+    (a start placed on the gimbals' other branch of the cabin's attitude) put on the branch the loop
+    steers from, :func:`~desdemona.kinematics.gimbal_twin`: the same pose and S. The loop steers its
+    gimbal angles from home, and from the other branch it turned the cabin through half a turn
+    (b737-steady-turn on full: felt direction 88 deg, felt force RMS 3.85 against 1.48)."""
+    free = model.config.free
+    if not all(joint in free for joint in GIMBALS):
+        return q0
+    outer, gimbals = free.index(GIMBALS[0]), [free.index(joint) for joint in GIMBALS]
+    if np.any(np.asarray(qd0)[gimbals] != 0.0) or abs((q0[outer] + np.pi) % (2.0 * np.pi) - np.pi) <= np.pi / 2:
+        return q0
+    twin = gimbal_twin(model.config.expand(q0))[list(free)]
+    limits = model.limits
+    return twin if np.all((twin >= limits.position_min) & (twin <= limits.position_max)) else q0
+
+
 def judge(path: DesiredPath, model: Model, options: OnlineOptions, loop: ClosedLoop, deadline: float) -> OnlineResult:
     """A closed-loop session as a checked :class:`OnlineResult`: the plan the machine executed
     (``loop``, from its start) checked independently on the fine grid, and the classical loop run
@@ -165,10 +183,11 @@ def judge(path: DesiredPath, model: Model, options: OnlineOptions, loop: ClosedL
     if not result.passed:
         raise LimitViolation(result, "the closed-loop trajectory")
     nodes = loop.plan.t_nodes
+    start = (_loop_start(model, q0, qd0), qd0)
     if model.config.takes_modulus:
-        classical = classical_dfs(path, model, times=nodes, state=(q0, qd0))
+        classical = classical_dfs(path, model, times=nodes, state=start)
     else:
-        classical = classical_washout(path, model, times=nodes, state=(q0, qd0), trimmed=options.initial == "steady")
+        classical = classical_washout(path, model, times=nodes, state=start, trimmed=options.initial == "steady")
     baseline_check, _ = check(model, path, classical, step=step, weights=weights, perception=perception)
     baseline = evaluate_plan(model, path, classical, nodes, perception)
     return OnlineResult(path=path, model=model, options=options, loop=loop, deadline=deadline,
