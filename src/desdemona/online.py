@@ -52,7 +52,8 @@ class OnlineOptions:
     - "given": ``initial_state`` = (q0, qd0) of the free joints (a given ``initial_state`` alone means
       "given").
 
-    The classical baseline starts from the same state as the MPC."""
+    The classical baseline starts from the same state as the MPC (its gimbals, if still, on the branch
+    of the same cabin attitude that the loop steers from: :func:`_loop_start`)."""
 
     mpc: MPCOptions = MPCOptions()
     predictor: Literal["perfect", "hold", "linear", "route", "forecast"] = "perfect"
@@ -170,9 +171,9 @@ def _loop_start(model: Model, q0, qd0) -> np.ndarray:
 def judge(path: DesiredPath, model: Model, options: OnlineOptions, loop: ClosedLoop, deadline: float) -> OnlineResult:
     """A closed-loop session as a checked :class:`OnlineResult`: the plan the machine executed
     (``loop``, from its start) checked independently on the fine grid, and the classical loop run
-    beside it on the same path from the same start. :func:`run` and the real-time service
-    (:mod:`desdemona.service.serve`) judge their sessions with it. Raises :class:`LimitViolation` if
-    the plan breaks a limit."""
+    beside it on the same path from the same start (:func:`_loop_start`). :func:`run` and the
+    real-time service (:mod:`desdemona.service.serve`) judge their sessions with it. Raises
+    :class:`LimitViolation` if the plan breaks a limit."""
     step = options.mpc.step
     path = model.config.cue_path(path)
     q0, qd0 = loop.plan.q0, loop.plan.qd0
