@@ -28,7 +28,7 @@ from __future__ import annotations
 import numpy as np
 
 from desdemona.profiles import DesiredPath
-from desdemona.params import GRAVITY as G
+from desdemona.profiles.path import REST, G
 from desdemona.profiles.forecast import START_TOLERANCE, Forecast
 
 
@@ -75,8 +75,9 @@ HOLD_AGE_MAX = 60.0
 
 
 def rest(path: DesiredPath) -> np.ndarray:
-    """What the path's channels are at rest: (0, 0, 0, 0, 0, G) for S_d, (G,) for a modulus."""
-    return np.array([0.0, 0.0, 0.0, 0.0, 0.0, G]) if path.S_d is not None else np.array([G])
+    """What the path's channels are at rest: :data:`~desdemona.profiles.path.REST` for S_d, (G,) for a
+    modulus."""
+    return REST if path.S_d is not None else np.array([G])
 
 
 def cue_age(times, values, base) -> np.ndarray:
@@ -107,16 +108,12 @@ def _present(path: DesiredPath, now: float, window: float) -> tuple[np.ndarray, 
     return line[1], spread * np.sqrt(leverage)
 
 
-def _held(path: DesiredPath, now: float, horizon: float, value, persistence=np.inf) -> DesiredPath:
+def _held(path: DesiredPath, now: float, horizon: float, value, persistence=None) -> DesiredPath:
     """``value`` over [now, now + horizon], its departure from rest weighed by the chance that it lasts
-    tau more, T / (T + tau), with T = ``persistence`` (per channel, or one for all; infinite: held as
-    it is)."""
+    tau more, T / (T + tau), with T = ``persistence`` per channel (None: held as it is)."""
     tau = _grid(path, horizon)
     base = rest(path)
-    persistence = np.broadcast_to(np.asarray(persistence, dtype=float), base.shape)
-    held = np.isinf(persistence)
-    finite = np.where(held, 1.0, persistence)
-    lasting = np.where(held, 1.0, finite / (finite + tau[:, None]))
+    lasting = np.ones((len(tau), 1)) if persistence is None else persistence / (persistence + tau[:, None])
     values = base + (np.asarray(value, dtype=float) - base) * lasting
     S = None if path.S_d is None else values
     M = None if path.S_d is not None else np.maximum(values[:, 0], 0.0)

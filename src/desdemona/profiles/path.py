@@ -14,6 +14,9 @@ import numpy as np
 from desdemona.params import GRAVITY as G
 
 MAX_SPECIFIC_FORCE = 100.0 * G  # beyond this a file is in the wrong units, not a vehicle's motion
+#: S of a level cabin at rest: no rotation, gravity felt as (0, 0, G).
+REST = np.array([0.0, 0.0, 0.0, 0.0, 0.0, G])
+REST.flags.writeable = False
 MAX_ANGULAR_VELOCITY = 50.0  # rad/s, about 8 turns per second
 PATH_COLUMNS = ("t", "wx", "wy", "wz", "fx", "fy", "fz")
 #: The channels of S (eq. 3.2): the cabin's angular velocity and specific force, in cabin coordinates.
@@ -89,8 +92,7 @@ class DesiredPath:
             return self
         S_d = modulus = None
         if self.S_d is not None:
-            rest = np.array([0.0, 0.0, 0.0, 0.0, 0.0, G])
-            S_d = rest + gain * (self.S_d - rest)
+            S_d = REST + gain * (self.S_d - REST)
         if self.modulus is not None:
             modulus = np.maximum(G + gain * (self.modulus - G), 0.0)
         return DesiredPath(self.name, self.t, S_d, self.weights, f"{self.description}, gain {gain:g}", modulus)
