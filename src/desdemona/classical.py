@@ -23,7 +23,7 @@ import math
 
 import numpy as np
 
-from desdemona.kinematics import gimbal_alignment
+from desdemona.kinematics import gimbal_alignment, wrapped
 from desdemona.model import Model
 from desdemona.plan import Plan, State, advance, start_acceleration, start_state
 from desdemona.profiles import DesiredPath
@@ -373,7 +373,7 @@ def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.
             ref = _gimbal_targets(model, yaw_q, yaw_qd, bold[0][0] + bold[1][0] * s)
             ref_rate = (4.0 * ref[1] - 3.0 * ref[0] - ref[2]) / h
             ref_accel = 4.0 * (ref[2] - 2.0 * ref[1] + ref[0]) / (h * h)
-            error = np.mod(ref[0] - q[gimbals] + np.pi, 2.0 * np.pi) - np.pi
+            error = wrapped(ref[0] - q[gimbals])
             jerk_command = (w**3 * error + 3.0 * w**2 * (ref_rate - qd[gimbals])
                             + 3.0 * w * (ref_accel - a[gimbals]))
             command[gimbals] = a[gimbals] + h * jerk_command

@@ -120,6 +120,11 @@ def gimbal_alignment(f):
     return np.arctan2(-f[..., 1], f[..., 2]), np.arctan2(f[..., 0], np.hypot(f[..., 1], f[..., 2]))
 
 
+def wrapped(angle):
+    """``angle`` [rad] wrapped to [-pi, pi); arrays or numbers."""
+    return np.mod(np.asarray(angle, dtype=float) + np.pi, 2.0 * np.pi) - np.pi
+
+
 #: The outer gimbal, inner gimbal and cabin in the full joint vector: Rx(q4) Rz(q5) Ry(q6) (eq. A.7).
 GIMBALS = (3, 4, 5)
 
@@ -132,7 +137,7 @@ def gimbal_twin(q) -> np.ndarray:
     """
     twin = np.array(q, dtype=float)
     a, b, c = twin[list(GIMBALS)]
-    twin[list(GIMBALS)] = (np.array([a + np.pi, np.pi - b, c + np.pi]) + np.pi) % (2.0 * np.pi) - np.pi
+    twin[list(GIMBALS)] = wrapped([a + np.pi, np.pi - b, c + np.pi])
     return twin
 
 

@@ -19,7 +19,7 @@ import numpy as np
 
 from desdemona import metrics
 from desdemona.classical import classical_dfs, classical_washout, steady_start
-from desdemona.kinematics import GIMBALS, gimbal_twin
+from desdemona.kinematics import GIMBALS, gimbal_twin, wrapped
 from desdemona.model import Model
 from desdemona.mpc import MPC, MPCOptions
 from desdemona.plan import Plan, start_state
@@ -160,8 +160,8 @@ def _loop_start(model: Model, q0, qd0) -> np.ndarray:
     free = model.config.free
     if not all(joint in free for joint in GIMBALS):
         return q0
-    outer, gimbals = free.index(GIMBALS[0]), [free.index(joint) for joint in GIMBALS]
-    if np.any(np.asarray(qd0)[gimbals] != 0.0) or abs((q0[outer] + np.pi) % (2.0 * np.pi) - np.pi) <= np.pi / 2:
+    gimbals = [free.index(joint) for joint in GIMBALS]  # the outer gimbal first
+    if np.any(np.asarray(qd0)[gimbals] != 0.0) or abs(wrapped(q0[gimbals[0]])) <= np.pi / 2:
         return q0
     twin = gimbal_twin(model.config.expand(q0))[list(free)]
     limits = model.limits
