@@ -87,21 +87,23 @@ def corpus_cases(folder: Path, build: bool = True, forecasts=()) -> list[dict]:
     return cases
 
 
-def command(case: dict, config: str, mode: str, out: Path) -> list[str]:
-    """The command line of one job, as a user would type it."""
+def command(case: dict, config: str, mode: str, out: Path, wall: float | None = None) -> list[str]:
+    """The command line of one job, as a user would type it (off-line with ``--wall`` where given)."""
     base = [sys.executable, "-m", "desdemona"]
     if mode == "offline":
-        return [*base, "optimize", case["file"], "--config", config, "--out", str(out), "--overwrite", "--quiet", "--no-view"]
+        chosen = [] if wall is None else ["--wall", f"{wall:g}"]
+        return [*base, "optimize", case["file"], "--config", config, *chosen, "--out", str(out), "--overwrite",
+                "--quiet", "--no-view"]
     forecast = ["--forecast", case["forecast"]] if mode == "forecast" else []
     return [*base, "online", case["file"], "--config", config, "--predictor", mode, *forecast, "--out", str(out),
             "--overwrite", "--no-view"]
 
 
-def run_job(case: dict, config: str, mode: str, out: str, timeout: float) -> dict:
+def run_job(case: dict, config: str, mode: str, out: str, timeout: float, wall: float | None = None) -> dict:
     """Run one job as its own process; its exit, wall time [s] and peak memory [MB]."""
     folder = Path(out) / f"{case['name']}--{config}--{mode}"
     start = time.perf_counter()
-    process = subprocess.Popen(command(case, config, mode, folder), stdout=subprocess.PIPE,
+    process = subprocess.Popen(command(case, config, mode, folder, wall), stdout=subprocess.PIPE,
                                stderr=subprocess.STDOUT, text=True)
     deadline, stopped, status = start + timeout, False, None
     while status is None:
@@ -217,6 +219,9 @@ def main(argv=None) -> int:
     parser.add_argument("--dask", default=None, metavar="ADDRESS")
     parser.add_argument("--table-only", action="store_true", help="re-read the jobs of an earlier run")
     parser.add_argument("--no-docs", action="store_true", help="print the table, leave docs/benchmarks.md")
+    parser.add_argument("--wall", type=float, default=None, metavar="M_S2",
+                        help="off-line: the cost's wall before the position limits (optimize --wall; 0: "
+                             "without, the formulation before it)")
     args = parser.parse_args(argv)
 
     wanted = lambda name: args.cases is None or name in args.cases  # noqa: E731
@@ -243,7 +248,7 @@ def main(argv=None) -> int:
             with open(record, "a") as fh:
                 fh.write(json.dumps(job) + "\n")
 
-        done = batch.map_jobs(run_job, [(c, config, mode, str(args.out), args.timeout) for c, config, mode in jobs],
+        done = batch.map_jobs(run_job, [(c, config, mode, str(args.out), args.timeout, args.wall) for c, config, mode in jobs],
                               args.processes, args.dask, progress)
     paths = {(c["name"], c["form"]): profiles.load(c["file"]) for c in cases}
     order = {(c["name"], config, mode): k for k, (c, config, mode) in enumerate(jobs)}

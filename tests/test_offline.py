@@ -2,6 +2,7 @@
 
 import dataclasses
 
+import casadi as ca
 import numpy as np
 import pytest
 
@@ -10,7 +11,8 @@ from desdemona.classical import classical_dfs
 from desdemona.thesis import ThesisOptions, optimize_thesis
 from desdemona.offline import OptimizeOptions, initial_guesses, optimize
 from desdemona.perception import thesis_model
-from desdemona.problem import ProblemOptions
+from desdemona.mpc import MPC
+from desdemona.problem import WALL, WALL_WIDTH, ProblemOptions
 from desdemona.transcription import CueingProblem
 from desdemona.profiles import DesiredPath
 from desdemona.plan import Plan
@@ -47,6 +49,47 @@ def test_path_beyond_the_limits_touches_them(params):
     assert result.check.passed
     assert result.check.worst_use > 0.999
     assert result.check.rms > 1.0  # 40 m/s^2 cannot be followed
+
+
+def test_the_wall_before_the_position_limits_in_closed_form(params):
+    """wall * (depth / width)^2 per bounded joint over the last 0.5 % of its travel, zero short of it;
+    only where asked for (an off-line session): the thesis' formulation and the on-line one have none."""
+    model = Model(params, "yaw-track-cabin")
+    path = profiles.catapult(duration=2.0)
+    problem = CueingProblem(model, path, ProblemOptions(h_u=0.1))
+    low, high = model.limits.position_min[1], model.limits.position_max[1]  # the track
+    width = WALL_WIDTH * (high - low)
+    for track, expected in ((0.0, 0.0), (high - width, 0.0), (high - width / 2, 0.25), (high, 1.0),
+                            (low + width / 4, 0.5625), (low, 1.0)):
+        value = problem._wall(ca.DM([0.3, track, -0.2]), 2.0)
+        np.testing.assert_allclose(float(value), 2.0 * expected, rtol=1e-12, atol=1e-15)
+    sizes = {wall: CueingProblem(model, path, ProblemOptions(h_u=0.1, wall=wall)).residual.size1_out(0)
+             for wall in (WALL, 0.0)}
+    assert sizes[WALL] == sizes[0.0] + len(problem.fractions)  # one bounded joint, at every point
+    assert ProblemOptions().wall == 0.0 and MPC(model).problem.options.wall == 0.0  # thesis and on-line: none
+    for bad in (-0.1, float("inf")):
+        with pytest.raises(ValueError, match="wall"):
+            ProblemOptions(wall=bad)
+
+
+def test_the_wall_keeps_the_plan_off_the_tracks_end_at_little_cost(params):
+    """A lateral force the track can hold only at its end: without the wall the plan grazes the end (with
+    the jerk as the control, a third-order state constraint's touch point, where IPOPT crawled on real
+    recordings); with it the track stops inside the wall, and the felt error is within 0.5 %."""
+    t = np.arange(0.0, 8.0 + 1e-9, 0.01)
+    S = np.zeros((len(t), 6))
+    S[:, 5] = 9.81
+    S[:, 4] = 12.0 * np.clip((t - 1.0) / 0.5, 0, 1) * np.clip((7.0 - t) / 0.5, 0, 1)
+    path = DesiredPath("lateral", t, S, weights=(0, 0, 0, 1, 1, 1))
+    model = Model(params, "yaw-track-cabin")
+    end = model.limits.position_max[1]
+    results = {wall: optimize(path, model, OptimizeOptions(ProblemOptions(initial="rest", final="centre", wall=wall),
+                                                          starts=1)) for wall in (0.0, WALL)}
+    reach = {wall: np.abs(r.trajectory.q[:, 1]).max() for wall, r in results.items()}
+    assert all(r.converged and r.check.passed for r in results.values())
+    assert reach[0.0] > end - 1e-3
+    assert end - WALL_WIDTH * 2 * end < reach[WALL] < end - 0.01
+    assert results[WALL].check.rms < 1.005 * results[0.0].check.rms
 
 
 def test_thesis_section_4_7_ours_against_the_thesis_method():

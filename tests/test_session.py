@@ -7,6 +7,7 @@ import pytest
 
 from desdemona import Model, profiles, session
 from desdemona.cli.options import build_parser
+from desdemona.problem import WALL, ProblemOptions
 from desdemona.session import ChoiceError, Choices
 
 
@@ -99,3 +100,15 @@ def test_a_jerk_weight_reaches_the_problem_off_line_and_on_line(catapult):
         session.offline(catapult, model, Choices(jerk_weight=-1.0))
     args = build_parser().parse_args(["batch", "catapult", "--configs", "full", "--out", "x", "--jerk-weight", "2"])
     assert Choices.of(args).jerk_weight == 2.0
+
+
+def test_the_wall_reaches_the_off_line_problem_and_is_checked(catapult):
+    model = Model(config="yaw-track-cabin")
+    assert session.offline(catapult, model, Choices(wall=0.0)).options.wall == 0.0
+    assert session.offline(catapult, model).options.wall == WALL
+    assert ProblemOptions().wall == 0.0  # the thesis' formulation
+    for bad in (-1.0, float("nan")):
+        with pytest.raises(ChoiceError, match="--wall"):
+            session.offline(catapult, model, Choices(wall=bad))
+    for command in (["optimize", "catapult", "--out", "x"], ["batch", "catapult", "--configs", "full", "--out", "x"]):
+        assert Choices.of(build_parser().parse_args([*command, "--wall", "0"])).wall == 0.0

@@ -54,6 +54,10 @@ from desdemona.plan import advance
 from desdemona.model import Model
 from desdemona.profiles import DesiredPath
 
+#: The off-line cost's wall before each position limit (:attr:`ProblemOptions.wall`): its width, as a
+#: share of the joint's travel, and what it costs at the limit, as a felt error [m/s^2].
+WALL_WIDTH, WALL = 0.005, 1.0
+
 
 @dataclass(frozen=True)
 class ProblemOptions:
@@ -108,6 +112,14 @@ class ProblemOptions:
         Hessian of the ``dfs`` modulus cost is indefinite, and its corrected steps crawl; near it
         Gauss-Newton converges only linearly where the target is out of reach. None: on the
         configurations that follow the modulus, `dfs` and `dfs-yaw` ("Gauss-Newton first").
+    wall : a smooth wall in the cost over the last ``WALL_WIDTH`` of each bounded joint's travel at
+        either end: ``wall * (depth / width)^2`` [m/s^2], weighed like a felt error of weight 1, so
+        ``wall`` at the limit itself. The limit stays a constraint; the wall keeps the optimum off it.
+        With the jerk as the control a position limit is a third-order state constraint, which an
+        optimum meets at isolated touch points rather than along an arc; on real recordings the
+        track grazed its end there and IPOPT's dual infeasibility stayed at that one node for hundreds
+        of iterations ("Wall before the position limits"). 0 (the default): none, the thesis'
+        formulation; an off-line session (:func:`desdemona.session.offline`) takes ``WALL``.
     """
 
     h_u: float = 0.05
@@ -132,6 +144,7 @@ class ProblemOptions:
     steps: tuple[float, ...] | None = None
     compile: bool | None = None
     gauss_newton_first: bool | None = None
+    wall: float = 0.0
 
     def __post_init__(self):
         if not (math.isfinite(self.h_u) and self.h_u > 0):
@@ -151,6 +164,8 @@ class ProblemOptions:
             raise ValueError("initial = 'given' needs initial_state = (q0, qd0)")
         if self.unweighted is not None and not (math.isfinite(self.unweighted) and self.unweighted >= 0):
             raise ValueError(f"unweighted = {self.unweighted!r}: must be a number >= 0")
+        if not (math.isfinite(self.wall) and self.wall >= 0):
+            raise ValueError(f"wall = {self.wall!r}: must be a number >= 0")
         if not (self.regularisation >= 0 and 0 <= self.margin < 0.5):
             raise ValueError("regularisation must be >= 0 and margin in [0, 0.5)")
 
@@ -309,7 +324,7 @@ class Formulation:
             efforts.append(effort)
             powers.append(power)
             positions.append(qj)
-        residuals, z_next = self._residuals(values, a, jerk, x[self.n_motion:], data)
+        residuals, z_next = self._residuals(values, a, jerk, x[self.n_motion:], data, positions)
         r = ca.vertcat(*residuals)
         residual = ca.Function("stage_residual", [x, u, data], [r], ["x", "u", "d"], ["r"])
         families = self._families(positions, efforts, powers, q_next, qd_next)
@@ -346,10 +361,11 @@ class Formulation:
         value = fn["modulus"](q, qd, a) if self.modulus else fn["S"](q, qd, a)
         return value, tau / ca.DM(lim.effort * margin), tau * qd / ca.DM(lim.power * margin)
 
-    def _residuals(self, values, a, jerk, z, data) -> tuple[list, ca.SX]:
+    def _residuals(self, values, a, jerk, z, data, positions) -> tuple[list, ca.SX]:
         """The stage's cost as squared residuals, and the filter states at its end.
 
-        values : per sub-step point, S (full paths) or M - M_d (modulus paths). A sum of squared
+        values, positions : per sub-step point, S (full paths) or M - M_d (modulus paths), and the
+        joints' positions (for the wall, :attr:`ProblemOptions.wall`). A sum of squared
         residuals (trapezoid rule, or zero-order hold with perception), so that a Gauss-Newton
         Hessian can be formed from the same definition (see :mod:`desdemona.online`). ``data``:
         the stage's, :meth:`with_steps`.
@@ -376,12 +392,24 @@ class Formulation:
                 residuals.append(ca.sqrt(self.h_sub * inv_T) * root_w * (C @ z + D @ values[j] - d[6 * j: 6 * j + 6]))
                 z = A @ z + B @ values[j]
         lim, o = self.model.limits, self.options
+        if o.wall > 0 and lim.bounded:
+            residuals += [ca.sqrt(trapezoid[j] * h_u * inv_T) * self._wall(positions[j], o.wall) for j in range(points)]
         rho = o.regularisation * h_u * inv_T
         residuals.append(ca.sqrt(rho) * a / ca.DM(lim.acceleration))
         if jerk is not None:
             rho_j = self.jerk_weight * h_u * inv_T
             residuals.append(ca.sqrt(rho_j) * jerk / ca.DM(lim.jerk))
         return residuals, z
+
+    def _wall(self, q, wall: float) -> ca.SX:
+        """The residual of the wall before the position limits (:attr:`ProblemOptions.wall`) at one
+        point: ``wall * (depth / width)^2`` per bounded joint, zero short of the wall."""
+        lim = self.model.limits
+        bounded = lim.bounded
+        low, high = lim.position_min[bounded], lim.position_max[bounded]
+        width = WALL_WIDTH * (high - low)
+        depth = ca.fmax(0, q[bounded] - ca.DM(high - width)) + ca.fmax(0, ca.DM(low + width) - q[bounded])
+        return wall * (depth / ca.DM(width)) ** 2
 
     def _families(self, positions, efforts, powers, q_next, qd_next) -> list[Family]:
         """The path constraints of one interval, family by family, each with its own bounds.

@@ -53,6 +53,8 @@ class Choices:
         default of the configuration, off-line or on-line.
     window : off-line, solve in overlapping windows this long [s] (:mod:`desdemona.windows`); 0: the
         whole path at once; None: windows above :data:`~desdemona.windows.WHOLE_UP_TO` seconds.
+    wall : off-line, the cost's wall before the position limits (:attr:`ProblemOptions.wall`), None:
+        :data:`~desdemona.problem.WALL`.
     """
 
     weights: str | tuple | None = None
@@ -63,6 +65,7 @@ class Choices:
     h_u: float = 0.05
     jerk_weight: float | None = None
     window: float | None = None
+    wall: float | None = None
 
     @classmethod
     def of(cls, namespace) -> Choices:
@@ -122,15 +125,19 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
     """The session of ``optimize`` and of each job of ``batch``: the cued path and its
     :class:`~desdemona.problem.ProblemOptions`, checked to fit in memory with ``workers`` at once."""
     from desdemona import windows
-    from desdemona.problem import ProblemOptions
+    from desdemona.problem import WALL, ProblemOptions
 
     _check_h_u(choices.h_u, path)
     if model.config.modulus_cost and perception is not None:
         raise ChoiceError("--perception applies to the full path S, not to the dfs modulus")
+    if choices.wall is not None and not (math.isfinite(choices.wall) and choices.wall >= 0):
+        raise ChoiceError(f"--wall {choices.wall:g}: must be a number >= 0 (m/s^2)")
     path = cued(path, model, choices)
     initial, state = start(model, choices, OFFLINE_STARTS)
     problem = ProblemOptions(h_u=choices.h_u, solver=solver, perception=perception, initial=initial,
-                             final=choices.final, initial_state=state, **cost(path, model, choices))
+                             final=choices.final, initial_state=state,
+                             wall=WALL if choices.wall is None else choices.wall,
+                             **cost(path, model, choices))
     window = _window(path, model, problem, choices.window, workers)
     part = path if window is None else windows.part(path, 0.0, window)
     size = sizing.check_fits(part, model.config, problem, workers, model.limits.smooth)

@@ -300,6 +300,11 @@ def _add_start_options(parser: argparse.ArgumentParser, starts: int) -> None:
                         help="solve in overlapping windows this long, each starting from the state the one "
                              "before reached, the whole re-checked; memory is bounded by the window. 0: the "
                              "whole path at once (default: windows of 60 s for paths over 150 s)")
+    parser.add_argument("--wall", type=float, default=None, metavar="M_S2",
+                        help="the cost of a smooth wall over the last 0.5 %% of the track's and heave's "
+                             "travel, as a felt error [m/s^2] at the limit: it keeps the plan from grazing "
+                             "a limit, where the solver crawls; 0 lets the plan use the whole travel "
+                             "(default: 1)")
 
 
 def _add_session_options(parser: argparse.ArgumentParser, given: bool = True) -> None:
