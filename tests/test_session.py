@@ -112,3 +112,5 @@ def test_the_wall_reaches_the_off_line_problem_and_is_checked(catapult):
             session.offline(catapult, model, Choices(wall=bad))
     for command in (["optimize", "catapult", "--out", "x"], ["batch", "catapult", "--configs", "full", "--out", "x"]):
         assert Choices.of(build_parser().parse_args([*command, "--wall", "0"])).wall == 0.0
+    with pytest.raises(ChoiceError, match="drop --wall"):
+        session.thesis(catapult, model, Choices(wall=1.0))

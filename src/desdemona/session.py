@@ -161,6 +161,8 @@ def thesis(path: DesiredPath, model: Model, choices: Choices = Choices()) -> Ses
 
     if choices.window:
         raise ChoiceError("--method thesis solves the whole path at once: drop --window")
+    if choices.wall is not None:
+        raise ChoiceError("--method thesis reproduces the thesis' cost, which has no wall: drop --wall")
     if (choices.initial, choices.initial_state, choices.final, choices.weights) != (None, None, "centre", None):
         raise ChoiceError("--method thesis reproduces the thesis: its weights are the path's and its start "
                          "free; drop --initial, --initial-state, --final and --weights")
