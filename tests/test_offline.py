@@ -92,6 +92,34 @@ def test_the_wall_keeps_the_plan_off_the_tracks_end_at_little_cost(params):
     assert results[WALL].check.rms < 1.005 * results[0.0].check.rms
 
 
+def test_a_converged_start_is_chosen_over_a_better_iterate_stopped_at_the_cap(params, monkeypatch):
+    """The best start by RMS is returned among those that converged; an iterate stopped at the cap is
+    returned only when no start converged, and its report is kept either way."""
+    from desdemona import offline
+
+    solve, judge = offline._solve_one, offline._check
+
+    def capped_first(full, rough, x, u):  # the first start "stops at the cap"
+        sol = solve(full, rough, x, u)
+        capped = np.allclose(x, initial_guesses(full, 1, 0)[0][1])
+        return dataclasses.replace(sol, success=False, status="Maximum_Iterations_Exceeded") if capped else sol
+
+    def flattering(problem, sol):  # ... and looks best
+        result, trajectory = judge(problem, sol)
+        return (dataclasses.replace(result, rms=0.5 * result.rms) if not sol.success else result), trajectory
+
+    monkeypatch.setattr(offline, "_solve_one", capped_first)
+    monkeypatch.setattr(offline, "_check", flattering)
+    path = profiles.cosine(duration=3.0)
+    model = Model(params, "yaw-track")
+    result = optimize(path, model, OptimizeOptions(ProblemOptions(h_u=0.1), starts=2))
+    assert result.converged and result.solution.success
+    assert [r.success for r in result.starts] == [False, True]
+    assert result.starts[0].rms < result.check.rms  # the capped start was better, and not chosen
+    alone = optimize(path, model, OptimizeOptions(ProblemOptions(h_u=0.1), starts=1))
+    assert not alone.converged  # nothing converged: the best iterate, said to be so
+
+
 def test_thesis_section_4_7_ours_against_the_thesis_method():
     """Toy parameters, f_y = 5 cos(2t), 5 s, h_u = 0.1 s: ours keeps every limit and is no worse."""
     toy = thesis_toy_params()

@@ -2,7 +2,9 @@
 
 ``optimize(path, model, options) -> Result``: builds the problem of :mod:`desdemona.problem`,
 solves it from several initial guesses (in parallel processes when asked), re-checks every solution
-independently (:mod:`desdemona.simulate`) and returns the best one that keeps every limit. The problem
+independently (:mod:`desdemona.simulate`) and returns the best one that keeps every limit (among the
+starts that converged, where any did: a converged start is a verified local optimum, an iterate
+stopped at the cap is not; the others stay in the result's reports). The problem
 is non-convex with many local optima (thesis 4.5, 5.8): zero motion is a stationary point (at zero yaw
 rate the centripetal terms have no gradient), so the guesses start the yaw turning, as the thesis'
 smart guesses of table 5.2 do, and seeded random starts widen the search.
@@ -303,7 +305,8 @@ def optimize(path: DesiredPath, model: Model, options: OptimizeOptions = Optimiz
                 break
         else:
             raise LimitViolation(best_check, "every start's trajectory")
-    chosen_check, chosen = min(passed, key=lambda cs: cs[0].rms)
+    converged = [(c, s) for c, s in passed if s.success]
+    chosen_check, chosen = min(converged or passed, key=lambda cs: cs[0].rms)
     times = full.sub_times()
     t = np.r_[times[:, :-1].ravel(), full.t_nodes[-1]]
     trajectory = evaluate_plan(model, path, chosen.plan, t, options.problem.perception)
