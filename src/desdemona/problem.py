@@ -37,7 +37,8 @@ perception threshold) never trades a felt cue for effort, but removes the flat d
 cost (joints that do not change S in the weighted channels), which makes the Hessian regular and the
 optimum unique. With jerk limits the jerk has a weight of its own against its limit
 (``ProblemOptions.jerk_weight``), so that a plan does not swing its accelerations where the cue gains
-little from it.
+little from it. An off-line session adds a smooth wall before the position limits
+(``ProblemOptions.wall``), which keeps a plan from grazing them.
 """
 
 from __future__ import annotations
