@@ -99,3 +99,38 @@ def test_mpc_grid_is_fine_near_now_and_coarse_beyond():
     assert grid.sum() == pytest.approx(2.0)
     assert np.all(grid[:20] == 0.02) and np.allclose(grid[20:], 0.1) and len(grid) == 36
     assert np.all(MPCOptions(horizon=2.0, step=0.02, tail_step=None).grid() == 0.02)
+
+
+def test_ramp_matches_its_recursion_for_several_joints_and_steps():
+    """Each interval starts where the last ended and moves towards its target at most at the jerk
+    limit: the recursion written out in NumPy, on random targets, mixed steps and an unlimited joint."""
+    rng = np.random.default_rng(3)
+    targets, h = rng.normal(size=(30, 3)), np.r_[np.full(10, 0.02), np.full(20, 0.1)]
+    a0, limit = rng.normal(size=3), np.array([5.0, 0.5, np.inf])
+    starts, jerks = ramp(targets, h[:, None], a0, limit)
+    a = a0.copy()
+    for k in range(len(targets)):
+        np.testing.assert_array_equal(starts[k], a)
+        np.testing.assert_array_equal(jerks[k], np.clip((targets[k] - a) / h[k], -limit, limit))
+        a = a + jerks[k] * h[k]
+    assert np.all(np.abs(jerks[:, 1]) <= 0.5) and np.any(np.abs(jerks[:, 1]) == 0.5)
+    starts, _ = ramp(targets, 0.1)  # no a0: the first target at once; no limit: every target reached
+    np.testing.assert_allclose(starts[1:], targets[:-1], atol=1e-12)
+
+
+def test_the_shifted_plan_is_the_last_plans_acceleration_where_the_new_intervals_end(params):
+    """The seed of the next cycle (``MPC._shifted_plan``) reads the last plan's accelerations as
+    :meth:`Plan.at` does, at the ends of the new grid's intervals, held past its end."""
+    from desdemona.mpc import MPC, MPCOptions
+
+    controller = MPC(Model(params, "dfs"), MPCOptions(horizon=2.0))
+    prob, step = controller.problem, controller.options.step
+    rng = np.random.default_rng(4)
+    length = int(round(prob.t_nodes[-1] / step))
+    u, jerk = ramp(rng.normal(size=(length, 4)), step, np.zeros(4), controller.limits.jerk)
+    for age in (0, 1, 7):
+        controller.plan, controller.plan_age = (u, jerk), age
+        times = np.minimum((age + 1) * step + prob.t_nodes[1:], prob.t_nodes[-1])
+        expected = Plan(np.arange(length + 1) * step, np.zeros(4), np.zeros(4), u, jerk).at(times)[2]
+        lim = controller.limits.acceleration
+        np.testing.assert_array_equal(controller._shifted_plan(prob), np.clip(expected, -lim, lim))

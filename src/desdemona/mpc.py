@@ -31,7 +31,7 @@ import numpy as np
 
 from desdemona.model import Model
 from desdemona.perception import VestibularModel
-from desdemona.plan import Plan, State, advance
+from desdemona.plan import State, advance
 from desdemona.problem import ProblemOptions
 from desdemona.profiles import ALIGNED_WEIGHTS, G, DesiredPath, vertical_force
 from desdemona.simulate import TOLERANCE
@@ -250,6 +250,8 @@ class MPC:
         self.smooth = self.problem.smooth
         self.plan: tuple[np.ndarray, np.ndarray] | None = None  # the last plan per step: accelerations, jerks
         self._counts = np.rint(self.problem.steps / options.step).astype(int)  # steps per interval
+        # each step's time since its interval's start, (steps, 1)
+        self._offsets = (np.concatenate([np.arange(c) for c in self._counts]) * options.step)[:, None]
         self.plan_age = 0
 
     # ------------------------------------------------------------------------------------------
@@ -453,20 +455,23 @@ class MPC:
     def _per_step(self, accelerations, jerks) -> tuple[np.ndarray, np.ndarray]:
         """A plan's (accelerations, jerks) per interval as the same plan per step (the grid's intervals
         are whole numbers of steps): each step starts where the ramp of its interval is."""
-        offsets = np.concatenate([np.arange(c) for c in self._counts]) * self.options.step
         jerks = np.repeat(jerks, self._counts, axis=0)
-        return np.repeat(accelerations, self._counts, axis=0) + jerks * offsets[:, None], jerks
+        return np.repeat(accelerations, self._counts, axis=0) + jerks * self._offsets, jerks
 
     def _shifted_plan(self, prob: CueingProblem) -> np.ndarray:
         """(N, n) the previous plan's accelerations from now on, on the problem's grid: at each
         interval's end with jerk limits (what the ramp of :meth:`CueingProblem.guess` aims at), at its
         start without; held at the last value past the plan's end, within the limits."""
         accelerations, jerks = self.plan
-        times = np.arange(len(accelerations) + 1) * self.options.step
-        previous = Plan(times, np.zeros(self.model.n), np.zeros(self.model.n), accelerations, jerks)
-        now = (self.plan_age + self.options.replan_steps) * self.options.step
+        step = self.options.step
+        now = (self.plan_age + self.options.replan_steps) * step
         times = now + (prob.t_nodes[1:] if self.smooth else prob.t_nodes[:-1])
-        at = previous.at(np.minimum(times, prob.t_nodes[-1]))[2]
+        # the previous plan's acceleration at those times, as Plan.at has it (each time in the step
+        # that starts at or before it, the last step's ramp carried on), without its positions
+        times = np.minimum(times, prob.t_nodes[-1])
+        nodes = np.arange(len(accelerations) + 1) * step
+        k = np.clip(np.searchsorted(nodes, times, side="right") - 1, 0, len(accelerations) - 1)
+        at = accelerations[k] + jerks[k] * (times - nodes[k])[:, None]
         return np.clip(at, -self.limits.acceleration, self.limits.acceleration)
 
     def _leave_rest(self, qd, u) -> np.ndarray:
