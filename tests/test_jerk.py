@@ -99,15 +99,27 @@ def test_mpc_grid_is_fine_near_now_and_coarse_beyond():
     assert grid.sum() == pytest.approx(2.0)
     assert np.all(grid[:20] == 0.02) and np.allclose(grid[20:], 0.1) and len(grid) == 36
     assert np.all(MPCOptions(horizon=2.0, step=0.02, tail_step=None).grid() == 0.02)
-    # the 4 s plans where the track moves: 0.1 s to 2 s, 0.2 s beyond (46 intervals, not 56)
-    grid = MPCOptions(horizon=4.0, step=0.02).grid()
+    # a tail that doubles beyond 2 s: 0.1 s to 2 s, 0.2 s beyond (46 intervals in 4 s, not 56)
+    grid = MPCOptions(horizon=4.0, step=0.02, far=2.0).grid()
     t = np.cumsum(grid) - grid
     assert grid.sum() == pytest.approx(4.0) and len(grid) == 46
     assert np.allclose(grid[(t >= 0.4 - 1e-9) & (t < 2.0 - 1e-9)], 0.1) and np.allclose(grid[t >= 2.0 - 1e-9], 0.2)
+    assert MPCOptions(horizon=3.3, step=0.02, far=2.0).grid().sum() == pytest.approx(3.3)  # the last one shorter
     assert len(MPCOptions(horizon=4.0, step=0.02, far=None).grid()) == 56
-    assert MPCOptions(horizon=3.3, step=0.02).grid().sum() == pytest.approx(3.3)  # the last interval shorter
+    assert len(MPCOptions(horizon=4.0, step=0.02).grid()) == 56  # "auto" before a controller resolves it
     with pytest.raises(ValueError, match="far"):
         MPCOptions(far=-1.0)
+
+
+def test_the_tail_doubles_where_the_cabin_tilts(params):
+    """``far`` "auto": the controller's 4 s plans on full have the doubled tail, those on
+    yaw-track-cabin (whose damped iteration swung a steady turn's yaw with it) do not."""
+    from desdemona.mpc import FAR, MPC
+
+    full = MPC(Model(params, "full"), MPCOptions(horizon=4.0))
+    assert full.options.far == FAR and full.problem.N == 46
+    assert MPC(Model(params, "yaw-track-cabin"), MPCOptions(horizon=4.0)).problem.N == 56
+    assert MPC(Model(params, "full"), MPCOptions(horizon=4.0, far=None)).problem.N == 56
 
 
 def test_ramp_matches_its_recursion_for_several_joints_and_steps():

@@ -24,6 +24,7 @@ measurements behind them"; the predictors that turn what is known now into the p
 from __future__ import annotations
 
 import time
+import dataclasses
 from dataclasses import dataclass
 from typing import Literal, NamedTuple
 
@@ -40,6 +41,10 @@ from desdemona.transcription import CueingProblem
 
 
 REST_RATE = 0.05  # rad/s: below this over a whole seed the yaw counts as still (0.01 m/s^2 centripetal at 4 m)
+#: Where the plan's tail doubles [s] on a configuration whose cabin tilts (``MPCOptions.far`` "auto"):
+#: beyond it a 4 s plan on ``full`` has intervals of 0.2 s, 46 intervals in all instead of 56
+#: ("Coarse tail of the plan").
+FAR = 2.0
 
 
 @dataclass(frozen=True)
@@ -72,10 +77,12 @@ class MPCOptions:
     and half steps lagged a fast target or led the plan, now and then, to a QP without a solution
     ("Damped real-time iteration").
 
-    tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon, twice as long
-    beyond ``far`` seconds (None: ``step`` throughout; ``far`` None: ``tail_step`` to the end): what the
-    plan does in a second matters only through where it leaves the machine, and it is re-planned long
-    before then ("Coarse tail of the plan"). reach : how far each plan looks
+    tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon (None: ``step``
+    throughout), twice as long beyond ``far`` seconds (None: ``tail_step`` to the end; "auto":
+    :data:`FAR` where the cabin tilts, as on ``full``, else to the end): what the plan does in a second
+    matters only through where it leaves the machine, and it is re-planned long before then ("Coarse
+    tail of the plan"). On ``yaw-track-cabin``, whose cycle is short anyway, the damped iteration swung
+    the yaw of a steady turn with the doubled tail (1.17 reversals a second against 0.04). reach : how far each plan looks
     [s], at least ``horizon`` (None: the horizon). Beyond the horizon, where nothing is known, the
     desired path is taken as held at its last previewed value: an end cost (eq. 3.8's K) that prices
     where the plan leaves the machine by what holding the path would cost from there; a short horizon
@@ -102,7 +109,7 @@ class MPCOptions:
     rti_step: float | None = None
     tail_step: float | None = 0.1
     fine: float = 0.4
-    far: float | None = 2.0
+    far: float | Literal["auto"] | None = "auto"
     jerk_weight: float | None = None
     reach: float | None = None
 
@@ -117,8 +124,9 @@ class MPCOptions:
                              f"({self.step:g} s) and shorter than the horizon ({self.horizon:g} s)")
         if self.rti_step is not None and not 0.0 < self.rti_step <= 1.0:
             raise ValueError(f"rti_step = {self.rti_step}: the share of the QP's step, in (0, 1]")
-        if self.far is not None and not self.far >= 0.0:
-            raise ValueError(f"far = {self.far}: where the tail's intervals double [s], at least 0")
+        if self.far not in ("auto", None) and not (isinstance(self.far, (int, float)) and self.far >= 0.0):
+            raise ValueError(f"far = {self.far!r}: where the tail's intervals double [s], at least 0, "
+                             f"or 'auto' or None")
         if self.reach is not None and not self.reach >= self.horizon:
             raise ValueError(f"reach = {self.reach}: must be at least the horizon ({self.horizon:g} s)")
 
@@ -153,16 +161,17 @@ class MPCOptions:
         """The plan's interval lengths [s] over its :attr:`length`, each a whole number of steps:
         ``step`` for the first ``fine`` seconds (at least the re-plan period and one step more), then
         ``tail_step`` rounded to whole steps, from ``far`` seconds on twice that (the last interval
-        shorter where the plan ends); uniform with a perception model, whose filters are discretised
-        for one step. The 4 s plans where the track moves have 46 intervals instead of 56 with
-        ``tail_step`` to the end: the QP's work falls with them, the felt force stays within 1 % on
-        the built-in paths and moves either way on real ones ("Coarse tail of the plan")."""
+        shorter where the plan ends; "auto" as None here: the controller resolves it for its
+        configuration, :class:`MPC`); uniform with a perception model, whose filters are discretised
+        for one step. The 4 s plans of ``full`` have 46 intervals instead of 56 with ``tail_step`` to
+        the end: the QP's work falls with them, the felt force stays within 1 % on the built-in paths
+        and moves either way on real ones ("Coarse tail of the plan")."""
         total = int(round(self.length / self.step))
         block = 1 if self.tail_step is None else int(round(self.tail_step / self.step))
         if block <= 1 or self.perception is not None:
             return np.full(total, self.step)
         start = min(total, max(int(round(self.fine / self.step)), self.replan_steps + 1))
-        far = total if self.far is None else int(round(self.far / self.step))
+        far = total if self.far in (None, "auto") else int(round(self.far / self.step))
         sizes = [1] * start
         while start < total:
             sizes.append(min(block if start < far else 2 * block, total - start))
@@ -234,6 +243,8 @@ class MPC:
     """The model predictive cueing controller, built once for a model and options, then stepped."""
 
     def __init__(self, model: Model, options: MPCOptions = MPCOptions(), weights=None):
+        if options.far == "auto":  # where the tail doubles: where the cabin tilts (MPCOptions.tail_step)
+            options = dataclasses.replace(options, far=FAR if 3 in model.config.free else None)
         self.model, self.options = model, options
         self.deadline = options.deadline if options.deadline is not None else options.period
         free = model.config.free

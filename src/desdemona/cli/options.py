@@ -105,8 +105,8 @@ def build_parser() -> argparse.ArgumentParser:
                         help="h: the plan's grid over the first 0.4 s of the horizon, and the period of the "
                              "commands (default: 0.02)")
     online.add_argument("--tail-step", type=float, default=0.1, metavar="SECONDS",
-                        help="the plan's grid beyond the first 0.4 s of the horizon, twice that beyond 2 s, 0 "
-                             "for --step throughout (default: 0.1)")
+                        help="the plan's grid beyond the first 0.4 s of the horizon (on full twice that beyond "
+                             "2 s), 0 for --step throughout (default: 0.1)")
     online.add_argument("--replan", type=float, default=None, metavar="SECONDS",
                         help="T_c: a new plan every T_c, a whole number of steps (default: every step)")
     online.add_argument("--delay", action="store_true",
@@ -386,8 +386,8 @@ def _add_serve_parser(sub) -> None:
     serve.add_argument("--reach", type=float, default=None, metavar="SECONDS",
                        help="how far each plan looks, at least T_h (default: as online)")
     serve.add_argument("--tail-step", type=float, default=0.1, metavar="SECONDS", dest="tail_step",
-                       help="the plan's step beyond its first 0.4 s, twice that beyond 2 s (default: 0.1; 0.2 "
-                            "keeps full within 10 ms a cycle at 20 Hz, 0 the cycle throughout)")
+                       help="the plan's step beyond its first 0.4 s, on full twice that beyond 2 s (default: 0.1; "
+                            "0.2 keeps full within 10 ms a cycle at 20 Hz, 0 the cycle throughout)")
     serve.add_argument("--timeout", type=int, default=5, metavar="CYCLES",
                        help="cycles without a valid host message before the machine is parked (default: 5)")
     serve.add_argument("--duration", type=float, default=None, metavar="SECONDS",
