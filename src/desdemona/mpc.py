@@ -82,12 +82,13 @@ class MPCOptions:
     :data:`FAR` where the cabin tilts, as on ``full``, else to the end): what the plan does in a second
     matters only through where it leaves the machine, and it is re-planned long before then ("Coarse
     tail of the plan"). On ``yaw-track-cabin``, whose cycle is short anyway, the damped iteration swung
-    the yaw of a steady turn with the doubled tail (1.17 reversals a second against 0.04). reach : how far each plan looks
-    [s], at least ``horizon`` (None: the horizon). Beyond the horizon, where nothing is known, the
-    desired path is taken as held at its last previewed value: an end cost (eq. 3.8's K) that prices
-    where the plan leaves the machine by what holding the path would cost from there; a short horizon
-    needs it where the machine takes longer than the horizon to get where a cue wants it ("Reach
-    beyond the horizon"). The thesis takes K = 0 for the dfs (7.3). A session reaches at least
+    the yaw of a steady turn with the doubled tail (1.17 reversals a second against 0.04).
+
+    reach : how far each plan looks [s], at least ``horizon`` (None: the horizon). Beyond the horizon,
+    where nothing is known, the desired path is taken as held at its last previewed value: an end cost
+    (eq. 3.8's K) that prices where the plan leaves the machine by what holding the path would cost from
+    there; a short horizon needs it where the machine takes longer than the horizon to get where a cue
+    wants it ("Reach beyond the horizon"). The thesis takes K = 0 for the dfs (7.3). A session reaches at least
     :func:`default_horizon` (:func:`desdemona.session.online`).
     """
 
