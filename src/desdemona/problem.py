@@ -223,8 +223,7 @@ class Formulation:
         # third of the work with two sub-steps), and an off-line problem costs and limits its last
         # node in a terminal stage of its own. Without jerk limits the acceleration jumps at the
         # nodes, and each interval keeps its own end.
-        self.limits = model.limits  # built anew at every access of model.limits (0.07 ms): kept
-        self.smooth = self.limits.smooth
+        self.smooth = model.limits.smooth
         self.fractions = np.arange(self.m + (0 if self.smooth else 1)) / self.m
         self.terminal_stage = self.smooth and not parametric
         self.weights = np.array(options.weights if options.weights is not None else path.weights, float)
@@ -358,7 +357,7 @@ class Formulation:
     def _at_point(self, q, qd, a) -> tuple[ca.SX, ca.SX, ca.SX]:
         """At one point of the motion: the cue (S, or the modulus M), and the torques and powers
         over their limits less ``margin``."""
-        fn, lim, margin = self.model.functions, self.limits, 1.0 - self.options.margin
+        fn, lim, margin = self.model.functions, self.model.limits, 1.0 - self.options.margin
         tau = fn["tau"](q, qd, a)
         value = fn["modulus"](q, qd, a) if self.modulus else fn["S"](q, qd, a)
         return value, tau / ca.DM(lim.effort * margin), tau * qd / ca.DM(lim.power * margin)
@@ -393,7 +392,7 @@ class Formulation:
             for j in range(m):  # zero-order hold of S over each sub-step
                 residuals.append(ca.sqrt(self.h_sub * inv_T) * root_w * (C @ z + D @ values[j] - d[6 * j: 6 * j + 6]))
                 z = A @ z + B @ values[j]
-        lim, o = self.limits, self.options
+        lim, o = self.model.limits, self.options
         if o.wall > 0 and lim.bounded:
             residuals += [ca.sqrt(trapezoid[j] * h_u * inv_T) * self._wall(positions[j], o.wall) for j in range(points)]
         rho = o.regularisation * h_u * inv_T
@@ -406,7 +405,7 @@ class Formulation:
     def _wall(self, q, wall: float) -> ca.SX:
         """The residual of the wall before the position limits (:attr:`ProblemOptions.wall`) at one
         point: ``wall * (depth / width)^2`` per bounded joint, zero short of the wall."""
-        lim = self.limits
+        lim = self.model.limits
         bounded = lim.bounded
         low, high = lim.position_min[bounded], lim.position_max[bounded]
         width = WALL_WIDTH * (high - low)
@@ -423,7 +422,7 @@ class Formulation:
         effort, power : |tau| and |tau qd| over their limits (less ``margin``) at every sub-step point.
         Velocity and acceleration limits are bounds on the variables (linear and constant in t).
         """
-        lim, o = self.limits, self.options
+        lim, o = self.model.limits, self.options
         bounded = lim.bounded
         qmin, qmax = (bound[bounded] for bound in self.position_bounds())
         families = []
@@ -443,7 +442,7 @@ class Formulation:
     def position_bounds(self) -> tuple[np.ndarray, np.ndarray]:
         """(n,) lower and upper position bounds, backed off by the largest bulge of a parabola between
         two sub-step points, qdd_max h^2 / 8 (unbounded joints stay infinite)."""
-        lim = self.limits
+        lim = self.model.limits
         backoff = lim.acceleration * self.h_sub**2 / 8.0
         return (lim.position_min + np.where(np.isfinite(lim.position_min), backoff, 0.0),
                 lim.position_max - np.where(np.isfinite(lim.position_max), backoff, 0.0))

@@ -311,7 +311,7 @@ class CueingProblem(Formulation):
 
     def _bounds(self) -> None:
         n, N, nx, o = self.model.n, self.N, self.nx, self.options
-        lim = self.limits
+        lim = self.model.limits
         qmin, qmax = self.position_bounds()
         if self.smooth:  # a rate is a parabola between nodes: back off by its largest bulge
             velocity = lim.velocity - lim.jerk * float(self.steps.max())**2 / 8.0
@@ -360,7 +360,7 @@ class CueingProblem(Formulation):
         """(lbg, ubg): per stage the gaps (equalities), then the families in the order of the stage's
         g. ``widen`` = (lower, upper, stages): the position and stopping families of the first
         ``stages[j]`` stages take bound j at least that far out (:meth:`bounds_from`)."""
-        nx, N, bounded = self.nx, self.N, self.limits.bounded
+        nx, N, bounded = self.nx, self.N, self.model.limits.bounded
         rows_lo, rows_hi = [], []
         for k in range(N):
             lower, upper = [np.zeros(nx)], [np.zeros(nx)]
@@ -383,7 +383,7 @@ class CueingProblem(Formulation):
     def _arm_symmetric(self) -> bool:
         """Whether the arm (q1) is free and without position limits: then the problem is the same
         whatever its angle, and the start fixes it at 0."""
-        config, lim = self.model.config, self.limits
+        config, lim = self.model.config, self.model.limits
         return bool(config.free and config.free[0] == 0 and not np.isfinite(lim.position_min[0])
                     and not np.isfinite(lim.position_max[0]))
 
@@ -404,7 +404,7 @@ class CueingProblem(Formulation):
         lower, upper = np.minimum(qmin, q0), np.maximum(qmax, q0)
         if np.array_equal(lower, qmin) and np.array_equal(upper, qmax):
             return self.lbx, self.ubx, self.lbg, self.ubg
-        lim = self.limits
+        lim = self.model.limits
         band = np.maximum(np.nan_to_num(qmin) - np.nan_to_num(lower), np.nan_to_num(upper) - np.nan_to_num(qmax))
         if self.smooth:
             crossing = np.cbrt(6.0 * band / lim.jerk)
@@ -470,7 +470,7 @@ class CueingProblem(Formulation):
         ``a0``, default the first, at most at j_max, :func:`desdemona.plan.ramp`), clipped to the
         limits with ``clip``; filter states at ``filters`` (the state a controller carries), else at the
         steady state of the first S."""
-        lim, h = self.limits, self.steps[:, None]
+        lim, h = self.model.limits, self.steps[:, None]
         accelerations = np.asarray(accelerations, dtype=float)
         if self.smooth:
             starts, u = ramp(accelerations, h, a0, lim.jerk)
