@@ -23,8 +23,8 @@ measurements behind them"; the predictors that turn what is known now into the p
 
 from __future__ import annotations
 
-import time
 import dataclasses
+import time
 from dataclasses import dataclass
 from typing import Literal, NamedTuple
 
@@ -32,7 +32,7 @@ import numpy as np
 
 from desdemona.model import Model
 from desdemona.perception import VestibularModel
-from desdemona.plan import State, advance
+from desdemona.plan import Plan, State, advance
 from desdemona.problem import ProblemOptions
 from desdemona.profiles import ALIGNED_WEIGHTS, G, DesiredPath, vertical_force
 from desdemona.simulate import TOLERANCE
@@ -486,15 +486,11 @@ class MPC:
         interval's end with jerk limits (what the ramp of :meth:`CueingProblem.guess` aims at), at its
         start without; held at the last value past the plan's end, within the limits."""
         accelerations, jerks = self.plan
-        step = self.options.step
-        now = (self.plan_age + self.options.replan_steps) * step
+        times = np.arange(len(accelerations) + 1) * self.options.step
+        previous = Plan(times, np.zeros(self.model.n), np.zeros(self.model.n), accelerations, jerks)
+        now = (self.plan_age + self.options.replan_steps) * self.options.step
         times = now + (prob.t_nodes[1:] if self.smooth else prob.t_nodes[:-1])
-        # the previous plan's acceleration at those times, as Plan.at has it (each time in the step
-        # that starts at or before it, the last step's ramp carried on), without its positions
-        times = np.minimum(times, prob.t_nodes[-1])
-        nodes = np.arange(len(accelerations) + 1) * step
-        k = np.clip(np.searchsorted(nodes, times, side="right") - 1, 0, len(accelerations) - 1)
-        at = accelerations[k] + jerks[k] * (times - nodes[k])[:, None]
+        at = previous.accelerations_at(np.minimum(times, prob.t_nodes[-1]))
         return np.clip(at, -self.limits.acceleration, self.limits.acceleration)
 
     def _leave_rest(self, qd, u) -> np.ndarray:

@@ -165,11 +165,22 @@ class Plan:
         interval); it is reached from that interval's node state.
         """
         q_nodes, qd_nodes = self.nodes()
-        times = np.asarray(times, dtype=float)
-        k = np.clip(np.searchsorted(self.t_nodes, times, side="right") - 1, 0, len(self.u) - 1)
-        s = (times - self.t_nodes[k])[:, None]
+        k, s = self._intervals(times)
         q, qd = advance(q_nodes[k], qd_nodes[k], self.u[k], s, self.jerk[k])
         return q, qd, self.u[k] + self.jerk[k] * s
+
+    def accelerations_at(self, times) -> np.ndarray:
+        """The accelerations (K, n) of :meth:`at`, without integrating the positions and rates (a
+        controller reads its last plan so every cycle)."""
+        k, s = self._intervals(times)
+        return self.u[k] + self.jerk[k] * s
+
+    def _intervals(self, times) -> tuple[np.ndarray, np.ndarray]:
+        """Per time (K,): the interval it belongs to (the one that starts at or before it, the last
+        node to the last interval) and the time since that interval's start (K, 1)."""
+        times = np.asarray(times, dtype=float)
+        k = np.clip(np.searchsorted(self.t_nodes, times, side="right") - 1, 0, len(self.u) - 1)
+        return k, (times - self.t_nodes[k])[:, None]
 
     def states(self) -> np.ndarray:
         """Node states (N + 1, 2n): positions then rates."""
