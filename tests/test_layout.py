@@ -13,7 +13,7 @@ PACKAGE = Path(desdemona.__file__).parent
 LAYERS = (
     ("foundations", {"_version", "_casadi", "allocator", "guard", "files", "params", "perception", "plan"}),
     ("desired paths", {"profiles"}),
-    ("the machine", {"kinematics", "dynamics", "configs", "model", "compiled"}),
+    ("the machine", {"kinematics", "dynamics", "configs", "model", "compiled", "blasfeo"}),
     ("the cueing problem, its baselines and its check",
      {"problem", "transcription", "realtime", "sizing", "classical", "washout", "thesis", "predictors", "simulate", "metrics"}),
     ("solvers and sessions", {"offline", "windows", "mpc", "online", "session"}),

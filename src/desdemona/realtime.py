@@ -7,7 +7,7 @@ from __future__ import annotations
 import casadi as ca
 import numpy as np
 
-from desdemona import compiled
+from desdemona import blasfeo, compiled
 from desdemona.transcription import Bounds, CueingProblem
 
 # The real-time iteration's QP data is compiled to machine code (:mod:`desdemona.compiled`) as the graph
@@ -56,6 +56,7 @@ class RealTimeIteration:
             qp_data = (compiled.compiled([graph], RTI_FLAGS) or [qp_data])[0]
         options = {"error_on_fail": False, "print_time": False}
         if qp_solver == "hpipm":
+            blasfeo.load()  # its linear algebra built for this processor, where it can be (desdemona.blasfeo)
             # HPIPM exploits the stage structure (measured: 0.8 ms for the 2 s dfs horizon at 50 Hz in
             # its speed_abs mode, 1.1 ms in speed, against 38 ms for dense daqp on the same QP); it must
             # be told the stages' sizes.

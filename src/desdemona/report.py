@@ -27,7 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona import figures, guard
+from desdemona import blasfeo, figures, guard
 from desdemona._version import __version__
 from desdemona.profiles import CHANNELS
 from desdemona.simulate import Trajectory, trajectory_table
@@ -474,7 +474,7 @@ def online_summary(result, command: str | None = None) -> dict:
         "start": start_description(result),
         "quality": result.quality.to_dict(),
         "quality_classical_loop": None if result.baseline_quality is None else result.baseline_quality.to_dict(),
-        "cycles": {"count": len(times), "deadline_s": result.deadline,
+        "cycles": {"count": len(times), "deadline_s": result.deadline, "qp_linear_algebra": blasfeo.status(),
                    "compute_time_s": {"median": float(np.median(times)), "p99": float(np.percentile(times, 99)),
                                       "max": float(times.max())},
                    "sources": {s: sources.count(s) for s in ("mpc", "shifted", "brake")},
