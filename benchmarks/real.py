@@ -3,6 +3,7 @@
     python benchmarks/real.py                          # build the corpus if missing, run every job, write the table
     python benchmarks/real.py --cases f16-turn --configs dfs --modes offline hold
     python benchmarks/real.py --cases c172-doublet --modes hold perfect forecast --no-docs
+    python benchmarks/real.py --modes hold --rate dfs=100 --no-docs   # dfs on-line at 100 Hz
     python benchmarks/real.py --table-only             # re-read the result folders, rewrite the table
     python benchmarks/real.py --dask tcp://scheduler:8786   # the jobs on a Dask cluster
 
@@ -87,23 +88,27 @@ def corpus_cases(folder: Path, build: bool = True, forecasts=()) -> list[dict]:
     return cases
 
 
-def command(case: dict, config: str, mode: str, out: Path, wall: float | None = None) -> list[str]:
-    """The command line of one job, as a user would type it (off-line with ``--wall`` where given)."""
+def command(case: dict, config: str, mode: str, out: Path, wall: float | None = None,
+            step: float | None = None) -> list[str]:
+    """The command line of one job, as a user would type it (off-line with ``--wall`` where given,
+    on-line with ``--step`` where given)."""
     base = [sys.executable, "-m", "desdemona"]
     if mode == "offline":
         chosen = [] if wall is None else ["--wall", f"{wall:g}"]
         return [*base, "optimize", case["file"], "--config", config, *chosen, "--out", str(out), "--overwrite",
                 "--quiet", "--no-view"]
     forecast = ["--forecast", case["forecast"]] if mode == "forecast" else []
+    forecast += [] if step is None else ["--step", f"{step:g}"]
     return [*base, "online", case["file"], "--config", config, "--predictor", mode, *forecast, "--out", str(out),
             "--overwrite", "--no-view"]
 
 
-def run_job(case: dict, config: str, mode: str, out: str, timeout: float, wall: float | None = None) -> dict:
+def run_job(case: dict, config: str, mode: str, out: str, timeout: float, wall: float | None = None,
+            step: float | None = None) -> dict:
     """Run one job as its own process; its exit, wall time [s] and peak memory [MB]."""
     folder = Path(out) / f"{case['name']}--{config}--{mode}"
     start = time.perf_counter()
-    process = subprocess.Popen(command(case, config, mode, folder, wall), stdout=subprocess.PIPE,
+    process = subprocess.Popen(command(case, config, mode, folder, wall, step), stdout=subprocess.PIPE,
                                stderr=subprocess.STDOUT, text=True)
     deadline, stopped, status = start + timeout, False, None
     while status is None:
@@ -222,7 +227,14 @@ def main(argv=None) -> int:
     parser.add_argument("--wall", type=float, default=None, metavar="M_S2",
                         help="off-line: the cost's wall before the position limits (optimize --wall; 0: "
                              "without, the formulation before it)")
+    parser.add_argument("--rate", nargs="+", default=[], metavar="CONFIG=HZ",
+                        help="on-line: the cycle rate of these configurations (online --step 1/HZ; "
+                             "default the command's 50 Hz), e.g. dfs=100")
     args = parser.parse_args(argv)
+    try:
+        steps = {config: 1.0 / float(hz) for config, hz in (item.split("=") for item in args.rate)}
+    except (ValueError, ZeroDivisionError):
+        parser.error(f"--rate takes CONFIG=HZ, e.g. dfs=100, not {' '.join(args.rate)}")
 
     wanted = lambda name: args.cases is None or name in args.cases  # noqa: E731
     forecasts = {name for name in corpus.CASES if wanted(name)} if "forecast" in args.modes else set()
@@ -248,7 +260,8 @@ def main(argv=None) -> int:
             with open(record, "a") as fh:
                 fh.write(json.dumps(job) + "\n")
 
-        done = batch.map_jobs(run_job, [(c, config, mode, str(args.out), args.timeout, args.wall) for c, config, mode in jobs],
+        done = batch.map_jobs(run_job, [(c, config, mode, str(args.out), args.timeout, args.wall,
+                                         None if mode == "offline" else steps.get(config)) for c, config, mode in jobs],
                               args.processes, args.dask, progress)
     paths = {(c["name"], c["form"]): profiles.load(c["file"]) for c in cases}
     order = {(c["name"], config, mode): k for k, (c, config, mode) in enumerate(jobs)}

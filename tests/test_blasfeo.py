@@ -60,7 +60,7 @@ def test_the_process_runs_on_the_library_it_built():
 
 @pytest.mark.skipif(blasfeo.unavailable() is not None, reason=f"BLASFEO not built here: {blasfeo.unavailable()}")
 def test_the_build_is_kept_and_reused(monkeypatch, tmp_path):
-    folder = blasfeo.build()  # built here or earlier in the session (the first QP of a controller builds it)
+    folder = blasfeo.build()  # the suite's cache holds it already (conftest)
     stamp = (folder / "libblasfeo.so.0").stat().st_mtime_ns
     monkeypatch.setattr(blasfeo, "_compile", None)  # nothing may be compiled again
     assert blasfeo.build() == folder
