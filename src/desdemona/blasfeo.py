@@ -131,6 +131,8 @@ def build() -> Path:
     if all((folder / name).exists() for name in (*CASADI_FILES, "libblasfeo.so.0")):
         return folder
     folder.parent.mkdir(parents=True, exist_ok=True)
+    print(f"desdemona: building BLASFEO {VERSION} for this processor, once, into {folder.parent} (about 15 s "
+          "on two cores)", file=sys.stderr, flush=True)
     work = Path(tempfile.mkdtemp(prefix=".hpipm-", dir=folder.parent))
     try:
         objects = _compile(manifest, work)
