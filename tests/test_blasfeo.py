@@ -13,6 +13,9 @@ import pytest
 
 from desdemona import blasfeo, compiled
 
+needs_build = pytest.mark.skipif(blasfeo.unavailable() is not None,
+                                 reason=f"BLASFEO is not built here: {blasfeo.unavailable()}")
+
 # A few cycles of the dfs controller on a ramp of the modulus, from rest: every QP has active bounds
 # (the one-way arm, the acceleration's limits at the spin-up) and the plans build on each other.
 COMMANDS = """
@@ -38,7 +41,7 @@ def commands(env: dict) -> dict:
     return json.loads(done.stdout.strip().splitlines()[-1])
 
 
-@pytest.mark.skipif(blasfeo.unavailable() is not None, reason=f"BLASFEO not built here: {blasfeo.unavailable()}")
+@needs_build
 def test_the_controller_commands_the_same_on_either_build():
     ours, casadi = commands({}), commands({"DESDEMONA_BLASFEO": "generic"})
     assert ours["status"].startswith(f"BLASFEO {blasfeo.VERSION} for AVX2")
@@ -48,7 +51,7 @@ def test_the_controller_commands_the_same_on_either_build():
     np.testing.assert_allclose(a, b, rtol=0, atol=1e-7 * np.abs(b).max())
 
 
-@pytest.mark.skipif(blasfeo.unavailable() is not None, reason=f"BLASFEO not built here: {blasfeo.unavailable()}")
+@needs_build
 def test_the_process_runs_on_the_library_it_built():
     status = blasfeo.load()
     assert status == blasfeo.status()
@@ -58,7 +61,7 @@ def test_the_process_runs_on_the_library_it_built():
     assert blasfeo.load() is status  # once per process
 
 
-@pytest.mark.skipif(blasfeo.unavailable() is not None, reason=f"BLASFEO not built here: {blasfeo.unavailable()}")
+@needs_build
 def test_the_build_is_kept_and_reused(monkeypatch, tmp_path):
     folder = blasfeo.build()  # the suite's cache holds it already (conftest)
     stamp = (folder / "libblasfeo.so.0").stat().st_mtime_ns
