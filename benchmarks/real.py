@@ -97,9 +97,9 @@ def command(case: dict, config: str, mode: str, out: Path, wall: float | None = 
         chosen = [] if wall is None else ["--wall", f"{wall:g}"]
         return [*base, "optimize", case["file"], "--config", config, *chosen, "--out", str(out), "--overwrite",
                 "--quiet", "--no-view"]
-    forecast = ["--forecast", case["forecast"]] if mode == "forecast" else []
-    forecast += [] if step is None else ["--step", f"{step:g}"]
-    return [*base, "online", case["file"], "--config", config, "--predictor", mode, *forecast, "--out", str(out),
+    chosen = ["--forecast", case["forecast"]] if mode == "forecast" else []
+    chosen += [] if step is None else ["--step", f"{step:g}"]
+    return [*base, "online", case["file"], "--config", config, "--predictor", mode, *chosen, "--out", str(out),
             "--overwrite", "--no-view"]
 
 

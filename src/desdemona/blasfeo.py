@@ -121,11 +121,13 @@ def _load() -> str:
 
 def build() -> Path:
     """The cache's folder with BLASFEO built for this processor and CasADi's HPIPM beside it, built now
-    if it is not there. The build runs in a temporary folder in the cache, renamed when whole, so a
-    folder in the cache is always complete (two processes building at once keep one); nothing is left
-    behind by a failed or interrupted build."""
+    if it is not there. The build runs in a temporary folder in the cache (as :mod:`desdemona.compiled`
+    compiles), whose finished library folder is renamed into place, so a folder in the cache is always
+    complete (two processes building at once keep one); nothing is left behind by a failed or
+    interrupted build."""
     manifest = (SOURCES / "sources.txt").read_text().split()
-    key = hashlib.sha256("\n".join([VERSION, ca.__version__, str(compiled.compiler()), *C_FLAGS, *ASM_FLAGS,
+    cc = compiled.compiler()
+    key = hashlib.sha256("\n".join([VERSION, ca.__version__, str(cc), *C_FLAGS, *ASM_FLAGS,
                                     *manifest]).encode()).hexdigest()
     folder = compiled.cache_dir() / f"hpipm-{key[:24]}"
     if all((folder / name).exists() for name in (*CASADI_FILES, "libblasfeo.so.0")):
@@ -133,30 +135,25 @@ def build() -> Path:
     folder.parent.mkdir(parents=True, exist_ok=True)
     print(f"desdemona: building BLASFEO {VERSION} for this processor, once, into {folder.parent} (about 15 s "
           "on two cores)", file=sys.stderr, flush=True)
-    work = Path(tempfile.mkdtemp(prefix=".hpipm-", dir=folder.parent))
-    try:
-        objects = _compile(manifest, work)
-        _run([compiled.compiler(), "-shared", "-Wl,-soname,libblasfeo.so.0", "-o", str(work / "libblasfeo.so.0"),
+    with tempfile.TemporaryDirectory(dir=folder.parent, prefix=".hpipm-") as work:
+        objects = _compile(cc, manifest, Path(work))
+        built = Path(work) / "lib"
+        built.mkdir()
+        _run([cc, "-shared", "-Wl,-soname,libblasfeo.so.0", "-o", str(built / "libblasfeo.so.0"),
               *map(str, objects), "-lm"])
-        for obj in objects:
-            obj.unlink()
         casadi_dir = Path(ca.__file__).parent
         for name in CASADI_FILES:
-            shutil.copy2(casadi_dir / name, work / name)
-        work.chmod(0o755)  # as a folder made by mkdir is (mkdtemp's is private)
+            shutil.copy2(casadi_dir / name, built / name)
         try:
-            work.rename(folder)
+            built.rename(folder)
         except OSError:  # another process finished first: keep its folder
             if not (folder / "libblasfeo.so.0").exists():
                 raise
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
     return folder
 
 
-def _compile(manifest: list[str], work: Path) -> list[Path]:
-    """Each source of the manifest compiled to an object in ``work``, on every core."""
-    cc = compiled.compiler()
+def _compile(cc: str, manifest: list[str], work: Path) -> list[Path]:
+    """Each source of the manifest compiled by ``cc`` to an object in ``work``, on every core."""
     include = str(SOURCES / "include")
 
     def one(k: int, source: str) -> Path:
