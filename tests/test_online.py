@@ -328,6 +328,43 @@ def test_the_felt_filters_follow_every_sub_step_of_a_cycle(params):
     np.testing.assert_allclose(mpc.z, states[m], rtol=1e-10, atol=1e-12)
 
 
+def test_the_canals_follow_a_plan_whose_intervals_vary(params):
+    """The canals model (first-order channels) keeps the plan's coarse tail: each stage carries the
+    felt rotation over its own interval, as scipy's zero-order hold of that interval's sub-steps does,
+    and the controller places its start (at rest the canals feel nothing wherever the machine stands)."""
+    import scipy.signal
+
+    from desdemona.perception import canals_model
+
+    model = Model(params, "yaw-track-cabin")
+    canals = canals_model()
+    options = dataclasses.replace(OPTIONS, horizon=2.0, perception=canals, substeps=2, tail_step=0.2, fine=0.2)
+    mpc = MPC(model, options)
+    prob = mpc.problem
+    assert not prob.uniform and set(np.round(prob.steps, 9)) == {0.05, 0.2}
+    rng = np.random.default_rng(5)
+    x = np.r_[rng.normal(size=3 * model.n) * 0.3, rng.normal(size=prob.nz)]
+    u = rng.normal(size=model.n)
+    for k in (0, prob.N - 1):  # a fine interval and a coarse one
+        h, m = prob.steps[k], prob.m
+        data = prob.with_steps(np.zeros((prob.m * 6, prob.N)))[:, k]
+        z_next = np.asarray(prob.stage(x, u, data)[0]).ravel()[prob.n_motion:]
+        Ad, Bd, *_ = scipy.signal.cont2discrete(canals.state_space(), h / m, method="zoh")
+        z = x[prob.n_motion:]
+        q, qd, a = np.split(x[:prob.n_motion], 3)
+        for j in range(m):
+            t = j * h / m
+            z = Ad @ z + Bd @ model.S(*advance(q, qd, a, t, u), a + u * t)
+        np.testing.assert_allclose(z_next, z, rtol=1e-10, atol=1e-12)
+    path = profiles.catapult(level=10.0, push=1.0, quiet=0.5, duration=3.0)
+    q0, _ = mpc.place((np.zeros(model.n), np.zeros(model.n)), path)
+    assert mpc.plan is not None and np.any(q0 != 0.0)
+    assert mpc.step((q0, np.zeros(model.n)), path).source == "mpc"
+    with pytest.raises(ValueError, match="uniform grid"):
+        ProblemOptions(steps=(0.05, 0.1), perception=thesis_model())
+    assert len(set(dataclasses.replace(options, perception=thesis_model()).grid())) == 1
+
+
 @pytest.mark.parametrize("config, horizon", [("yaw-track", 4.0), ("dfs", 2.0)])
 def test_the_command_plans_further_ahead_where_the_track_moves(tmp_path, config, horizon):
     """Without --horizon: 4 s where the track's position must be planned, 2 s on dfs, at most the path."""

@@ -6,7 +6,7 @@ import pytest
 import scipy.signal
 
 from desdemona import perception
-from desdemona.perception import Channel, get_model, telban_cardullo_model, thesis_model
+from desdemona.perception import Channel, canals_model, get_model, telban_cardullo_model, thesis_model
 
 W = np.logspace(-3, 3, 400)
 ALPHA = 500.0
@@ -19,11 +19,13 @@ def closed_forms():
     thesis_otolith = (1 + 1.0 * s) / ((1 + 0.5 * s) * (1 + 0.016 * s))  # eq. 6.5, unit DC gain
     tc_canal = [tl * 30 * s**2 / ((1 + tl * s) * (1 + 0.1 * s) * (1 + 30 * s)) for tl in (6.1, 5.3, 10.2)]
     ym_otolith = (1 + 13.2 * s) / ((1 + 5.33 * s) * (1 + 0.66 * s))
+    adaptation = 5.9 * s / (1 + 5.9 * s)  # the thesis canal's dominant time constant alone
     return {"thesis": [thesis_canal] * 3 + [thesis_otolith] * 3,
-            "telban-cardullo": tc_canal + [ym_otolith] * 3}
+            "telban-cardullo": tc_canal + [ym_otolith] * 3,
+            "canals": [adaptation] * 3 + [np.ones_like(s)] * 3}
 
 
-MODELS = {"thesis": thesis_model(ALPHA), "telban-cardullo": telban_cardullo_model()}
+MODELS = {"thesis": thesis_model(ALPHA), "telban-cardullo": telban_cardullo_model(), "canals": canals_model()}
 
 
 def ss_response(A, B, C, D, w):
@@ -86,6 +88,23 @@ def test_discrete_and_casadi_agree(name):
         np.testing.assert_allclose(np.asarray(y_k).ravel(), y[k], rtol=1e-12, atol=1e-12)
         x = x_next
         np.testing.assert_allclose(np.asarray(x).ravel(), states[k + 1], rtol=1e-12, atol=1e-12)
+
+
+@pytest.mark.parametrize("dt", [0.005, 0.02, 0.1, 0.2])
+def test_first_order_discretisation_in_closed_form_equals_scipy_zoh(dt):
+    """The canals model's states do not couple: its discretisation is a closed form in the step, a
+    CasADi expression that a grid of varying steps evaluates per interval; it equals the matrix
+    exponential of :meth:`discretize` and scipy's zero-order hold."""
+    model = MODELS["canals"]
+    assert model.diagonal and model.n_states == 3 and not MODELS["thesis"].diagonal
+    h = ca.SX.sym("h")
+    Ad_h, Bd_h = model.casadi_discrete(h)
+    Ad, Bd = (np.asarray(ca.Function("f", [h], [m])(dt)) for m in (Ad_h, Bd_h))
+    reference = scipy.signal.cont2discrete(model.state_space(), dt, method="zoh")
+    for mine, theirs in ((Ad, reference[0]), (Bd, reference[1]), (model.discretize(dt).Ad, reference[0])):
+        np.testing.assert_allclose(mine, theirs, rtol=1e-12, atol=1e-15)
+    with pytest.raises(ValueError, match="first-order"):
+        MODELS["thesis"].casadi_discrete(h)
 
 
 def test_continuous_casadi_ode_integrates_to_the_step_response():

@@ -163,13 +163,13 @@ class MPCOptions:
         ``step`` for the first ``fine`` seconds (at least the re-plan period and one step more), then
         ``tail_step`` rounded to whole steps, from ``far`` seconds on twice that (the last interval
         shorter where the plan ends; "auto" as None here: the controller resolves it for its
-        configuration, :class:`MPC`); uniform with a perception model, whose filters are discretised
-        for one step. The 4 s plans of ``full`` have 46 intervals instead of 56 with ``tail_step`` to
+        configuration, :class:`MPC`); uniform with a perception model whose channels are of higher
+        order than one (:attr:`~desdemona.perception.VestibularModel.diagonal`). The 4 s plans of ``full`` have 46 intervals instead of 56 with ``tail_step`` to
         the end: the QP's work falls with them, the felt force stays within 1 % on the built-in paths
         and moves either way on real ones ("Coarse tail of the plan")."""
         total = int(round(self.length / self.step))
         block = 1 if self.tail_step is None else int(round(self.tail_step / self.step))
-        if block <= 1 or self.perception is not None:
+        if block <= 1 or (self.perception is not None and not self.perception.diagonal):
             return np.full(total, self.step)
         start = min(total, max(int(round(self.fine / self.step)), self.replan_steps + 1))
         far = total if self.far in (None, "auto") else int(round(self.far / self.step))
@@ -329,14 +329,20 @@ class MPC:
 
         Returns the start (q0, qd0). Nothing is placed, and the controller is left as it was, on a
         configuration whose cabin follows the force (it starts level at home, as off-line), with a
-        perception model (the felt state at the start would depend on the choice), or where a solve
-        fails or the placed plan costs no less.
+        perception model whose felt state at rest depends on where the machine stands (otoliths with
+        states: the choice would change what was felt before the run), or where a solve fails or the
+        placed plan costs no less.
         """
         q, qd = (np.asarray(v, dtype=float).reshape(self.model.n) for v in state[:2])
         a = np.zeros_like(q)
         t, values = self._preview_arrays(preview)
-        if self.model.config.aligned or self.problem.nz or self._preview_problem(t, values):
+        prob = self.problem
+        # at rest nothing turns, and only filters of the force would remember where the machine stood
+        felt_at_rest = prob.nz and np.any(prob.filter.steady_gain()[:, 3:] != 0.0)
+        if self.model.config.aligned or felt_at_rest or self._preview_problem(t, values):
             return q, qd
+        if prob.nz:
+            self.z = prob.filter.steady_state(self.model.S(q, np.zeros_like(q), a))
         data = self._data(t, values)
         first = self._solve(q, qd, a, data, method="nlp")
         if not first.success:
@@ -423,7 +429,7 @@ class MPC:
         held = S_d.reshape(prob.N, len(prob.fractions), 6)[:, :prob.m, :].reshape(-1, 6)
         if self.z_d is None:
             self.z_d = prob.filter.steady_state(held[0])
-        y_d, states = prob.filter.simulate(held, self.z_d)
+        y_d, states = prob.perceive(held, self.z_d)
         self._z_d_next = states[prob.m * self.options.replan_steps]  # after this cycle's sub-steps
         return prob.with_steps(y_d.reshape(prob.N, -1).T)
 

@@ -32,6 +32,9 @@ Parameter sets (all normalised so perceived = actual where the sense works, see 
   linear and nonlinear approaches", NASA CR-2005-213747, 2005; L. R. Young and J. L. Meiry, "A
   revised dynamic otolith model", Aerospace Medicine 39, 1968.
 
+- ``canals``: the thesis canal's adaptation alone, tau_1 s / (1 + tau_1 s) with tau_1 = 5.9 s, and the
+  otoliths transparent (:func:`canals_model`): what an on-line plan can carry cheaply.
+
 Perception thresholds (:data:`THRESHOLDS`): angular velocity 3.0 / 3.6 / 2.6 deg/s (roll / pitch /
 yaw), specific force 0.17 / 0.17 / 0.28 m/s^2 (x / y / z), from D. B. Reid and M. A. Nahon, "Flight
 simulation motion-base drive algorithms, part 1", UTIAS report 296, 1985, as used by Telban and Cardullo.
@@ -39,6 +42,7 @@ simulation motion-base drive algorithms, part 1", UTIAS report 296, 1985, as use
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -100,7 +104,10 @@ class Channel:
         return num, den
 
     def state_space(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """Continuous (A, B, C, D) realisation, scaled to unit leading denominator coefficient."""
+        """Continuous (A, B, C, D) realisation, scaled to unit leading denominator coefficient; a
+        static channel (no poles: H = gain) has no state."""
+        if not self.poles:
+            return np.zeros((0, 0)), np.zeros((0, 1)), np.zeros((1, 0)), np.array([[self.gain]])
         num, den = self.polynomials()
         return scipy.signal.tf2ss(num / den[0], den / den[0])
 
@@ -189,6 +196,23 @@ class VestibularModel:
     def n_states(self) -> int:
         return sum(len(c.poles) for c in self.channels)
 
+    @property
+    def diagonal(self) -> bool:
+        """Whether every channel is static or of first order, so that its states do not couple and
+        the discretisation has a closed form in the step (:meth:`casadi_discrete`)."""
+        return all(len(c.poles) <= 1 for c in self.channels)
+
+    def casadi_discrete(self, dt) -> tuple[ca.SX, ca.SX]:
+        """(Ad, Bd) of :meth:`discretize` as CasADi expressions of the step ``dt`` (a symbol), for a
+        :attr:`diagonal` model: x' = a x + b u holds over dt as x+ = e^(a dt) x + (e^(a dt) - 1) / a b u."""
+        if not self.diagonal:
+            raise ValueError(f"perception model {self.name!r}: a step that varies needs first-order channels")
+        A, B, _, _ = self.state_space()
+        a = np.diag(A)
+        decay = ca.exp(ca.DM(a) * dt)
+        return ca.diag(decay), ca.diag((decay - 1.0) / ca.DM(a)) @ ca.DM(B)
+
+    @functools.lru_cache(maxsize=8)
     def discretize(self, dt: float) -> DiscreteSystem:
         """Exact zero-order-hold discretisation at step ``dt`` [s] (matrix exponential)."""
         if not (math.isfinite(dt) and dt > 0.0):
@@ -245,7 +269,25 @@ def telban_cardullo_model(normalised: bool = True) -> VestibularModel:
     return VestibularModel("telban-cardullo", canals + otoliths)
 
 
-MODELS = {"thesis": thesis_model, "telban-cardullo": telban_cardullo_model}
+def canals_model(tau: float = 5.9) -> VestibularModel:
+    """The canals' adaptation alone: tau s / (1 + tau s) per axis, the otoliths transparent.
+
+    The thesis' canal (eq. 6.3, table 6.1) with its dominant time constant tau_1 = 5.9 s kept and the
+    rest left out: the zero at tau_L = 0.11 s and the poles at 0.005 s and 1 / alpha act above 1 Hz,
+    where a jerk-limited motion has little left. A steady rotation fades from what is felt in about
+    tau; a change of the rotation felt in the cabin (a spin-up, or the arm's spin turned into the
+    cabin's roll or pitch by its gimbals) is felt as it is. One state per canal, none per otolith: an
+    on-line plan weighs rotation as the person feels it at 3 states more than without a model
+    ("Canals in the on-line cost"), and its grid may vary (:attr:`VestibularModel.diagonal`).
+    """
+    if not (math.isfinite(tau) and tau > 0.0):
+        raise ValueError(f"canal time constant tau = {tau!r} s must be a positive number")
+    canals = tuple(Channel(CHANNEL_NAMES[i], gain=tau, s_power=1, zeros=(), poles=(tau,)) for i in range(3))
+    otoliths = tuple(Channel(CHANNEL_NAMES[3 + i], gain=1.0, s_power=0, zeros=(), poles=()) for i in range(3))
+    return VestibularModel("canals", canals + otoliths)
+
+
+MODELS = {"thesis": thesis_model, "telban-cardullo": telban_cardullo_model, "canals": canals_model}
 
 
 def get_model(name: str) -> VestibularModel:

@@ -43,6 +43,7 @@ little from it. An off-line session adds a smooth wall before the position limit
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 from typing import Literal
@@ -68,8 +69,9 @@ class ProblemOptions:
 
     h_u : control step [s] (thesis h_qdd, section 5.3).
     steps : the intervals' lengths [s] where the grid is not uniform (an on-line horizon fine near now
-        and coarse further on), None for ``h_u`` throughout; not with a perception model, whose
-        filters are discretised for one step.
+        and coarse further on), None for ``h_u`` throughout; with a perception model only where its
+        channels are of first order at most (:attr:`~desdemona.perception.VestibularModel.diagonal`),
+        whose discretisation has a closed form in the step.
     substeps : sub-steps per control interval for cost and limits. Two are enough where S_d is smooth
         on the scale of h_u ("Sub-steps").
     initial : "free" (optimised, section 5.2), "rest" (at rest, position free; on ``dfs`` at home, the
@@ -159,8 +161,10 @@ class ProblemOptions:
                 raise ValueError(f"{name} = {value!r}: must be one of {', '.join(allowed)}")
         if self.steps is not None and not all(math.isfinite(h) and h > 0 for h in self.steps):
             raise ValueError("steps: every interval must last a positive number of seconds")
-        if self.steps is not None and self.perception is not None:
-            raise ValueError("steps: a perception model needs a uniform grid")
+        if (self.steps is not None and self.perception is not None and not self.perception.diagonal
+                and max(self.steps) - min(self.steps) > 1e-12):
+            raise ValueError(f"steps: perception model {self.perception.name!r} has channels of higher order "
+                             f"than one and needs a uniform grid")
         if self.initial == "given" and self.initial_state is None:
             raise ValueError("initial = 'given' needs initial_state = (q0, qd0)")
         if self.unweighted is not None and not (math.isfinite(self.unweighted) and self.unweighted >= 0):
@@ -235,7 +239,10 @@ class Formulation:
         self.jerk_weight = options.jerk_weight if options.jerk_weight is not None else default_jerk_weight(
             model.config, online=parametric)
         self.vestibular = options.perception
-        self.filter = self.vestibular.discretize(self.h_sub) if self.vestibular else None
+        # the filters over the first interval's sub-steps (a controller's cycle); on a grid that varies
+        # the stages discretise them for their own step (VestibularModel.casadi_discrete)
+        self.filter = self.vestibular.discretize(float(self.steps[0]) / self.m) if self.vestibular else None
+        self.uniform = bool(np.ptp(self.steps) <= 1e-12)
         self.nz = self.vestibular.n_states if self.vestibular else 0
         n = model.n
         self.n_motion = (3 if self.smooth else 2) * n  # (q, qd[, qdd]) lead the state, filters follow
@@ -259,8 +266,23 @@ class Formulation:
         if self.vestibular is None:
             return self.with_steps(S_d.reshape(self.N, -1).T)  # column k: S_d at the points of interval k
         # perceived desired path, from the steady state of its first sample, held over each sub-step
-        y_d = self.filter.simulate(S_d[:, :self.m, :].reshape(-1, 6))[0]
+        y_d = self.perceive(S_d[:, :self.m, :].reshape(-1, 6))[0]
         return self.with_steps(y_d.reshape(self.N, -1).T)
+
+    def perceive(self, S, z0=None) -> tuple[np.ndarray, np.ndarray]:
+        """Through the perception model, S (N m, 6) held over each sub-step of the grid in turn:
+        the perceived path (N m, 6) and the filter states (N m + 1, nz), from ``z0`` (default the
+        steady state of S[0]). A grid that varies is taken a run of equal intervals at a time."""
+        S = np.asarray(S, dtype=float)
+        z = self.filter.steady_state(S[0]) if z0 is None else np.asarray(z0, dtype=float)
+        outputs, states, start = [], [z[None, :]], 0
+        for step, run in itertools.groupby(self.steps.tolist()):
+            stop = start + self.m * len(list(run))
+            y, x = self.vestibular.discretize(step / self.m).simulate(S[start:stop], states[-1][-1])
+            outputs.append(y)
+            states.append(x[1:])
+            start = stop
+        return np.vstack(outputs), np.vstack(states)
 
     @property
     def n_head(self) -> int:
@@ -386,11 +408,12 @@ class Formulation:
             residuals = [ca.sqrt(trapezoid[j] * h_u * inv_T) * root_w * (values[j] - d[6 * j: 6 * j + 6])
                          for j in range(points)]
         else:
-            A, B = ca.DM(self.filter.Ad), ca.DM(self.filter.Bd)
+            A, B = ((ca.DM(self.filter.Ad), ca.DM(self.filter.Bd)) if self.uniform
+                    else self.vestibular.casadi_discrete(h_u / m))
             C, D = ca.DM(self.filter.C), ca.DM(self.filter.D)
             residuals = []
             for j in range(m):  # zero-order hold of S over each sub-step
-                residuals.append(ca.sqrt(self.h_sub * inv_T) * root_w * (C @ z + D @ values[j] - d[6 * j: 6 * j + 6]))
+                residuals.append(ca.sqrt(h_u / m * inv_T) * root_w * (C @ z + D @ values[j] - d[6 * j: 6 * j + 6]))
                 z = A @ z + B @ values[j]
         lim, o = self.model.limits, self.options
         if o.wall > 0 and lim.bounded:
