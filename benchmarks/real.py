@@ -89,26 +89,26 @@ def corpus_cases(folder: Path, build: bool = True, forecasts=()) -> list[dict]:
 
 
 def command(case: dict, config: str, mode: str, out: Path, wall: float | None = None,
-            step: float | None = None) -> list[str]:
+            step: float | None = None, extra: tuple[str, ...] = ()) -> list[str]:
     """The command line of one job, as a user would type it (off-line with ``--wall`` where given,
-    on-line with ``--step`` where given)."""
+    on-line with ``--step`` where given and the ``extra`` arguments)."""
     base = [sys.executable, "-m", "desdemona"]
     if mode == "offline":
         chosen = [] if wall is None else ["--wall", f"{wall:g}"]
         return [*base, "optimize", case["file"], "--config", config, *chosen, "--out", str(out), "--overwrite",
                 "--quiet", "--no-view"]
     chosen = ["--forecast", case["forecast"]] if mode == "forecast" else []
-    chosen += [] if step is None else ["--step", f"{step:g}"]
+    chosen += ([] if step is None else ["--step", f"{step:g}"]) + list(extra)
     return [*base, "online", case["file"], "--config", config, "--predictor", mode, *chosen, "--out", str(out),
             "--overwrite", "--no-view"]
 
 
 def run_job(case: dict, config: str, mode: str, out: str, timeout: float, wall: float | None = None,
-            step: float | None = None) -> dict:
+            step: float | None = None, extra: tuple[str, ...] = ()) -> dict:
     """Run one job as its own process; its exit, wall time [s] and peak memory [MB]."""
     folder = Path(out) / f"{case['name']}--{config}--{mode}"
     start = time.perf_counter()
-    process = subprocess.Popen(command(case, config, mode, folder, wall, step), stdout=subprocess.PIPE,
+    process = subprocess.Popen(command(case, config, mode, folder, wall, step, extra), stdout=subprocess.PIPE,
                                stderr=subprocess.STDOUT, text=True)
     deadline, stopped, status = start + timeout, False, None
     while status is None:
@@ -230,6 +230,9 @@ def main(argv=None) -> int:
     parser.add_argument("--rate", nargs="+", default=[], metavar="CONFIG=HZ",
                         help="on-line: the cycle rate of these configurations (online --step 1/HZ; "
                              "default the command's 50 Hz), e.g. dfs=100")
+    parser.add_argument("--online-args", default="", metavar="ARGS",
+                        help="on-line: more arguments for every job, e.g. '--perception none' to run the "
+                             "formulation before a change side by side")
     args = parser.parse_args(argv)
     try:
         steps = {config: 1.0 / float(hz) for config, hz in (item.split("=") for item in args.rate)}
@@ -261,7 +264,9 @@ def main(argv=None) -> int:
                 fh.write(json.dumps(job) + "\n")
 
         done = batch.map_jobs(run_job, [(c, config, mode, str(args.out), args.timeout, args.wall,
-                                         None if mode == "offline" else steps.get(config)) for c, config, mode in jobs],
+                                         None if mode == "offline" else steps.get(config),
+                                         () if mode == "offline" else tuple(args.online_args.split()))
+                                        for c, config, mode in jobs],
                               args.processes, args.dask, progress)
     paths = {(c["name"], c["form"]): profiles.load(c["file"]) for c in cases}
     order = {(c["name"], config, mode): k for k, (c, config, mode) in enumerate(jobs)}

@@ -719,3 +719,56 @@ def test_the_classical_loop_starts_on_the_gimbal_branch_it_steers_from():
     moving = np.r_[0.0, 0.0, 0.0, 0.1, 0.0, 0.0]
     assert np.all(_loop_start(model, placed, moving) == placed)
     assert np.all(_loop_start(Model(config="yaw-track-cabin"), placed[[0, 1, 5]], np.zeros(3)) == placed[[0, 1, 5]])
+
+
+def test_the_felt_rotation_beyond_its_band_is_priced_again(params):
+    """With ``rotation_band`` each sub-step adds the felt rotation beyond the band (per canal channel,
+    either way) to the residuals, BAND_WEIGHT times its weight: nothing within the band, the excess
+    beyond it."""
+    from desdemona.perception import canals_model
+    from desdemona.problem import BAND_WEIGHT
+
+    model = Model(params, "yaw-track-cabin")
+    options = dataclasses.replace(OPTIONS, perception=canals_model(), substeps=1)
+    plain, banded = (MPC(model, dataclasses.replace(options, rotation_band=band)).problem for band in (None, 2.0))
+    thresholds = np.asarray(canals_model().thresholds[:3])
+    x, u = np.zeros(plain.nx), np.zeros(plain.nu)
+    data = plain.with_steps(np.zeros((6, plain.N)))[:, 0]
+    h, T = data[0], 1.0 / data[2]
+    for felt in (np.array([0.5, -1.5, 1.9]), np.array([3.0, -2.5, 0.0])):  # in thresholds
+        z = felt * thresholds / plain.filter.C[np.arange(3), np.arange(3)]  # at rest: felt = C z
+        x[plain.n_motion:] = z
+        r0, r1 = (np.asarray(p.residual(x, u, data)).ravel() for p in (plain, banded))
+        assert len(r1) == len(r0) + 3
+        beyond = np.sign(felt) * np.maximum(np.abs(felt) - 2.0, 0.0) * thresholds
+        expected = np.sqrt(BAND_WEIGHT * h / T * plain.cost_weights[:3]) * beyond
+        np.testing.assert_allclose(r1[6:9], expected, atol=1e-12)
+        np.testing.assert_allclose(np.delete(r1, np.s_[6:9]), r0, atol=1e-12)
+    with pytest.raises(ValueError, match="perception model"):
+        ProblemOptions(rotation_band=1.0)
+
+
+def test_online_weighs_the_felt_rotation_by_default_where_the_path_is_s(tmp_path, capsys):
+    """``online`` takes the canals model and a band of one threshold where the path is S, nothing on
+    dfs; --perception none and --rotation-band none switch them off; the felt figures are judged
+    through the thesis' model whatever the plan weighed."""
+    from desdemona.cli import main
+
+    runs = {"default": [], "none": ["--perception", "none"], "no-band": ["--rotation-band", "none"]}
+    for name, extra in runs.items():
+        out = tmp_path / name
+        assert main(["online", "cosine", "--config", "yaw-track", "--horizon", "1", "--step", "0.05",
+                     "--deadline", "100", "--out", str(out), "--no-view", *extra]) == 0
+        summary = json.loads((out / "summary.json").read_text())
+        perception, band = summary["options"]["mpc"]["perception"], summary["options"]["mpc"]["rotation_band"]
+        assert (perception or {}).get("name") == (None if name == "none" else "canals")
+        assert band == (1.0 if name == "default" else None)
+        assert summary["quality"]["vestibular_model"] == "thesis"
+    assert main(["online", "dfs-catapult", "--config", "dfs", "--step", "0.05", "--out", str(tmp_path / "dfs")]) == 0
+    assert json.loads((tmp_path / "dfs" / "summary.json").read_text())["options"]["mpc"]["perception"] is None
+    capsys.readouterr()
+    for extra, message in ((["--rotation-band", "wide"], "--rotation-band 'wide'"),
+                           (["--perception", "none", "--rotation-band", "1"], "with a perception model")):
+        assert main(["online", "cosine", "--config", "yaw-track", "--out", str(tmp_path / "bad"), *extra]) == 2
+        assert message in capsys.readouterr().err
+        assert not (tmp_path / "bad").exists()

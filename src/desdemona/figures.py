@@ -172,7 +172,7 @@ def draw_felt(trajectories, labels, path: str | Path, vestibular: perception.Ves
     """
     from desdemona import metrics
 
-    vestibular = perception.thesis_model() if vestibular is None else vestibular
+    vestibular = perception.judging(vestibular)
     thresholds = np.degrees(np.asarray(vestibular.thresholds, float))
     tilt = math.degrees(metrics.direction_threshold(vestibular.thresholds))
     fig = _figure(figsize=(5.5 * len(trajectories) + 1.5, 6.5))

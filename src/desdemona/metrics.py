@@ -453,7 +453,7 @@ def of_arrays(t, S, S_d, qdd, qd, joint_names, M=None, M_d=None,
     """
     t = np.asarray(t, float)
     dt = step_of(t)
-    vestibular = perception.thesis_model() if vestibular is None else vestibular
+    vestibular = perception.judging(vestibular)
     qdd, qd = np.asarray(qdd, float).reshape(len(t), -1), np.asarray(qd, float).reshape(len(t), -1)
     S = np.asarray(S, float)
     channel = dict.fromkeys(Metrics.CHANNEL_FIELDS)

@@ -64,7 +64,8 @@ class MPCOptions:
     to convergence, warm-started, at most ``max_iter`` iterations) or "auto" (see
     :attr:`plan_method`); perception : minimise the perceived difference through this vestibular model
     (chapter 6): the controller then carries the filter states of what the person has felt and of
-    what they should have felt from step to step; spin_up : fraction of the yaw's acceleration limit
+    what they should have felt from step to step; rotation_band : with it, the felt rotation beyond
+    this many perception thresholds weighs more (:attr:`~desdemona.problem.ProblemOptions.rotation_band`); spin_up : fraction of the yaw's acceleration limit
     with which a still yaw is seeded (:meth:`MPC._leave_rest`), 0 to switch it off.
 
     rti_step : the share of each real-time iteration's QP step taken from the previous plan
@@ -113,6 +114,7 @@ class MPCOptions:
     far: float | Literal["auto"] | None = "auto"
     jerk_weight: float | None = None
     reach: float | None = None
+    rotation_band: float | None = None
 
     def __post_init__(self):
         if self.method not in ("auto", "rti", "nlp"):
@@ -263,7 +265,7 @@ class MPC:
             margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6,
             stoppable=True, braking=options.braking, perception=options.perception, initial_filter="given",
             steps=None if np.all(steps == options.step) else tuple(steps),
-            jerk_weight=options.jerk_weight)
+            jerk_weight=options.jerk_weight, rotation_band=options.rotation_band)
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         self.limits = model.limits
         self._limit_use = model.step_limit_use(options.step)

@@ -290,6 +290,13 @@ def canals_model(tau: float = 5.9) -> VestibularModel:
 MODELS = {"thesis": thesis_model, "telban-cardullo": telban_cardullo_model, "canals": canals_model}
 
 
+def judging(model: VestibularModel | None) -> VestibularModel:
+    """The model a result's felt figures are computed through: ``model``, or the thesis' model where it
+    is None or :func:`canals_model`, which leaves out what the canals do above 1 Hz and what the
+    otoliths do at all, and is a cost, not a yardstick."""
+    return thesis_model() if model is None or model.name == "canals" else model
+
+
 def get_model(name: str) -> VestibularModel:
     """The perception model called ``name``, with its default parameters."""
     if name not in MODELS:

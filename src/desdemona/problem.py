@@ -56,6 +56,9 @@ from desdemona.plan import advance
 from desdemona.model import Model
 from desdemona.profiles import DesiredPath
 
+#: How much more a felt rotation beyond :attr:`ProblemOptions.rotation_band` weighs: on top of its
+#: weight, this many times it ("Felt rotation band").
+BAND_WEIGHT = 9.0
 #: The off-line cost's wall before each position limit (:attr:`ProblemOptions.wall`): its width, as a
 #: share of the joint's travel, and what it costs at the limit, as a felt error [m/s^2].
 WALL_WIDTH, WALL = 0.005, 1.0
@@ -123,6 +126,10 @@ class ProblemOptions:
         track grazed its end there and IPOPT's dual infeasibility stayed at that one node for hundreds
         of iterations ("Wall before the position limits"). 0 (the default): none, the thesis'
         formulation; an off-line session (:func:`desdemona.session.offline`) takes ``WALL``.
+    rotation_band : with a perception model, a felt rotation beyond this many perception thresholds of
+        its canal channel (either way) costs :data:`BAND_WEIGHT` times its weight more, on the excess: a
+        plan may use a rotation the occupant hardly feels (the arm's slow spin-up, a tilt below the
+        threshold) and pays steeply for one they would ("Felt rotation band"). None: no band.
     """
 
     h_u: float = 0.05
@@ -148,6 +155,7 @@ class ProblemOptions:
     compile: bool | None = None
     gauss_newton_first: bool | None = None
     wall: float = 0.0
+    rotation_band: float | None = None
 
     def __post_init__(self):
         if not (math.isfinite(self.h_u) and self.h_u > 0):
@@ -171,6 +179,10 @@ class ProblemOptions:
             raise ValueError(f"unweighted = {self.unweighted!r}: must be a number >= 0")
         if not (math.isfinite(self.wall) and self.wall >= 0):
             raise ValueError(f"wall = {self.wall!r}: must be a number >= 0")
+        if self.rotation_band is not None and not (self.perception is not None and math.isfinite(self.rotation_band)
+                                                   and self.rotation_band >= 0):
+            raise ValueError(f"rotation_band = {self.rotation_band!r}: a number of thresholds >= 0, with a "
+                             f"perception model (the band is on the felt rotation)")
         if not (self.regularisation >= 0 and 0 <= self.margin < 0.5):
             raise ValueError("regularisation must be >= 0 and margin in [0, 0.5)")
 
@@ -412,8 +424,14 @@ class Formulation:
                     else self.vestibular.casadi_discrete(h_u / m))
             C, D = ca.DM(self.filter.C), ca.DM(self.filter.D)
             residuals = []
+            band = self.options.rotation_band
             for j in range(m):  # zero-order hold of S over each sub-step
-                residuals.append(ca.sqrt(h_u / m * inv_T) * root_w * (C @ z + D @ values[j] - d[6 * j: 6 * j + 6]))
+                felt = C @ z + D @ values[j] - d[6 * j: 6 * j + 6]
+                residuals.append(ca.sqrt(h_u / m * inv_T) * root_w * felt)
+                if band is not None:  # the felt rotation beyond the band, priced again
+                    width = ca.DM(band * np.asarray(self.vestibular.thresholds[:3]))
+                    beyond = ca.fmax(felt[:3] - width, 0.0) + ca.fmin(felt[:3] + width, 0.0)
+                    residuals.append(ca.sqrt(BAND_WEIGHT * h_u / m * inv_T) * root_w[:3] * beyond)
                 z = A @ z + B @ values[j]
         lim, o = self.model.limits, self.options
         if o.wall > 0 and lim.bounded:

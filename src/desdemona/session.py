@@ -24,6 +24,7 @@ import numpy as np
 
 from desdemona import profiles, sizing
 from desdemona.model import Model
+from desdemona.perception import canals_model
 from desdemona.profiles import DesiredPath
 
 class ChoiceError(ValueError):
@@ -35,6 +36,9 @@ MIN_H_U = 1e-3
 #: How each command may start a session (the first is its default).
 OFFLINE_STARTS = ("rest", "free", "given")
 ONLINE_STARTS = ("rest", "home", "steady", "given")
+#: An on-line session's felt-rotation band [perception thresholds] (:attr:`MPCOptions.rotation_band`)
+#: with a perception model ("Felt rotation band").
+ROTATION_BAND = 1.0
 
 
 @dataclass(frozen=True)
@@ -176,7 +180,8 @@ def thesis(path: DesiredPath, model: Model, choices: Choices = Choices()) -> Ses
 
 def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, horizon: float | None = None,
            reach: float | None = None, step: float = 0.02, predictor: str = "perfect",
-           reference: DesiredPath | None = None, forecast=None, perception=None, **timing) -> Session:
+           reference: DesiredPath | None = None, forecast=None, perception="auto", rotation_band="auto",
+           **timing) -> Session:
     """The session of ``online``: the cued path and its :class:`~desdemona.online.OnlineOptions`.
 
     horizon : how far the preview reaches [s], None: :func:`~desdemona.mpc.default_horizon`
@@ -185,14 +190,25 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     "route"): :class:`OnlineOptions`; forecast : the vehicle's forecasts of ``path``
     (:class:`~desdemona.profiles.forecast.Forecast`, for "forecast"; None in a live session, whose host
     sends them), given the gain and cued as the path is; perception : a vestibular model through which the controller
-    minimises the perceived difference, as :func:`offline` takes it; ``timing``: the other
+    minimises the perceived difference, as :func:`offline` takes it, None for none, "auto":
+    :func:`~desdemona.perception.canals_model` except on the configurations that follow the modulus
+    (``dfs``, ``dfs-yaw``); rotation_band :
+    :attr:`MPCOptions.rotation_band` [thresholds], "auto": :data:`ROTATION_BAND` with a perception
+    model ("Canals in the on-line cost", "Felt rotation band"); ``timing``: the other
     :class:`MPCOptions` fields (replan, delay, deadline, method, tail_step).
     """
     from desdemona.mpc import MPCOptions, default_horizon
     from desdemona.online import OnlineOptions
 
+    if perception == "auto":  # not measured on the configurations that follow the modulus
+        perception = None if model.config.takes_modulus else canals_model()
     if model.config.modulus_cost and perception is not None:
         raise ChoiceError("--perception applies to the full path S, not to the dfs modulus")
+    if rotation_band == "auto":
+        rotation_band = None if perception is None else ROTATION_BAND
+    if rotation_band is not None and not (perception is not None and math.isfinite(rotation_band) and rotation_band >= 0):
+        raise ChoiceError(f"--rotation-band {rotation_band:g}: a number of perception thresholds >= 0, with a "
+                          f"perception model (--perception)")
     if reference is not None and (reference.S_d is None) != (path.S_d is None):
         raise ChoiceError(f"--reference {reference.name}: its channels ({'t,M' if reference.S_d is None else 'S'}) "
                          f"differ from the path's")
@@ -224,7 +240,8 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
                          else "--reference is used only with --predictor route")
     weighted = cost(path, model, choices)
     try:
-        mpc = MPCOptions(horizon=horizon, step=step, reach=reach, perception=perception, **weighted, **timing)
+        mpc = MPCOptions(horizon=horizon, step=step, reach=reach, perception=perception, rotation_band=rotation_band,
+                         **weighted, **timing)
     except ValueError as exc:
         raise ChoiceError(f"--replan: {exc}") from None
     size = sizing.check_fits_online(path, model.config, mpc)

@@ -207,6 +207,20 @@ def run_batch(args) -> int:
     return 0 if all(r.status == "ok" for r in results) else EXIT_NOT_CONVERGED
 
 
+def _felt_choices(args) -> dict:
+    """``online``'s --perception and --rotation-band as :func:`desdemona.session.online` takes them."""
+    choices = {}
+    if args.perception is not None:
+        choices["perception"] = None if args.perception == "none" else perception_models.get_model(args.perception)
+    if args.rotation_band is not None:
+        try:
+            choices["rotation_band"] = None if args.rotation_band == "none" else float(args.rotation_band)
+        except ValueError:
+            raise UserError(f"--rotation-band {args.rotation_band!r}: a number of perception thresholds, "
+                            f"or none") from None
+    return choices
+
+
 def run_online(args) -> int:
     from desdemona import online, report
     from desdemona.metrics import joint_units
@@ -215,10 +229,9 @@ def run_online(args) -> int:
     reference = None if args.reference is None else profiles.load(args.reference)
     forecast = _forecast(args, path)
     timing = {k: getattr(args, k) for k in ("replan", "delay", "deadline", "method", "tail_step")}
-    perception = perception_models.get_model(args.perception) if args.perception else None
     resolved = session.online(path, model, session.Choices.of(args), horizon=args.horizon, reach=args.reach,
                               step=args.step, predictor=args.predictor, reference=reference, forecast=forecast,
-                              perception=perception, **timing)
+                              **_felt_choices(args), **timing)
     path, options = resolved.path, resolved.options
     result = online.run(path, model, options)
     unreachable = sizing.unreachable(path, model)

@@ -140,9 +140,14 @@ def build_parser() -> argparse.ArgumentParser:
                              "can tilt); given: the state of --initial-state (the default when it is given)")
     _add_initial_state_option(online)
     _add_cost_options(online)
-    online.add_argument("--perception", choices=tuple(perception_models.MODELS), default=None,
+    online.add_argument("--perception", choices=(*perception_models.MODELS, "none"), default=None,
                         help="minimise the perceived difference through this vestibular model, and report "
-                             "the perceived error of the controller and of the classical loop")
+                             "the perceived error of the controller and of the classical loop (default: "
+                             "canals, the canals' adaptation alone; none on dfs and dfs-yaw)")
+    online.add_argument("--rotation-band", default=None, metavar="THRESHOLDS", dest="rotation_band",
+                        help="with a perception model: a felt rotation beyond this many perception "
+                             "thresholds weighs ten times its weight, so the plan uses rotation the "
+                             "occupant hardly feels; none: no band (default: 1)")
     online.add_argument("--method", choices=("auto", "rti", "nlp"), default="auto",
                         help="rti: one QP per plan (fast); nlp: IPOPT to convergence; auto: rti when a "
                              "plan is made every step, nlp when --replan spans several steps, as the "
