@@ -65,8 +65,9 @@ class MPCOptions:
     :attr:`plan_method`); perception : minimise the perceived difference through this vestibular model
     (chapter 6): the controller then carries the filter states of what the person has felt and of
     what they should have felt from step to step; rotation_band : with it, the felt rotation beyond
-    this many perception thresholds weighs more (:attr:`~desdemona.problem.ProblemOptions.rotation_band`); spin_up : fraction of the yaw's acceleration limit
-    with which a still yaw is seeded (:meth:`MPC._leave_rest`), 0 to switch it off.
+    this many perception thresholds weighs more (:attr:`~desdemona.problem.ProblemOptions.rotation_band`);
+    spin_up : fraction of the yaw's acceleration limit with which a still yaw is seeded
+    (:meth:`MPC._leave_rest`), 0 to switch it off.
 
     rti_step : the share of each real-time iteration's QP step taken from the previous plan
     (:class:`~desdemona.realtime.RealTimeIteration`; 1 from a fresh seed); None: 0.5 where the cabin
@@ -166,9 +167,10 @@ class MPCOptions:
         ``tail_step`` rounded to whole steps, from ``far`` seconds on twice that (the last interval
         shorter where the plan ends; "auto" as None here: the controller resolves it for its
         configuration, :class:`MPC`); uniform with a perception model whose channels are of higher
-        order than one (:attr:`~desdemona.perception.VestibularModel.diagonal`). The 4 s plans of ``full`` have 46 intervals instead of 56 with ``tail_step`` to
-        the end: the QP's work falls with them, the felt force stays within 1 % on the built-in paths
-        and moves either way on real ones ("Coarse tail of the plan")."""
+        order than one (:attr:`~desdemona.perception.VestibularModel.diagonal`). The 4 s plans of
+        ``full`` have 46 intervals instead of 56 with ``tail_step`` to the end: the QP's work falls with
+        them, the felt force stays within 1 % on the built-in paths and moves either way on real ones
+        ("Coarse tail of the plan")."""
         total = int(round(self.length / self.step))
         block = 1 if self.tail_step is None else int(round(self.tail_step / self.step))
         if block <= 1 or (self.perception is not None and not self.perception.diagonal):
