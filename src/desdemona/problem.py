@@ -425,11 +425,11 @@ class Formulation:
             C, D = ca.DM(self.filter.C), ca.DM(self.filter.D)
             residuals = []
             band = self.options.rotation_band
+            width = None if band is None else ca.DM(band * np.asarray(self.vestibular.thresholds[:3]))
             for j in range(m):  # zero-order hold of S over each sub-step
                 felt = C @ z + D @ values[j] - d[6 * j: 6 * j + 6]
                 residuals.append(ca.sqrt(h_u / m * inv_T) * root_w * felt)
-                if band is not None:  # the felt rotation beyond the band, priced again
-                    width = ca.DM(band * np.asarray(self.vestibular.thresholds[:3]))
+                if width is not None:  # the felt rotation beyond the band, priced again
                     beyond = ca.fmax(felt[:3] - width, 0.0) + ca.fmin(felt[:3] + width, 0.0)
                     residuals.append(ca.sqrt(BAND_WEIGHT * h_u / m * inv_T) * root_w[:3] * beyond)
                 z = A @ z + B @ values[j]
