@@ -750,7 +750,7 @@ def test_the_felt_rotation_beyond_its_band_is_priced_again(params):
 
 
 def test_online_weighs_the_felt_rotation_by_default_where_the_path_is_s(tmp_path, capsys):
-    """``online`` takes the canals model and a band of one threshold, but on dfs and dfs-yaw;
+    """``online`` takes the canals model and a band of one threshold, but on dfs-yaw (the modulus alone);
     --perception none and --rotation-band none switch them off; the felt figures are judged through
     the thesis' model whatever the plan weighed."""
     from desdemona import session
@@ -766,7 +766,7 @@ def test_online_weighs_the_felt_rotation_by_default_where_the_path_is_s(tmp_path
     path = profiles.load("cosine")
     for config, choices, expected in (("yaw-track", {"perception": None}, (None, None)),
                                       ("yaw-track", {"rotation_band": None}, ("canals", None)),
-                                      ("dfs", {}, (None, None)), ("dfs-yaw", {}, (None, None))):
+                                      ("dfs", {}, ("canals", 1.0)), ("dfs-yaw", {}, (None, None))):
         mpc = session.online(path, Model(config=config), **choices).options.mpc
         assert (getattr(mpc.perception, "name", None), mpc.rotation_band) == expected
     capsys.readouterr()

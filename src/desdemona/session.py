@@ -191,8 +191,8 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     (:class:`~desdemona.profiles.forecast.Forecast`, for "forecast"; None in a live session, whose host
     sends them), given the gain and cued as the path is; perception : a vestibular model through which the controller
     minimises the perceived difference, as :func:`offline` takes it, None for none, "auto":
-    :func:`~desdemona.perception.canals_model` except on the configurations that follow the modulus
-    (``dfs``, ``dfs-yaw``); rotation_band :
+    :func:`~desdemona.perception.canals_model` wherever the cost is on S (all but ``dfs-yaw``, whose
+    cost is the modulus alone); rotation_band :
     :attr:`MPCOptions.rotation_band` [thresholds], "auto": :data:`ROTATION_BAND` with a perception
     model ("Canals in the on-line cost", "Felt rotation band"); ``timing``: the other
     :class:`MPCOptions` fields (replan, delay, deadline, method, tail_step).
@@ -200,8 +200,8 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     from desdemona.mpc import MPCOptions, default_horizon
     from desdemona.online import OnlineOptions
 
-    if perception == "auto":  # not measured on the configurations that follow the modulus
-        perception = None if model.config.takes_modulus else canals_model()
+    if perception == "auto":  # "Canals in the on-line cost", and on dfs "The dfs's felt rotation"
+        perception = None if model.config.modulus_cost else canals_model()
     if model.config.modulus_cost and perception is not None:
         raise ChoiceError("--perception applies to the full path S, not to the dfs modulus")
     if rotation_band == "auto":

@@ -143,7 +143,7 @@ def build_parser() -> argparse.ArgumentParser:
     online.add_argument("--perception", choices=(*perception_models.MODELS, "none"), default=None,
                         help="minimise the perceived difference through this vestibular model, and report "
                              "the perceived error of the controller and of the classical loop (default: "
-                             "canals, the canals' adaptation alone; none on dfs and dfs-yaw)")
+                             "canals, the canals' adaptation alone; none on dfs-yaw, whose cost is the modulus)")
     online.add_argument("--rotation-band", default=None, metavar="THRESHOLDS", dest="rotation_band",
                         help="with a perception model: a felt rotation beyond this many perception "
                              "thresholds weighs ten times its weight, so the plan uses rotation the "
