@@ -66,6 +66,10 @@ class MPCOptions:
     (chapter 6): the controller then carries the filter states of what the person has felt and of
     what they should have felt from step to step; rotation_band : with it, the felt rotation beyond
     this many perception thresholds weighs more (:attr:`~desdemona.problem.ProblemOptions.rotation_band`);
+    null_weight : the weight of the gimbals' rates that turn the cabin not at all, near the inner
+    gimbal's lock (:attr:`~desdemona.problem.ProblemOptions.null_weight`; None: its on-line default
+    with the real-time iteration, where the spin was found, and 0 with IPOPT, whose thesis-timing rows
+    of ``benchmarks/online.py`` it moved by up to 12 %, "Gimbals' lock");
     spin_up : fraction of the yaw's acceleration limit with which a still yaw is seeded
     (:meth:`MPC._leave_rest`), 0 to switch it off.
 
@@ -116,6 +120,7 @@ class MPCOptions:
     jerk_weight: float | None = None
     reach: float | None = None
     rotation_band: float | None = None
+    null_weight: float | None = None
 
     def __post_init__(self):
         if self.method not in ("auto", "rti", "nlp"):
@@ -267,7 +272,8 @@ class MPC:
             margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6,
             stoppable=True, braking=options.braking, perception=options.perception, initial_filter="given",
             steps=None if np.all(steps == options.step) else tuple(steps),
-            jerk_weight=options.jerk_weight, rotation_band=options.rotation_band)
+            jerk_weight=options.jerk_weight, rotation_band=options.rotation_band,
+            null_weight=options.null_weight if options.null_weight is not None or options.plan_method == "rti" else 0.0)
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         self.limits = model.limits
         self._limit_use = model.step_limit_use(options.step)

@@ -59,6 +59,9 @@ from desdemona.profiles import DesiredPath
 #: How much more a felt rotation beyond :attr:`ProblemOptions.rotation_band` weighs: on top of its
 #: weight, this many times it ("Felt rotation band").
 BAND_WEIGHT = 9.0
+#: On-line on ``dfs``, the weight of the gimbals' motion that turns the cabin not at all near the inner
+#: gimbal's lock (:attr:`ProblemOptions.null_weight`, "Gimbals' lock").
+NULL_WEIGHT = 0.1
 #: The off-line cost's wall before each position limit (:attr:`ProblemOptions.wall`): its width, as a
 #: share of the joint's travel, and what it costs at the limit, as a felt error [m/s^2].
 WALL_WIDTH, WALL = 0.005, 1.0
@@ -130,6 +133,12 @@ class ProblemOptions:
         its canal channel (either way) costs :data:`BAND_WEIGHT` times its weight more, on the excess: a
         plan may use a rotation the occupant hardly feels (the arm's slow spin-up, a tilt below the
         threshold) and pays steeply for one they would ("Felt rotation band"). None: no band.
+    null_weight : where the three gimbals are free, the weight of their rates that turn the cabin not at
+        all: at the inner gimbal's lock (q5 = +-90 deg) the outer gimbal and the cabin turning against
+        each other (:func:`gimbal_null_rate`), a motion no channel of S sees. Without it a controller's
+        plans let that motion run up to the joints' rate limit (the outer gimbal at 180 deg/s and
+        6 kW on a recorded sortie on ``dfs``). None: :data:`NULL_WEIGHT` on-line (``parametric``) on the
+        configurations whose cabin follows the force (``dfs``), else 0 ("Gimbals' lock").
     """
 
     h_u: float = 0.05
@@ -156,6 +165,7 @@ class ProblemOptions:
     gauss_newton_first: bool | None = None
     wall: float = 0.0
     rotation_band: float | None = None
+    null_weight: float | None = None
 
     def __post_init__(self):
         if not (math.isfinite(self.h_u) and self.h_u > 0):
@@ -177,6 +187,8 @@ class ProblemOptions:
             raise ValueError("initial = 'given' needs initial_state = (q0, qd0)")
         if self.unweighted is not None and not (math.isfinite(self.unweighted) and self.unweighted >= 0):
             raise ValueError(f"unweighted = {self.unweighted!r}: must be a number >= 0")
+        if self.null_weight is not None and not (math.isfinite(self.null_weight) and self.null_weight >= 0):
+            raise ValueError(f"null_weight = {self.null_weight!r}: must be a number >= 0")
         if not (math.isfinite(self.wall) and self.wall >= 0):
             raise ValueError(f"wall = {self.wall!r}: must be a number >= 0")
         if self.rotation_band is not None and not (self.perception is not None and math.isfinite(self.rotation_band)
@@ -196,6 +208,19 @@ def default_jerk_weight(config, online: bool = False) -> float:
     if not config.aligned:
         return 1.0
     return 3.0 if online else 5.0
+
+
+def gimbal_null_rate(q, qd, free) -> ca.SX | None:
+    """The part of the outer gimbal's and the cabin's rates that turns the cabin not at all, weighed by
+    how near the inner gimbal is to its lock: c^2 (qd4 - c qd6) / 2, where c = -sin q5 is the cosine
+    between the outer gimbal's axis and the cabin's (consecutive axes of the chain are perpendicular,
+    appendix A). At the lock (c = +-1) the two axes line up and qd4 = -c qd6 turns the cabin by
+    nothing; away from it (c = 0) the term vanishes. None unless all three gimbals are free."""
+    if not all(j in free for j in (3, 4, 5)):
+        return None
+    outer, inner, cabin = (free.index(j) for j in (3, 4, 5))
+    c = -ca.sin(q[inner])
+    return c ** 2 * (qd[outer] - c * qd[cabin]) / 2
 
 
 @dataclass(frozen=True, eq=False)
@@ -250,6 +275,8 @@ class Formulation:
         self.limit_curvature = options.limit_curvature if options.limit_curvature is not None else not large
         self.jerk_weight = options.jerk_weight if options.jerk_weight is not None else default_jerk_weight(
             model.config, online=parametric)
+        self.null_weight = options.null_weight if options.null_weight is not None else (
+            NULL_WEIGHT if parametric and model.config.aligned else 0.0)
         self.vestibular = options.perception
         # the filters over the first interval's sub-steps (a controller's cycle); on a grid that varies
         # the stages discretise them for their own step (VestibularModel.casadi_discrete)
@@ -360,6 +387,9 @@ class Formulation:
             powers.append(power)
             positions.append(qj)
         residuals, z_next = self._residuals(values, a, jerk, x[self.n_motion:], data, positions)
+        null = gimbal_null_rate(q, qd, self.model.config.free)
+        if null is not None and self.null_weight > 0:
+            residuals.append(ca.sqrt(self.null_weight * h_u * data[2]) * null)
         r = ca.vertcat(*residuals)
         residual = ca.Function("stage_residual", [x, u, data], [r], ["x", "u", "d"], ["r"])
         families = self._families(positions, efforts, powers, q_next, qd_next)
