@@ -811,8 +811,8 @@ def test_the_gimbals_null_motion_is_what_s_does_not_see():
 def test_on_dfs_the_gimbals_do_not_spin_against_each_other_at_their_lock():
     """The built-in dfs catapult through the command's session on dfs: without the null-motion term
     the plans let the outer gimbal and the cabin run against each other near the inner gimbal's lock
-    (about 170 deg/s, measured); with it (the on-line default) neither passes 60 deg/s, and the felt
-    force is within 2 %."""
+    (about 170 deg/s, measured); with it (the on-line default) neither passes 60 deg/s, and the RMS
+    error is within 2 %."""
     from desdemona import session
 
     model = Model(config="dfs")

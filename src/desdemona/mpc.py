@@ -266,14 +266,14 @@ class MPC:
         placeholder = DesiredPath("preview", t, None if model.config.modulus_cost else np.zeros((len(t), 6)),
                                   weights=weights or (ALIGNED_WEIGHTS if model.config.aligned else (1.0,) * 6),
                                   modulus=np.zeros(len(t)) if model.config.modulus_cost else None)
+        null_weight = options.null_weight if options.null_weight is not None or options.plan_method == "rti" else 0.0
         problem_options = ProblemOptions(
             h_u=options.step, substeps=options.substeps, initial="given",
             initial_state=(np.zeros(model.n), np.zeros(model.n)), regularisation=options.regularisation,
             margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6,
             stoppable=True, braking=options.braking, perception=options.perception, initial_filter="given",
             steps=None if np.all(steps == options.step) else tuple(steps),
-            jerk_weight=options.jerk_weight, rotation_band=options.rotation_band,
-            null_weight=options.null_weight if options.null_weight is not None or options.plan_method == "rti" else 0.0)
+            jerk_weight=options.jerk_weight, rotation_band=options.rotation_band, null_weight=null_weight)
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         self.limits = model.limits
         self._limit_use = model.step_limit_use(options.step)

@@ -200,7 +200,7 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     from desdemona.mpc import MPCOptions, default_horizon
     from desdemona.online import OnlineOptions
 
-    if perception == "auto":  # "Canals in the on-line cost", and on dfs "The dfs's felt rotation"
+    if perception == "auto":  # "Canals in the on-line cost"; on dfs "On-line with `hold` on `dfs`, ..."
         perception = None if model.config.modulus_cost else canals_model()
     if model.config.modulus_cost and perception is not None:
         raise ChoiceError("--perception applies to the full path S, not to the dfs modulus")

@@ -482,11 +482,9 @@ class CueingProblem(Formulation):
             qd = np.clip(qd, -lim.velocity, lim.velocity)
             q = np.clip(q, lim.position_min, lim.position_max)
         x = np.hstack([q, qd, a])
-        if self.nz:
-            S0 = self.model.S(q0, qd0, starts[0])
-            x = np.hstack([x, np.tile(self.filter.steady_state(S0), (self.N + 1, 1))])
-            if filters is not None:
-                x[:, self.n_motion:] = filters
+        if self.nz:  # a controller's carried state, else the steady state of the first S
+            z = filters if filters is not None else self.filter.steady_state(self.model.S(q0, qd0, starts[0]))
+            x = np.hstack([x, np.broadcast_to(z, (self.N + 1, self.nz))])
         return x, u
 
     def solve(self, x_guess: np.ndarray, u_guess: np.ndarray, warm: Solution | None = None) -> Solution:
