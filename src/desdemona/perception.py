@@ -158,8 +158,15 @@ class DiscreteSystem:
         x = self.steady_state(u[0]) if x0 is None else np.asarray(x0, dtype=float)
         states = np.empty((len(u) + 1, len(self.Ad)))
         states[0] = x
-        for k in range(len(u)):
-            states[k + 1] = self.Ad @ states[k] + self.Bd @ u[k]
+        a = np.diag(self.Ad)
+        if np.array_equal(self.Ad, np.diag(a)):
+            # uncoupled states (first-order channels): one recursion per state, not one step per sample
+            drive = u @ self.Bd.T
+            for i, decay in enumerate(a):
+                states[1:, i] = scipy.signal.lfilter([1.0], [1.0, -decay], drive[:, i], zi=[decay * x[i]])[0]
+        else:
+            for k in range(len(u)):
+                states[k + 1] = self.Ad @ states[k] + self.Bd @ u[k]
         y = states[:-1] @ self.C.T + u @ self.D.T
         return y, states
 
