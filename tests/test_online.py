@@ -356,6 +356,15 @@ def test_the_canals_follow_a_plan_whose_intervals_vary(params):
             t = j * h / m
             z = Ad @ z + Bd @ model.S(*advance(q, qd, a, t, u), a + u * t)
         np.testing.assert_allclose(z_next, z, rtol=1e-10, atol=1e-12)
+    # the desired path perceived over the same grid (one linear map a cycle), sub-step by sub-step
+    S, z = rng.normal(size=(prob.N * prob.m, 6)), rng.normal(size=prob.nz)
+    y, states = prob.perceive(S, z)
+    zoh = {h: scipy.signal.cont2discrete(canals.state_space(), h / prob.m, method="zoh") for h in set(prob.steps)}
+    for k, h in enumerate(np.repeat(prob.steps, prob.m)):
+        Ad, Bd, C, D, _ = zoh[h]
+        np.testing.assert_allclose(y[k], C @ z + D @ S[k], rtol=1e-10, atol=1e-12)
+        z = Ad @ z + Bd @ S[k]
+        np.testing.assert_allclose(states[k + 1], z, rtol=1e-10, atol=1e-12)
     path = profiles.catapult(level=10.0, push=1.0, quiet=0.5, duration=3.0)
     q0, _ = mpc.place((np.zeros(model.n), np.zeros(model.n)), path)
     assert mpc.plan is not None and np.any(q0 != 0.0)

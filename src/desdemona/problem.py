@@ -283,6 +283,7 @@ class Formulation:
         self.filter = self.vestibular.discretize(float(self.steps[0]) / self.m) if self.vestibular else None
         self.uniform = bool(np.ptp(self.steps) <= 1e-12)
         self.nz = self.vestibular.n_states if self.vestibular else 0
+        self._perceive_map = None  # built on the first call of perceive
         n = model.n
         self.n_motion = (3 if self.smooth else 2) * n  # (q, qd[, qdd]) lead the state, filters follow
         self.nx, self.nu = self.n_motion + self.nz, n
@@ -314,6 +315,11 @@ class Formulation:
         steady state of S[0]). A grid that varies is taken a run of equal intervals at a time."""
         S = np.asarray(S, dtype=float)
         z = self.filter.steady_state(S[0]) if z0 is None else np.asarray(z0, dtype=float)
+        if self.parametric:  # a controller's horizon, perceived anew every cycle: one product
+            if self._perceive_map is None:
+                self._perceive_map = self._perception_map()
+            states = (self._perceive_map @ np.concatenate([z, S.ravel()])).reshape(-1, self.nz)
+            return states[:-1] @ self.filter.C.T + S @ self.filter.D.T, states
         outputs, states, start = [], [z[None, :]], 0
         for step, run in itertools.groupby(self.steps.tolist()):
             stop = start + self.m * len(list(run))
@@ -322,6 +328,21 @@ class Formulation:
             states.append(x[1:])
             start = stop
         return np.vstack(outputs), np.vstack(states)
+
+    def _perception_map(self) -> np.ndarray:
+        """((N m + 1) nz, nz + 6 N m) the filter states of :meth:`perceive` as one linear map of
+        (z0, S flattened by rows): a controller perceives each cycle's horizon in one product."""
+        nz, rows = self.nz, self.N * self.m
+        M = np.zeros(((rows + 1) * nz, nz + 6 * rows))
+        M[:nz, :nz] = np.eye(nz)
+        k = 0
+        for step in self.steps:
+            system = self.vestibular.discretize(float(step) / self.m)
+            for _ in range(self.m):
+                M[(k + 1) * nz:(k + 2) * nz] = system.Ad @ M[k * nz:(k + 1) * nz]
+                M[(k + 1) * nz:(k + 2) * nz, nz + 6 * k:nz + 6 * (k + 1)] += system.Bd
+                k += 1
+        return M
 
     @property
     def n_head(self) -> int:
