@@ -37,7 +37,9 @@ what the occupant feels, read from the result's ``summary.json`` ("quality"):
   closes: (hold - forecast) / (hold - perfect) of the felt force RMS ("-" where the gap is under
   :data:`GAP` of hold's, or a row is missing).
 
-The machine's load average is recorded before and after the run.
+The machine's load average is recorded before and after the run, and so is its own spread of time
+(:func:`jitter`): a fixed piece of work timed again and again, whose p99 over its median is what the
+machine adds to any p99 per cycle, whatever the code.
 """
 
 from __future__ import annotations
@@ -169,6 +171,24 @@ def read_result(job: dict, channel: str) -> dict:
     return row
 
 
+def jitter(count: int = 2000) -> tuple[float, float]:
+    """The machine's own spread of time: the same piece of work (ten 60 x 60 linear solves and 40,000
+    additions in Python, about a millisecond) timed ``count`` times; its median [ms] and p99 / median.
+    On a machine that shares its processor (steal time) the ratio is 2 or more, and a controller's
+    p99 per cycle is then at least its median times that, whatever the code."""
+    rng = np.random.default_rng(0)
+    A, b = rng.normal(size=(60, 60)) + 60.0 * np.eye(60), rng.normal(size=60)
+    times = np.empty(count)
+    for k in range(count):
+        start = time.perf_counter()
+        for _ in range(10):
+            np.linalg.solve(A, b)
+        sum(range(40000))
+        times[k] = time.perf_counter() - start
+    median = float(np.median(times))
+    return 1e3 * median, float(np.percentile(times, 99)) / median
+
+
 def cell(value, fmt: str) -> str:
     return "-" if value is None else format(value, fmt)
 
@@ -252,6 +272,7 @@ def main(argv=None) -> int:
     args.out.mkdir(parents=True, exist_ok=True)
     record = args.out / "jobs.jsonl"
     load_before = os.getloadavg()
+    spread_before = None if args.table_only else jitter()
     started = time.perf_counter()
     if args.table_only:
         latest = {(j["case"], j["config"], j["mode"]): j for j in map(json.loads, record.read_text().splitlines())}
@@ -290,9 +311,12 @@ def main(argv=None) -> int:
     if args.table_only:
         text = f"Measured {', '.join(dates) or 'earlier'} with `python benchmarks/real.py` ({len(rows)} jobs{during}).\n\n" + text
     else:
+        elapsed, spread_after = time.perf_counter() - started, jitter()
+        spread = "; a fixed millisecond of work: median {:.2f} ms and p99 {:.1f}x it before, {:.2f} ms and {:.1f}x after"
         text = (f"Measured {time.strftime('%Y-%m-%d')} with `python benchmarks/real.py` "
-                f"({len(rows)} jobs, {args.processes} at a time, {time.perf_counter() - started:.0f} s in all; "
-                f"load average {load_before[0]:.2f} before, {load_after[0]:.2f} after{during}).\n\n" + text)
+                f"({len(rows)} jobs, {args.processes} at a time, {elapsed:.0f} s in all; "
+                f"load average {load_before[0]:.2f} before, {load_after[0]:.2f} after{during}"
+                f"{spread.format(*spread_before, *spread_after)}).\n\n" + text)
     print(text)
     if not args.no_docs:
         write_docs(text)
