@@ -328,12 +328,13 @@ def test_the_felt_filters_follow_every_sub_step_of_a_cycle(params):
     np.testing.assert_allclose(mpc.z, states[m], rtol=1e-10, atol=1e-12)
 
 
-def test_the_canals_follow_a_plan_whose_intervals_vary(params):
+def test_the_canals_follow_a_plan_whose_intervals_vary(params, monkeypatch):
     """The canals model (first-order channels) keeps the plan's coarse tail: each stage carries the
     felt rotation over its own interval, as scipy's zero-order hold of that interval's sub-steps does,
     and the controller places its start (at rest the canals feel nothing wherever the machine stands)."""
     import scipy.signal
 
+    from desdemona import problem as problem_module
     from desdemona.perception import canals_model
 
     model = Model(params, "yaw-track-cabin")
@@ -365,6 +366,9 @@ def test_the_canals_follow_a_plan_whose_intervals_vary(params):
         np.testing.assert_allclose(y[k], C @ z + D @ S[k], rtol=1e-10, atol=1e-12)
         z = Ad @ z + Bd @ S[k]
         np.testing.assert_allclose(states[k + 1], z, rtol=1e-10, atol=1e-12)
+    with monkeypatch.context() as patch:  # a horizon too long for the map: step by step, the same
+        patch.setattr(problem_module, "PERCEPTION_MAP_SIZE", 0)
+        np.testing.assert_allclose(prob.perceive(S, states[0])[1], states, rtol=1e-12, atol=1e-14)
     path = profiles.catapult(level=10.0, push=1.0, quiet=0.5, duration=3.0)
     q0, _ = mpc.place((np.zeros(model.n), np.zeros(model.n)), path)
     assert mpc.plan is not None and np.any(q0 != 0.0)

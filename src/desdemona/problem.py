@@ -62,6 +62,9 @@ BAND_WEIGHT = 9.0
 #: On-line on ``dfs``, the weight of the gimbals' motion that turns the cabin not at all near the inner
 #: gimbal's lock (:attr:`ProblemOptions.null_weight`, "Gimbals' lock").
 NULL_WEIGHT = 0.1
+#: The most entries of the linear map through which a controller perceives its horizon
+#: (:meth:`Formulation.perceive`): 16 MB; a longer horizon is perceived step by step.
+PERCEPTION_MAP_SIZE = 2_000_000
 #: The off-line cost's wall before each position limit (:attr:`ProblemOptions.wall`): its width, as a
 #: share of the joint's travel, and what it costs at the limit, as a felt error [m/s^2].
 WALL_WIDTH, WALL = 0.005, 1.0
@@ -312,10 +315,13 @@ class Formulation:
     def perceive(self, S, z0=None) -> tuple[np.ndarray, np.ndarray]:
         """Through the perception model, S (N m, 6) held over each sub-step of the grid in turn:
         the perceived path (N m, 6) and the filter states (N m + 1, nz), from ``z0`` (default the
-        steady state of S[0]). A grid that varies is taken a run of equal intervals at a time."""
+        steady state of S[0]). A controller's horizon, perceived anew every cycle, goes through one
+        linear map built on the first call (:meth:`_perception_map`, up to :data:`PERCEPTION_MAP_SIZE`
+        entries); otherwise a grid that varies is taken a run of equal intervals at a time."""
         S = np.asarray(S, dtype=float)
         z = self.filter.steady_state(S[0]) if z0 is None else np.asarray(z0, dtype=float)
-        if self.parametric:  # a controller's horizon, perceived anew every cycle: one product
+        rows = self.N * self.m
+        if self.parametric and (rows + 1) * self.nz * (self.nz + 6 * rows) <= PERCEPTION_MAP_SIZE:
             if self._perceive_map is None:
                 self._perceive_map = self._perception_map()
             states = (self._perceive_map @ np.concatenate([z, S.ravel()])).reshape(-1, self.nz)
