@@ -180,8 +180,9 @@ def test_from_rest_the_mpc_leaves_the_stationary_point(params, config):
     assert np.all(result.plan.qd0 == 0.0)
     if config == "dfs":  # the cabin follows the force: at rest at home, as off-line
         assert np.all(result.plan.q0 == 0.0)
-    else:  # placed (within the limits: the check has passed), the arm's angle aside
-        assert result.plan.q0[0] == 0.0 and np.any(result.plan.q0[1:] != 0.0)
+    else:  # placed (within the limits: the check has passed), the arm's angle aside, where that saves a
+        # felt error: on yaw-track the placed plan costs what the plan from home does to 8 digits (71.008837)
+        assert result.plan.q0[0] == 0.0 and np.any(result.plan.q0[1:] != 0.0) == (config != "yaw-track")
     if config == "yaw-track-cabin":
         home = run(path, model, OnlineOptions(options, initial="home"))
         assert np.all(home.plan.q0 == 0.0) and home.check.passed

@@ -249,6 +249,13 @@ def at_least_g(values) -> np.ndarray:
     return values
 
 
+#: The least a placed start must save of the first plan's cost (a mean square felt error, (m/s^2)^2)
+#: to be taken: 1e-4 is an RMS of 0.01 m/s^2, a seventeenth of the smallest force threshold. Less is
+#: a place the plan does not feel, such as the track's position under a held 1 g, where the start
+#: would land wherever the solver's last digits put it ("Placed start").
+PLACE_SAVING = 1e-4
+
+
 class MPC:
     """The model predictive cueing controller, built once for a model and options, then stepped."""
 
@@ -341,7 +348,7 @@ class MPC:
         configuration whose cabin follows the force (it starts level at home, as off-line), with a
         perception model whose felt state at rest depends on where the machine stands (otoliths with
         states: the choice would change what was felt before the run), or where a solve fails or the
-        placed plan costs no less.
+        placed plan saves less than :data:`PLACE_SAVING`.
         """
         q, qd = (np.asarray(v, dtype=float).reshape(self.model.n) for v in state[:2])
         a = np.zeros_like(q)
@@ -361,7 +368,7 @@ class MPC:
         # younger than a plan of the last cycle
         self.plan, self.plan_age = self._per_step(*first.plan), -self.options.replan_steps
         placed = self._solve(q, qd, a, data, method="nlp", place=True)
-        if placed.success and placed.cost < first.cost:
+        if placed.success and first.cost - placed.cost > PLACE_SAVING:
             self.plan = self._per_step(*placed.plan)
             return self._within_a_turn(placed.start), np.zeros_like(qd)
         self.plan, self.plan_age = None, 0
