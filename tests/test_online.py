@@ -717,6 +717,32 @@ def test_the_real_time_iteration_takes_the_share_of_its_step():
     np.testing.assert_allclose(half - w, 0.5 * (whole - w), atol=1e-12)
 
 
+def test_the_real_time_iteration_through_buffers_is_casadis_plain_call():
+    """The QP's data and HPIPM evaluated in place (FunctionBuffer) give CasADi's plain call's step bit
+    for bit, cycle after cycle: a buffer kept across calls made HPIPM's plugin solve another QP from
+    the second call on."""
+    model = Model(config="dfs")
+    mpc = MPC(model, MPCOptions(horizon=1.0, deadline=float("inf")))
+    rti, prob = mpc._rti, mpc.problem
+    t = np.linspace(0.0, 1.0, 51)
+    qd = np.array([1.0, 0.0, 0.0, 0.0])
+    for k in range(3):
+        x, u = prob.guess(np.zeros(model.n), qd, np.zeros((prob.N, model.n)), np.zeros(model.n))
+        w = prob.pack(x, u)
+        bounds = prob.start_bounds(np.zeros(model.n), qd, np.zeros(model.n))
+        values = np.zeros((t.size, 6))
+        values[:, 5] = 12.0 + 2.0 * k + np.sin(t)  # the modulus along the occupant's vertical
+        p = np.asarray(mpc._data(t, values)).ravel(order="F")
+        H, gradient, A, g = rti.data(w, p)
+        g = np.asarray(g).ravel()
+        plain = rti.qp(h=H, g=gradient, a=A, lba=bounds.lbg - g, uba=bounds.ubg - g, lbx=bounds.lbx - w,
+                       ubx=bounds.ubx - w)
+        step, ok = rti(w, p, bounds)
+        assert ok and rti.qp.stats()["success"]
+        assert np.array_equal(step, w + np.asarray(plain["x"]).ravel())
+        qd = qd * 1.5
+
+
 def test_the_classical_loop_starts_on_the_gimbal_branch_it_steers_from():
     """A placed start with the outer gimbal turned past 90 deg (the cabin's attitude on the gimbals'
     other branch): the classical loop starts from the same pose on the branch near home, still; from a

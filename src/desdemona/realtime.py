@@ -70,6 +70,38 @@ class RealTimeIteration:
             options["osqp"] = {"verbose": False, "eps_abs": 1e-7, "eps_rel": 1e-7, "max_iter": 4000}
         qp = ca.conic("rti", qp_solver, {"h": qp_data.sparsity_out(0), "a": qp_data.sparsity_out(2)}, options)
         self.data, self.qp = qp_data, qp
+        self._buffers()
+
+    def _buffers(self) -> None:
+        """Arrays the two Functions read and write in place, through CasADi's FunctionBuffer, so that
+        no argument or result is converted: H and A pass from the data to the QP without leaving
+        them. Measured on 2026-12-03, one cycle's QP repeated 500 times: on ``dfs`` at 100 Hz (56
+        intervals) 2.7 -> 1.4 ms median a step, on ``full`` at 50 Hz (46 intervals) 6.5-6.9 -> 5.0-5.1
+        ms, the same bits ("Real-time iteration without conversions")."""
+        data, qp = self.data, self.qp
+        self._w, self._p = np.zeros(data.nnz_in(0)), np.zeros(data.nnz_in(1))
+        self._out = [np.zeros(data.nnz_out(i)) for i in range(data.n_out())]
+        self._qp_in = {name: np.zeros(qp.nnz_in(name)) for name in qp.name_in()}
+        self._qp_in["h"], self._qp_in["a"] = self._out[0], self._out[2]
+        self._qp_out = {name: np.zeros(qp.nnz_out(name)) for name in qp.name_out()}
+        # the gradient's structural zeros (the end state's) are not among the data's nonzeros
+        self._gradient_rows = np.asarray(data.sparsity_out(1).row(), dtype=int)
+        self._data_buffer, self._eval_data = data.buffer()
+        for i, array in enumerate([self._w, self._p]):
+            self._data_buffer.set_arg(i, memoryview(array))
+        for i, array in enumerate(self._out):
+            self._data_buffer.set_res(i, memoryview(array))
+
+    def _qp_buffer(self):
+        """A new buffer of the QP's arrays for each solve (0.05-0.09 ms): HPIPM's plugin depends on
+        work memory that CasADi's plain call hands it fresh, and from a kept buffer it solved another
+        QP from the second call on. Every result is bound: the plugin writes them all."""
+        buffer, evaluate = self.qp.buffer()
+        for name, array in self._qp_in.items():
+            buffer.set_arg(self.qp.index_in(name), memoryview(array))
+        for name, array in self._qp_out.items():
+            buffer.set_res(self.qp.index_out(name), memoryview(array))
+        return buffer, evaluate
 
     def __call__(self, w, p, bounds: Bounds, share: float = 1.0) -> tuple[np.ndarray, bool]:
         """One QP step from the linearisation point ``w`` for the parameter ``p``: the new point, and
@@ -77,8 +109,14 @@ class RealTimeIteration:
 
         share : the share of the QP's step taken, in (0, 1]. The QP's constraints are linear, so a
         point between ``w`` and the QP's solution keeps each one that both ends keep."""
-        H, gradient, A, g = self.data(w, p)
-        g = np.asarray(g).ravel()
-        sol = self.qp(h=H, g=gradient, a=A, lba=bounds.lbg - g, uba=bounds.ubg - g, lbx=bounds.lbx - w,
-                      ubx=bounds.ubx - w)
-        return w + share * np.asarray(sol["x"]).ravel(), bool(self.qp.stats()["success"])
+        self._w[:], self._p[:] = w, p
+        self._eval_data()
+        g, into = self._out[3], self._qp_in
+        into["g"][self._gradient_rows] = self._out[1]
+        np.subtract(bounds.lbg, g, out=into["lba"])
+        np.subtract(bounds.ubg, g, out=into["uba"])
+        np.subtract(bounds.lbx, self._w, out=into["lbx"])
+        np.subtract(bounds.ubx, self._w, out=into["ubx"])
+        buffer, solve = self._qp_buffer()
+        solve()
+        return self._w + share * self._qp_out["x"], bool(buffer.stats()["success"])
