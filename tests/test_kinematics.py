@@ -106,6 +106,29 @@ def test_batch_evaluation_equals_one_by_one(params):
         model.S(q[:, :5], qd, qdd)
 
 
+def test_numeric_calls_in_place_equal_casadis_own_call(params):
+    """One sample and a few (evaluated in place through a kept FunctionBuffer), many (one CasADi call)
+    and CasADi's own call give the same bits, from two threads at once as from one."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    from desdemona._casadi import FEW, call
+
+    model = Model(params, "full")
+    q, qd, qdd = random_states(model, FEW + 5, seed=5)
+    S, M = model.functions["S"], model.functions["M"]
+    own = np.asarray(S(q.T, qd.T, qdd.T)).T
+    np.testing.assert_array_equal(call(S, q, qd, qdd), own)  # many: one call
+    np.testing.assert_array_equal(call(S, q[:3], qd[:3], qdd[:3]), own[:3])  # a few: in place
+    np.testing.assert_array_equal(call(M, q[2], matrix=True), np.asarray(M(q[2])))
+
+    def one_by_one(rows):
+        return [call(S, q[k], qd[k], qdd[k]) for k in rows for _ in range(50)][::50]
+
+    with ThreadPoolExecutor(2) as pool:
+        done = [pool.submit(one_by_one, rows) for rows in (range(0, 8), range(8, len(q)))]
+    np.testing.assert_array_equal(np.vstack(done[0].result() + done[1].result()), own)
+
+
 def test_gimbal_twin_is_the_same_cabin_attitude_on_the_other_branch():
     """Rx(a) Rz(b) Ry(c) = Rx(a + pi) Rz(pi - b) Ry(c + pi): the same pose, and at rest the same S."""
     from desdemona.kinematics import S, cabin_pose, gimbal_twin

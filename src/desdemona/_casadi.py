@@ -8,8 +8,13 @@ does the numeric side: NumPy in, NumPy out, and a whole trajectory at once when 
 
 from __future__ import annotations
 
+import threading
+
 import casadi as ca
 import numpy as np
+
+FEW = 8  # samples evaluated one by one through a kept buffer (:func:`_buffered`), not as one call
+_local = threading.local()  # each thread its own buffers: a FunctionBuffer holds its work memory
 
 
 def is_symbolic(*args) -> bool:
@@ -32,6 +37,12 @@ def call(fun: ca.Function, *args, matrix: bool = False):
         if a.ndim > 2 or (a.ndim == 2) != batch or a.shape[-1:] not in ((n,), ()) or (a.ndim == 0 and n != 1):
             raise ValueError(f"{fun.name()}: argument {fun.name_in(k)} has shape {a.shape}, "
                              f"expected ({n},) or (N, {n})")
+    if not batch or len(arrays[0]) <= FEW:
+        samples = [arrays] if not batch else [[a[i] for a in arrays] for i in range(len(arrays[0]))]
+        outs = [_buffered(fun, sample) for sample in samples]
+        if outs and outs[0] is not None:
+            outs = [out.reshape(fun.size2_out(0), -1).T if matrix else out for out in outs]
+            return np.stack(outs) if batch else outs[0]
     columns = [a.T if a.ndim == 2 else a.reshape(-1, 1) for a in arrays]
     out = np.asarray(fun(*columns))  # (m, k * N): CasADi maps over horizontally stacked samples
     m, k = fun.size1_out(0), fun.size2_out(0)
@@ -41,3 +52,33 @@ def call(fun: ca.Function, *args, matrix: bool = False):
     if not matrix:
         return out.T
     return out.reshape(m, samples, k).transpose(1, 0, 2)
+
+
+def _buffered(fun: ca.Function, arrays) -> np.ndarray | None:
+    """One sample of an SX Function with dense arguments and result, evaluated in place through a
+    FunctionBuffer kept for it (None where it does not apply). CasADi's plain call converts every
+    argument and result to a DM: 0.1-0.2 ms a call on the controller's cycle, which calls the model a
+    few times, against about 0.01 ms here ("Real-time iteration without conversions")."""
+    kept = getattr(_local, "buffers", None)
+    if kept is None:
+        kept = _local.buffers = {}
+    entry = kept.get(id(fun))
+    if entry is None or entry[0] is not fun:
+        dense = all(fun.sparsity_in(k).is_dense() for k in range(fun.n_in())) and fun.sparsity_out(0).is_dense()
+        if not (fun.is_a("SXFunction") and dense):
+            kept[id(fun)] = entry = (fun, None)
+        else:
+            inputs = [np.zeros(fun.nnz_in(k)) for k in range(fun.n_in())]
+            result = np.zeros(fun.nnz_out(0))
+            buffer, evaluate = fun.buffer()
+            for k, array in enumerate(inputs):
+                buffer.set_arg(k, memoryview(array))
+            buffer.set_res(0, memoryview(result))
+            kept[id(fun)] = entry = (fun, (buffer, evaluate, inputs, result))
+    if entry[1] is None:
+        return None
+    _, evaluate, inputs, result = entry[1]
+    for into, a in zip(inputs, arrays):
+        into[:] = a.ravel()
+    evaluate()
+    return result.copy()

@@ -23,6 +23,7 @@ import math
 
 import numpy as np
 
+from desdemona._casadi import call
 from desdemona.kinematics import gimbal_alignment, wrapped
 from desdemona.model import Model
 from desdemona.plan import Plan, State, advance, start_acceleration, start_state
@@ -226,7 +227,7 @@ class _Guard:
         for i in range(pieces):
             s = i * piece
             qs, qds = advance(q, qd, u, s, jerk)
-            if float(np.max(np.asarray(use(qs, qds, u + jerk * s, jerk)))) > 1.0 + 1e-9:
+            if float(np.max(call(use, qs, qds, u + jerk * s, jerk))) > 1.0 + 1e-9:
                 return False
         return True
 

@@ -30,6 +30,7 @@ from typing import Literal, NamedTuple
 
 import numpy as np
 
+from desdemona._casadi import call
 from desdemona.model import Model
 from desdemona.perception import VestibularModel
 from desdemona.plan import Plan, State, advance
@@ -542,7 +543,7 @@ class MPC:
 
     def _safe(self, q, qd, qdd, jerk) -> bool:
         """Every limit over the coming step with this command, to the independent check's tolerance."""
-        return float(np.max(np.asarray(self._limit_use(q, qd, qdd, jerk)))) <= 1.0 + TOLERANCE
+        return float(np.max(call(self._limit_use, q, qd, qdd, jerk))) <= 1.0 + TOLERANCE
 
     def _safe_sequence(self, state: State, sequence, jerks) -> bool:
         """:meth:`_safe` for every step of a sequence of accelerations and jerks, from ``state`` on;

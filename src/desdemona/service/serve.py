@@ -41,6 +41,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from desdemona import guard
+from desdemona._casadi import call
 from desdemona.model import Model
 from desdemona.mpc import MPC
 from desdemona.online import OnlineOptions, OnlineResult, judge
@@ -356,7 +357,7 @@ class _Session:
 
     def _use(self) -> float:
         """The largest use of any limit over the cycle with the command (1 = at a limit)."""
-        return float(np.max(np.asarray(self.guard_use(*self.state[:2], *self.command))))
+        return float(np.max(call(self.guard_use, *self.state[:2], *self.command)))
 
     def _guard(self) -> None:
         """The service's own check of the cycle's command over the cycle (every limit, position to
