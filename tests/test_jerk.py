@@ -109,6 +109,12 @@ def test_mpc_grid_is_fine_near_now_and_coarse_beyond():
     assert len(MPCOptions(horizon=4.0, step=0.02).grid()) == 56  # "auto" before a controller resolves it
     with pytest.raises(ValueError, match="far"):
         MPCOptions(far=-1.0)
+    # at 100 Hz: the steps of the cycle and one more, then 0.02 s to 0.4 s (37 intervals in 2 s, not 56)
+    grid = MPCOptions(horizon=2.0, step=0.01).grid()
+    assert len(grid) == 37 and grid.sum() == pytest.approx(2.0)
+    assert np.all(grid[:2] == 0.01) and np.allclose(grid[2:21], 0.02) and np.allclose(grid[21:], 0.1)
+    assert len(MPCOptions(horizon=2.0, step=0.01, fine_step=None).grid()) == 56
+    assert np.allclose(MPCOptions(horizon=2.0, step=0.01, replan=0.04).grid()[:7], [0.01] * 5 + [0.02] * 2)
 
 
 def test_the_tail_doubles_where_the_cabin_tilts(params):

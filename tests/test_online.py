@@ -594,7 +594,7 @@ def test_a_modulus_below_g_is_planned_for_as_g_and_the_cabin_stays_upright():
     it is with the future known, turned the cabin over (felt force 178 deg from the occupant's
     vertical, 359 deg/s of false rotation); planned for as g, the nearest the machine can do, it stays
     within 30 deg and follows better than the classical loop."""
-    from desdemona.mpc import at_least_g
+    from desdemona.profiles import at_least_g
 
     np.testing.assert_array_equal(at_least_g(np.array([3.0, 12.0])), [profiles.G, 12.0])
     S = at_least_g(np.array([[0, 0, 0, 0.0, 3.0, 4.0], [0, 0, 0, 0, 0, 0], [0, 0, 0, 0, 0, 20.0]]))

@@ -35,7 +35,7 @@ from desdemona.model import Model
 from desdemona.perception import VestibularModel
 from desdemona.plan import Plan, State, advance
 from desdemona.problem import ProblemOptions
-from desdemona.profiles import ALIGNED_WEIGHTS, G, DesiredPath, vertical_force
+from desdemona.profiles import ALIGNED_WEIGHTS, DesiredPath, at_least_g, vertical_force
 from desdemona.simulate import TOLERANCE
 from desdemona.realtime import RealTimeIteration
 from desdemona.transcription import CueingProblem
@@ -90,6 +90,9 @@ class MPCOptions:
     matters only through where it leaves the machine, and it is re-planned long before then ("Coarse
     tail of the plan"). On ``yaw-track-cabin``, whose cycle is short anyway, the damped iteration swung
     the yaw of a steady turn with the doubled tail (1.17 reversals a second against 0.04).
+    fine_step : the plan's step [s] over the first ``fine`` seconds after the first re-plan period and
+    one step more, rounded to whole steps (None: ``step``): at 100 Hz (``step`` 0.01) a 2 s plan has 37
+    intervals instead of 56, the felt force within 1 % on the corpus ("Fine part of the plan").
 
     reach : how far each plan looks [s], at least ``horizon`` (None: the horizon). Beyond the horizon,
     where nothing is known, the desired path is taken as held at its last previewed value: an end cost
@@ -117,6 +120,7 @@ class MPCOptions:
     rti_step: float | None = None
     tail_step: float | None = 0.1
     fine: float = 0.4
+    fine_step: float | None = 0.02
     far: float | Literal["auto"] | None = "auto"
     jerk_weight: float | None = None
     reach: float | None = None
@@ -169,7 +173,7 @@ class MPCOptions:
 
     def grid(self) -> np.ndarray:
         """The plan's interval lengths [s] over its :attr:`length`, each a whole number of steps:
-        ``step`` for the first ``fine`` seconds (at least the re-plan period and one step more), then
+        ``step`` over the re-plan period and one step more, then ``fine_step`` to ``fine`` seconds, then
         ``tail_step`` rounded to whole steps, from ``far`` seconds on twice that (the last interval
         shorter where the plan ends; "auto" as None here: the controller resolves it for its
         configuration, :class:`MPC`); uniform with a perception model whose channels are of higher
@@ -181,11 +185,14 @@ class MPCOptions:
         block = 1 if self.tail_step is None else int(round(self.tail_step / self.step))
         if block <= 1 or (self.perception is not None and not self.perception.diagonal):
             return np.full(total, self.step)
-        start = min(total, max(int(round(self.fine / self.step)), self.replan_steps + 1))
+        first = min(total, self.replan_steps + 1)
+        fine = min(total, max(int(round(self.fine / self.step)), first))
         far = total if self.far in (None, "auto") else int(round(self.far / self.step))
-        sizes = [1] * start
+        fine_block = 1 if self.fine_step is None else max(1, int(round(self.fine_step / self.step)))
+        sizes, start = [1] * first, first
         while start < total:
-            sizes.append(min(block if start < far else 2 * block, total - start))
+            size = fine_block if start < fine else (block if start < far else 2 * block)
+            sizes.append(min(size, (fine if start < fine else total) - start))
             start += sizes[-1]
         return self.step * np.array(sizes, dtype=float)
 
@@ -234,20 +241,6 @@ class _Solved(NamedTuple):
     elapsed: float
     start: np.ndarray
     cost: float | None
-
-
-def at_least_g(values) -> np.ndarray:
-    """A modulus (K,) at least G, or the force of S (K, 6) at least G long, in its direction (straight
-    up where it is zero); NaN stays NaN."""
-    values = np.array(values, dtype=float)
-    if values.ndim == 1:
-        return np.where(values < G, G, values)
-    f = values[:, 3:]
-    size = np.linalg.norm(f, axis=1)
-    weak = size < G
-    up = np.tile([0.0, 0.0, 1.0], (int(weak.sum()), 1))
-    f[weak] = np.where(size[weak, None] > 0, f[weak] * (G / np.where(size[weak] > 0, size[weak], 1.0))[:, None], G * up)
-    return values
 
 
 #: The least a placed start must save of the first plan's cost (a mean square felt error, (m/s^2)^2)

@@ -136,3 +136,17 @@ def vertical_force(M) -> np.ndarray:
     S = np.zeros((len(M), 6))
     S[:, 5] = M
     return S
+
+
+def at_least_g(values) -> np.ndarray:
+    """A modulus (K,) at least G, or the force of S (K, 6) at least G long, in its direction (straight
+    up where it is zero); NaN stays NaN."""
+    values = np.array(values, dtype=float)
+    if values.ndim == 1:
+        return np.where(values < G, G, values)
+    f = values[:, 3:]
+    size = np.linalg.norm(f, axis=1)
+    weak = size < G
+    up = np.tile([0.0, 0.0, 1.0], (int(weak.sum()), 1))
+    f[weak] = np.where(size[weak, None] > 0, f[weak] * (G / np.where(size[weak] > 0, size[weak], 1.0))[:, None], G * up)
+    return values
