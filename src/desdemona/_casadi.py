@@ -9,6 +9,7 @@ does the numeric side: NumPy in, NumPy out, and a whole trajectory at once when 
 from __future__ import annotations
 
 import threading
+import weakref
 
 import casadi as ca
 import numpy as np
@@ -56,28 +57,27 @@ def call(fun: ca.Function, *args, matrix: bool = False):
 
 def _buffered(fun: ca.Function, arrays) -> np.ndarray | None:
     """One sample of an SX Function with dense arguments and result, evaluated in place through a
-    FunctionBuffer kept for it (None where it does not apply). CasADi's plain call converts every
-    argument and result to a DM: 0.1-0.2 ms a call on the controller's cycle, which calls the model a
-    few times, against about 0.01 ms here ("Real-time iteration without conversions")."""
+    FunctionBuffer kept for it while the Function lives (None where it does not apply). CasADi's plain
+    call converts every argument and result: one sample of S on ``full`` takes 0.046 ms that way and
+    0.007 ms here, and a controller's cycle calls the model and its guard a few times ("Real-time
+    iteration without conversions")."""
     kept = getattr(_local, "buffers", None)
     if kept is None:
-        kept = _local.buffers = {}
-    entry = kept.get(id(fun))
-    if entry is None or entry[0] is not fun:
+        kept = _local.buffers = weakref.WeakKeyDictionary()
+    if fun not in kept:
         dense = all(fun.sparsity_in(k).is_dense() for k in range(fun.n_in())) and fun.sparsity_out(0).is_dense()
-        if not (fun.is_a("SXFunction") and dense):
-            kept[id(fun)] = entry = (fun, None)
-        else:
+        kept[fun] = None
+        if fun.is_a("SXFunction") and dense:
             inputs = [np.zeros(fun.nnz_in(k)) for k in range(fun.n_in())]
             result = np.zeros(fun.nnz_out(0))
             buffer, evaluate = fun.buffer()
             for k, array in enumerate(inputs):
                 buffer.set_arg(k, memoryview(array))
             buffer.set_res(0, memoryview(result))
-            kept[id(fun)] = entry = (fun, (buffer, evaluate, inputs, result))
-    if entry[1] is None:
+            kept[fun] = (buffer, evaluate, inputs, result)
+    if kept[fun] is None:
         return None
-    _, evaluate, inputs, result = entry[1]
+    _, evaluate, inputs, result = kept[fun]
     for into, a in zip(inputs, arrays):
         into[:] = a.ravel()
     evaluate()

@@ -27,8 +27,7 @@ from desdemona.profiles.weights import WEIGHT_CHOICES, weights_for
 __all__ = ["ALIGNED_ROTATION_WEIGHT", "ALIGNED_WEIGHTS", "CHANNELS", "G", "LogFormat", "MAX_ANGULAR_VELOCITY",
            "MAX_SPECIFIC_FORCE", "MODULUS_COLUMNS", "PATH_COLUMNS", "PROFILES", "RATE_NOISE_PER_FORCE_NOISE",
            "THRESHOLDS", "WEIGHT_CHOICES", "DesiredPath", "ProfileError", "along_vertical", "at_least_g", "car_lap",
-           "catapult",
-           "cosine", "cosine_sweep", "dfs_catapult", "from_jsbsim", "from_log", "get_profile", "load",
+           "catapult", "cosine", "cosine_sweep", "dfs_catapult", "from_jsbsim", "from_log", "get_profile", "load",
            "modulus_version", "pulses", "read_csv", "recorded_version", "roller_coaster", "vertical_force",
            "weights_for", "write_csv"]
 
