@@ -1,6 +1,7 @@
 """A session's choices resolved once (desdemona.session): the same problem whichever command asks."""
 
 import argparse
+import dataclasses
 
 import numpy as np
 import pytest
@@ -102,15 +103,23 @@ def test_a_jerk_weight_reaches_the_problem_off_line_and_on_line(catapult):
     assert Choices.of(args).jerk_weight == 2.0
 
 
-def test_the_wall_reaches_the_off_line_problem_and_is_checked(catapult):
+def test_the_wall_reaches_the_off_and_on_line_problems_and_is_checked(catapult):
+    from desdemona.mpc import MPC, MPCOptions
+
     model = Model(config="yaw-track-cabin")
     assert session.offline(catapult, model, Choices(wall=0.0)).options.wall == 0.0
     assert session.offline(catapult, model).options.wall == WALL
-    assert ProblemOptions().wall == 0.0  # the thesis' formulation
+    assert ProblemOptions().wall == 0.0 and MPCOptions().wall == 0.0  # the thesis' formulation
+    online = session.online(catapult, model).options.mpc
+    assert online.wall == WALL and session.online(catapult, model, Choices(wall=0.0)).options.mpc.wall == 0.0
+    assert MPC(model, dataclasses.replace(online, horizon=1.0, reach=1.0)).problem.options.wall == WALL
     for bad in (-1.0, float("nan")):
-        with pytest.raises(ChoiceError, match="--wall"):
-            session.offline(catapult, model, Choices(wall=bad))
-    for command in (["optimize", "catapult", "--out", "x"], ["batch", "catapult", "--configs", "full", "--out", "x"]):
+        for resolve in (session.offline, session.online):
+            with pytest.raises(ChoiceError, match="--wall"):
+                resolve(catapult, model, Choices(wall=bad))
+    for command in (["optimize", "catapult", "--out", "x"], ["batch", "catapult", "--configs", "full", "--out", "x"],
+                    ["online", "catapult", "--out", "x"],
+                    ["serve", "--listen", "127.0.0.1:9000", "--send", "127.0.0.1:9001", "--out", "x"]):
         assert Choices.of(build_parser().parse_args([*command, "--wall", "0"])).wall == 0.0
     with pytest.raises(ChoiceError, match="drop --wall"):
         session.thesis(catapult, model, Choices(wall=1.0))

@@ -57,7 +57,7 @@ class MPCOptions:
     a whole number of steps (default: every step); delay : simulate the computation time as the thesis
     does (7.1, figure 7.2): the plan computed during [t, t + T_c] from the state at t is applied from
     t + T_c, so it starts from the state predicted there; deadline : compute budget per plan [s]
-    (default: T_c); substeps, regularisation, margin, weights, jerk_weight : as in
+    (default: T_c); substeps, regularisation, margin, weights, jerk_weight, wall : as in
     :class:`~desdemona.problem.ProblemOptions` (jerk_weight None:
     :func:`~desdemona.problem.default_jerk_weight` on-line); braking : fraction of the acceleration
     limit assumed for stopping; method : "rti" (real-time iteration: one Gauss-Newton QP per plan,
@@ -126,6 +126,7 @@ class MPCOptions:
     reach: float | None = None
     rotation_band: float | None = None
     null_weight: float | None = None
+    wall: float = 0.0
 
     def __post_init__(self):
         if self.method not in ("auto", "rti", "nlp"):
@@ -274,7 +275,8 @@ class MPC:
             margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6,
             stoppable=True, braking=options.braking, perception=options.perception, initial_filter="given",
             steps=None if np.all(steps == options.step) else tuple(steps),
-            jerk_weight=options.jerk_weight, rotation_band=options.rotation_band, null_weight=null_weight)
+            jerk_weight=options.jerk_weight, rotation_band=options.rotation_band, null_weight=null_weight,
+            wall=options.wall)
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         self.limits = model.limits
         self._limit_use = model.step_limit_use(options.step)

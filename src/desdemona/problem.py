@@ -37,7 +37,7 @@ perception threshold) never trades a felt cue for effort, but removes the flat d
 cost (joints that do not change S in the weighted channels), which makes the Hessian regular and the
 optimum unique. With jerk limits the jerk has a weight of its own against its limit
 (``ProblemOptions.jerk_weight``), so that a plan does not swing its accelerations where the cue gains
-little from it. An off-line session adds a smooth wall before the position limits
+little from it. A session, off-line or on-line, adds a smooth wall before the position limits
 (``ProblemOptions.wall``), which keeps a plan from grazing them.
 """
 
@@ -131,7 +131,8 @@ class ProblemOptions:
         optimum meets at isolated touch points rather than along an arc; on real recordings the
         track grazed its end there and IPOPT's dual infeasibility stayed at that one node for hundreds
         of iterations ("Wall before the position limits"). 0 (the default): none, the thesis'
-        formulation; an off-line session (:func:`desdemona.session.offline`) takes ``WALL``.
+        formulation; a session (:func:`desdemona.session.offline`, :func:`desdemona.session.online`)
+        takes ``WALL``: on-line, a track parked against its end dithered there without it.
     rotation_band : with a perception model, a felt rotation beyond this many perception thresholds of
         its canal channel (either way) costs :data:`BAND_WEIGHT` times its weight more, on the excess: a
         plan may use a rotation the occupant hardly feels (the arm's slow spin-up, a tilt below the

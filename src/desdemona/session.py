@@ -57,8 +57,8 @@ class Choices:
         default of the configuration, off-line or on-line.
     window : off-line, solve in overlapping windows this long [s] (:mod:`desdemona.windows`); 0: the
         whole path at once; None: windows above :data:`~desdemona.windows.WHOLE_UP_TO` seconds.
-    wall : off-line, the cost's wall before the position limits (:attr:`ProblemOptions.wall`), None:
-        :data:`~desdemona.problem.WALL`.
+    wall : the cost's wall before the position limits (:attr:`ProblemOptions.wall`, off-line and
+        on-line), None: :data:`~desdemona.problem.WALL`.
     """
 
     weights: str | tuple | None = None
@@ -129,19 +129,16 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
     """The session of ``optimize`` and of each job of ``batch``: the cued path and its
     :class:`~desdemona.problem.ProblemOptions`, checked to fit in memory with ``workers`` at once."""
     from desdemona import windows
-    from desdemona.problem import WALL, ProblemOptions
+    from desdemona.problem import ProblemOptions
 
     _check_h_u(choices.h_u, path)
     if model.config.modulus_cost and perception is not None:
         raise ChoiceError("--perception applies to the full path S, not to the dfs modulus")
-    if choices.wall is not None and not (math.isfinite(choices.wall) and choices.wall >= 0):
-        raise ChoiceError(f"--wall {choices.wall:g}: must be a number >= 0 (m/s^2)")
+    wall = _wall(choices)
     path = cued(path, model, choices)
     initial, state = start(model, choices, OFFLINE_STARTS)
     problem = ProblemOptions(h_u=choices.h_u, solver=solver, perception=perception, initial=initial,
-                             final=choices.final, initial_state=state,
-                             wall=WALL if choices.wall is None else choices.wall,
-                             **cost(path, model, choices))
+                             final=choices.final, initial_state=state, wall=wall, **cost(path, model, choices))
     window = _window(path, model, problem, choices.window, workers)
     part = path if window is None else windows.part(path, 0.0, window)
     size = sizing.check_fits(part, model.config, problem, workers, model.limits.smooth)
@@ -238,10 +235,10 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     if (predictor == "route") != (reference is not None):
         raise ChoiceError("--predictor route needs --reference, a recording of the same course" if reference is None
                          else "--reference is used only with --predictor route")
-    weighted = cost(path, model, choices)
+    weighted, wall = cost(path, model, choices), _wall(choices)
     try:
         mpc = MPCOptions(horizon=horizon, step=step, reach=reach, perception=perception, rotation_band=rotation_band,
-                         **weighted, **timing)
+                         wall=wall, **weighted, **timing)
     except ValueError as exc:
         raise ChoiceError(f"--replan: {exc}") from None
     size = sizing.check_fits_online(path, model.config, mpc)
@@ -302,6 +299,18 @@ def parse_state(text: str, model: Model) -> tuple[np.ndarray, np.ndarray]:
         if not abs(qd[k]) <= lim.velocity[k]:
             raise ChoiceError(f"--initial-state: {name} rate {qd[k]:g} is above its limit {lim.velocity[k]:g}")
     return q, qd
+
+
+def _wall(choices: Choices) -> float:
+    """The cost's wall before the position limits [m/s^2]: the user's, else
+    :data:`~desdemona.problem.WALL`, off-line and on-line alike ("Wall before the position limits")."""
+    from desdemona.problem import WALL
+
+    if choices.wall is None:
+        return WALL
+    if not (math.isfinite(choices.wall) and choices.wall >= 0):
+        raise ChoiceError(f"--wall {choices.wall:g}: must be a number >= 0 (m/s^2)")
+    return choices.wall
 
 
 def _check_h_u(h_u: float, path: DesiredPath) -> None:

@@ -305,11 +305,6 @@ def _add_start_options(parser: argparse.ArgumentParser, starts: int) -> None:
                         help="solve in overlapping windows this long, each starting from the state the one "
                              "before reached, the whole re-checked; memory is bounded by the window. 0: the "
                              "whole path at once (default: windows of 60 s for paths over 150 s)")
-    parser.add_argument("--wall", type=float, default=None, metavar="M_S2",
-                        help="the cost of a smooth wall over the last 0.5 %% of the track's and heave's "
-                             "travel, as a felt error [m/s^2] at the limit: it keeps the plan from grazing "
-                             "a limit, where the solver crawls; 0 lets the plan use the whole travel "
-                             "(default: 1)")
 
 
 def _add_session_options(parser: argparse.ArgumentParser, given: bool = True) -> None:
@@ -349,6 +344,11 @@ def _add_cost_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--gain", type=float, default=1.0, metavar="G",
                         help="motion gain around 1 g: f_d -> (0,0,g) + G (f_d - (0,0,g)), omega_d -> G "
                              "omega_d (default: 1)")
+    parser.add_argument("--wall", type=float, default=None, metavar="M_S2",
+                        help="the cost of a smooth wall over the last 0.5 %% of the track's and heave's "
+                             "travel, as a felt error [m/s^2] at the limit: it keeps a plan from grazing "
+                             "a limit, where the off-line solver crawls and an on-line plan dithers; 0 "
+                             "lets the plan use the whole travel (default: 1)")
     parser.add_argument("--jerk-weight", type=float, default=None, metavar="RHO", dest="jerk_weight",
                         help="the jerk's weight in the cost, against its limit: higher makes the joints "
                              "reverse their accelerations less, at some cost in the cue (default: 5 "
