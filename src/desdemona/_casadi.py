@@ -55,6 +55,18 @@ def call(fun: ca.Function, *args, matrix: bool = False):
     return out.reshape(m, samples, k).transpose(1, 0, 2)
 
 
+def bound(fun: ca.Function, args: dict, results: dict):
+    """A FunctionBuffer of ``fun`` that reads ``args`` and writes ``results`` in place (each a dict
+    from an input's or output's index or name to a float array of its nonzeros), and the callable
+    that evaluates it. The arrays must live as long as the buffer."""
+    buffer, evaluate = fun.buffer()
+    for key, array in args.items():
+        buffer.set_arg(key if isinstance(key, int) else fun.index_in(key), memoryview(array))
+    for key, array in results.items():
+        buffer.set_res(key if isinstance(key, int) else fun.index_out(key), memoryview(array))
+    return buffer, evaluate
+
+
 def _buffered(fun: ca.Function, arrays) -> np.ndarray | None:
     """One sample of an SX Function with dense arguments and result, evaluated in place through a
     FunctionBuffer kept for it while the Function lives (None where it does not apply). CasADi's plain
@@ -70,11 +82,7 @@ def _buffered(fun: ca.Function, arrays) -> np.ndarray | None:
         if fun.is_a("SXFunction") and dense:
             inputs = [np.zeros(fun.nnz_in(k)) for k in range(fun.n_in())]
             result = np.zeros(fun.nnz_out(0))
-            buffer, evaluate = fun.buffer()
-            for k, array in enumerate(inputs):
-                buffer.set_arg(k, memoryview(array))
-            buffer.set_res(0, memoryview(result))
-            kept[fun] = (buffer, evaluate, inputs, result)
+            kept[fun] = (*bound(fun, dict(enumerate(inputs)), {0: result}), inputs, result)
     if kept[fun] is None:
         return None
     _, evaluate, inputs, result = kept[fun]

@@ -8,6 +8,7 @@ import casadi as ca
 import numpy as np
 
 from desdemona import blasfeo, compiled
+from desdemona._casadi import bound
 from desdemona.transcription import Bounds, CueingProblem
 
 # The real-time iteration's QP data is compiled to machine code (:mod:`desdemona.compiled`) as the graph
@@ -86,22 +87,13 @@ class RealTimeIteration:
         self._qp_out = {name: np.zeros(qp.nnz_out(name)) for name in qp.name_out()}
         # the gradient's structural zeros (the end state's) are not among the data's nonzeros
         self._gradient_rows = np.asarray(data.sparsity_out(1).row(), dtype=int)
-        self._data_buffer, self._eval_data = data.buffer()
-        for i, array in enumerate([self._w, self._p]):
-            self._data_buffer.set_arg(i, memoryview(array))
-        for i, array in enumerate(self._out):
-            self._data_buffer.set_res(i, memoryview(array))
+        self._data_buffer, self._eval_data = bound(data, {0: self._w, 1: self._p}, dict(enumerate(self._out)))
 
     def _qp_buffer(self):
         """A new buffer of the QP's arrays for each solve (0.05-0.09 ms): HPIPM's plugin depends on
         work memory that CasADi's plain call hands it fresh, and from a kept buffer it solved another
         QP from the second call on. Every result is bound: the plugin writes them all."""
-        buffer, evaluate = self.qp.buffer()
-        for name, array in self._qp_in.items():
-            buffer.set_arg(self.qp.index_in(name), memoryview(array))
-        for name, array in self._qp_out.items():
-            buffer.set_res(self.qp.index_out(name), memoryview(array))
-        return buffer, evaluate
+        return bound(self.qp, self._qp_in, self._qp_out)
 
     def __call__(self, w, p, bounds: Bounds, share: float = 1.0) -> tuple[np.ndarray, bool]:
         """One QP step from the linearisation point ``w`` for the parameter ``p``: the new point, and
