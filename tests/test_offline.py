@@ -259,6 +259,33 @@ def test_from_rest_the_guesses_spin_the_yaw_up_and_leave_the_stationary_point(pa
     np.testing.assert_allclose(best.x[-1, 1:], 0.0, atol=1e-9)  # at rest, track centred at the end
 
 
+def test_the_spun_up_guesses_turn_as_fast_as_the_held_force_asks(params):
+    """From rest the guesses spin the yaw up to half its rate limit (thesis table 5.2), or faster where the
+    path holds a larger force: to the rate whose centripetal force at the track's end gives the median
+    held modulus, sqrt(sqrt(M^2 - g^2) / R), at most the limit."""
+    from desdemona.offline import SPIN_SHARE, spin_share
+
+    model = Model(params, "yaw-track-cabin")
+    g, R, v = params.gravity, 4.0, model.limits.velocity[0]
+    t = np.linspace(0.0, 12.0, 121)
+
+    def held(M):
+        S = np.zeros((len(t), 6))
+        S[:, 5] = M
+        return DesiredPath("held", t, S)
+
+    for M, share in [(g, SPIN_SHARE), (np.hypot(g, R * (0.7 * v) ** 2), 0.7), (4.5 * g, 1.0)]:
+        problem = CueingProblem(model, held(M), ProblemOptions(h_u=0.1, initial="rest", final="centre"))
+        assert spin_share(problem) == pytest.approx(share, rel=1e-9)
+        step = 0.8 * model.limits.acceleration[0] * 0.1  # the spin-up's rate gained per interval
+        *smart, (_, random_x, _) = initial_guesses(problem, 4, seed=0)
+        for name, x, _ in smart:
+            assert np.abs(x[:, 3]).max() == pytest.approx(share * v, abs=step), name
+        # the random start: its random accelerations on top of the same spin-up (a walk of ~0.1 rad/s)
+        middle = random_x[len(random_x) // 3:2 * len(random_x) // 3, 3]
+        assert np.median(middle) == pytest.approx(share * v, abs=0.3)
+
+
 def test_a_start_at_the_end_of_a_joints_travel_is_planned_from(params):
     """The optimiser keeps positions a parabola's bulge inside their limits; a start in that band (the
     track at rest at its end) must still be planned from, off-line and on-line, not be infeasible."""

@@ -29,6 +29,10 @@ from desdemona.profiles import DesiredPath
 from desdemona.simulate import LimitCheck, LimitViolation, Trajectory, check, evaluate_plan, trajectory_dataframe
 
 
+#: The share of the yaw's rate limit a spun-up guess turns at, at least (thesis table 5.2: half).
+SPIN_SHARE = 0.5
+
+
 @dataclass(frozen=True)
 class OptimizeOptions:
     """Options of :func:`optimize`.
@@ -127,8 +131,10 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
     a0 = None if problem.options.initial == "free" else start_acceleration(problem.options.initial_state, n)
 
     free = model.config.free
-    if problem.options.initial != "free":
-        guesses += _guesses_from_start(problem)
+    fixed = problem.options.initial != "free"  # the start is fixed (at rest, or given)
+    rate = spin_share(problem) if fixed else None
+    if fixed:
+        guesses += _guesses_from_start(problem, rate)
     elif model.config.takes_modulus:
         classical = classical_dfs(problem.path, model, times=problem.t_nodes)
         add("classical-loop", classical.q0, classical.qd0, classical.u)
@@ -160,8 +166,8 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
     while len(guesses) < count:
         u = rng.uniform(-0.2, 0.2, size=(N, n)) * lim.acceleration
         q0, qd0 = rng.uniform(lo, hi), rng.uniform(-0.5, 0.5, size=n) * lim.velocity
-        if problem.options.initial != "free":  # the start is fixed: only the accelerations are random
-            q0, qd0, u = *_start(problem), _spin_up(problem, 1.0) + u
+        if fixed:  # only the accelerations are random, on top of the spin-up
+            q0, qd0, u = *_start(problem), _spin_up(problem, 1.0, rate) + u
         add(f"random {len(guesses)}", q0, qd0, u)
     return guesses[:count]
 
@@ -172,7 +178,7 @@ def _start(problem: CueingProblem) -> tuple[np.ndarray, np.ndarray]:
     return start_state(o.initial_state if o.initial == "given" else None, problem.model.n)
 
 
-def _spin_up(problem: CueingProblem, direction: float, rate: float = 0.5, accel: float = 0.8) -> np.ndarray:
+def _spin_up(problem: CueingProblem, direction: float, rate: float = SPIN_SHARE, accel: float = 0.8) -> np.ndarray:
     """(N, n) accelerations that turn the yaw up from the start to ``rate`` times its rate limit at
     ``accel`` times its acceleration limit, in ``direction`` (+1 or -1), hold it, and brake it again
     over the last intervals when the problem ends at rest.
@@ -191,10 +197,30 @@ def _spin_up(problem: CueingProblem, direction: float, rate: float = 0.5, accel:
     return u
 
 
-def _guesses_from_start(problem: CueingProblem) -> list[tuple[str, np.ndarray, np.ndarray]]:
-    """Guesses for a fixed start (at rest, or given): the yaw spun up either way, and, where there is a
-    track and the start's position is free, with the track out on the side where the centripetal
-    specific force points along the mean demanded f_y."""
+def spin_share(problem: CueingProblem) -> float:
+    """The share of the yaw's rate limit that the spun-up guesses turn at: :data:`SPIN_SHARE`, or more
+    where the path holds a larger force, up to the rate whose centripetal force at the cabin's largest
+    radius gives the median of the desired modulus held (:func:`desdemona.sizing.held_modulus`), at
+    most the limit.
+
+    A guess that turns too slowly for a sustained force has to be spun up by the solver over every
+    interval of the path, one at a time: the arm's acceleration limit blocks each step (the F-16 turn on
+    ``full``, "Spin of the guesses" in docs/benchmarks.md).
+    """
+    model = problem.model
+    radius = max(abs(r) for r in sizing.radii(model))
+    if radius <= 0.0:  # no centripetal force to give
+        return SPIN_SHARE
+    g, held = float(model.params.gravity), float(np.median(sizing.held_modulus(problem.path)))
+    horizontal = np.sqrt(max(held ** 2 - g ** 2, 0.0))
+    return float(np.clip(np.sqrt(horizontal / radius) / model.limits.velocity[0], SPIN_SHARE, 1.0))
+
+
+def _guesses_from_start(problem: CueingProblem, rate: float) -> list[tuple[str, np.ndarray, np.ndarray]]:
+    """Guesses for a fixed start (at rest, or given): the yaw spun up either way to ``rate`` times its
+    rate limit (:func:`spin_share`), and, where there is a track and the start's position is free,
+    with the track out on the side where the centripetal specific force points along the mean demanded
+    f_y."""
     model, guesses = problem.model, []
     q0, qd0 = _start(problem)
     track = model.config.free.index(1) if 1 in model.config.free else None
@@ -206,7 +232,7 @@ def _guesses_from_start(problem: CueingProblem) -> list[tuple[str, np.ndarray, n
         start = q0.copy()
         if track is not None and track_position:
             start[track] = track_position
-        x, u = problem.guess(start, qd0, _spin_up(problem, direction),
+        x, u = problem.guess(start, qd0, _spin_up(problem, direction, rate),
                              start_acceleration(problem.options.initial_state, model.n))
         guesses.append((name, x, u))
     return guesses

@@ -155,18 +155,29 @@ def _round_up(x: float) -> str:
     return f"{math.ceil(x / digits) * digits:g}"
 
 
+def radii(model: Model) -> list[float]:
+    """The cabin's distances from the yaw axis [m] that the configuration can hold: the track's two
+    ends where it moves (0 where it has no bounds), else its fixed position."""
+    config, lim = model.config, model.limits
+    if 1 in config.free:
+        k = config.free.index(1)
+        return [r for r in (lim.position_min[k], lim.position_max[k]) if math.isfinite(r)] or [0.0]
+    return [config.fixed[1]]
+
+
+def held_modulus(path: DesiredPath) -> np.ndarray:
+    """The desired modulus |f_d| [m/s^2] averaged over :data:`STEADY_WINDOW` s around each sample: what
+    a target asks for as long as it is held."""
+    return _moving_mean(path.t, path.M_d, STEADY_WINDOW)
+
+
 def steady_modulus_limit(model: Model) -> float:
     """The largest specific force [m/s^2] the configuration can hold for as long as wanted: the cabin at
     the largest radius the track allows, turning at the fastest yaw rate at which every joint's
     velocity, force and power limit holds (no acceleration: nothing else is steady)."""
     config, lim = model.config, model.limits
-    if 1 in config.free:
-        k = config.free.index(1)
-        radii = [r for r in (lim.position_min[k], lim.position_max[k]) if math.isfinite(r)] or [0.0]
-    else:
-        radii = [config.fixed[1]]
     best = float(model.params.gravity)
-    for radius in radii:
+    for radius in radii(model):
         q, still = np.zeros(model.n), np.zeros(model.n)
         if 1 in config.free:
             q[config.free.index(1)] = radius
@@ -201,7 +212,7 @@ def unreachable(path: DesiredPath, model: Model) -> dict:
     g = float(model.params.gravity)
     t = path.t
     M = path.M_d
-    steady = _moving_mean(t, M, STEADY_WINDOW)
+    steady = held_modulus(path)
     low = (M if 2 not in model.config.free else steady) < g * (1.0 - 1e-6)  # without the heave: always
     limit = steady_modulus_limit(model)
     high = steady > limit * (1.0 + 1e-6)
