@@ -262,7 +262,8 @@ def test_from_rest_the_guesses_spin_the_yaw_up_and_leave_the_stationary_point(pa
 def test_the_spun_up_guesses_turn_as_fast_as_the_held_force_asks(params):
     """From rest the guesses spin the yaw up to half its rate limit (thesis table 5.2), or faster where the
     path holds a larger force: to the rate whose centripetal force at the track's end gives the median
-    held modulus, sqrt(sqrt(M^2 - g^2) / R), at most the limit."""
+    held modulus, sqrt(sqrt(M^2 - g^2) / R), at most the limit; the track-out guess then starts at
+    the track's end."""
     from desdemona.offline import SPIN_SHARE, spin_share
 
     model = Model(params, "yaw-track-cabin")
@@ -281,6 +282,8 @@ def test_the_spun_up_guesses_turn_as_fast_as_the_held_force_asks(params):
         *smart, (_, random_x, _) = initial_guesses(problem, 4, seed=0)
         for name, x, _ in smart:
             assert np.abs(x[:, 3]).max() == pytest.approx(share * v, abs=step), name
+        # the track out at half its travel, or at its end (the radius of the share) where the spin is faster
+        assert [abs(x[0, 1]) for _, x, _ in smart] == [0.0, R if share > SPIN_SHARE else R / 2, 0.0]
         # the random start: its random accelerations on top of the same spin-up (a walk of ~0.1 rad/s)
         middle = random_x[len(random_x) // 3:2 * len(random_x) // 3, 3]
         assert np.median(middle) == pytest.approx(share * v, abs=0.3)

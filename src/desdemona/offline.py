@@ -220,14 +220,16 @@ def _guesses_from_start(problem: CueingProblem, rate: float) -> list[tuple[str, 
     """Guesses for a fixed start (at rest, or given): the yaw spun up either way to ``rate`` times its
     rate limit (:func:`spin_share`), and, where there is a track and the start's position is free,
     with the track out on the side where the centripetal specific force points along the mean demanded
-    f_y."""
+    f_y: half its travel out, or at its end where the spin is faster than half (the radius
+    :func:`spin_share` takes)."""
     model, guesses = problem.model, []
     q0, qd0 = _start(problem)
     track = model.config.free.index(1) if 1 in model.config.free else None
     rows = [("from rest: yaw spun up", 0.0, 1.0), ("from rest: yaw spun up the other way", 0.0, -1.0)]
     if track is not None and problem.options.initial == "rest" and problem.path.S_d is not None:
         side = -1.0 if float(np.mean(problem.path.S_d[:, 4])) >= 0 else 1.0
-        rows.insert(1, ("from rest: yaw spun up, track out", side * 0.5 * model.limits.position_max[track], 1.0))
+        out = 0.5 if rate <= SPIN_SHARE else 1.0
+        rows.insert(1, ("from rest: yaw spun up, track out", side * out * model.limits.position_max[track], 1.0))
     for name, track_position, direction in rows:
         start = q0.copy()
         if track is not None and track_position:
