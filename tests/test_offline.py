@@ -260,11 +260,12 @@ def test_from_rest_the_guesses_spin_the_yaw_up_and_leave_the_stationary_point(pa
 
 
 def test_the_spun_up_guesses_turn_as_fast_as_the_held_force_asks(params):
-    """From rest the guesses spin the yaw up to half its rate limit (thesis table 5.2), or faster where the
-    path holds a larger force: to the rate whose centripetal force at the track's end gives the median
-    held modulus, sqrt(sqrt(M^2 - g^2) / R), at most the limit; the track-out guess then starts at
-    the track's end."""
-    from desdemona.offline import SPIN_SHARE, spin_share
+    """From rest the guesses spin the yaw up to the rate whose centripetal force at the track's end
+    gives the median held modulus, sqrt(sqrt(M^2 - g^2) / R), at most the limit: the smart guesses
+    at least at SPIN_FLOOR (to leave the stationary point of no turn), the random starts at least at
+    half the limit (thesis table 5.2). The track-out guess starts at the track's end where the spin is
+    faster than half, else at half its travel."""
+    from desdemona.offline import SPIN_FLOOR, SPIN_SHARE, spin_share
 
     model = Model(params, "yaw-track-cabin")
     g, R, v = params.gravity, 4.0, model.limits.velocity[0]
@@ -275,18 +276,21 @@ def test_the_spun_up_guesses_turn_as_fast_as_the_held_force_asks(params):
         S[:, 5] = M
         return DesiredPath("held", t, S)
 
-    for M, share in [(g, SPIN_SHARE), (np.hypot(g, R * (0.7 * v) ** 2), 0.7), (4.5 * g, 1.0)]:
+    rate = lambda share: np.hypot(g, R * (share * v) ** 2)  # the modulus a share of the limit holds
+    cases = [(g, SPIN_FLOOR, SPIN_SHARE), (rate(0.4), 0.4, SPIN_SHARE), (rate(0.7), 0.7, 0.7), (4.5 * g, 1.0, 1.0)]
+    for M, smart_share, random_share in cases:
         problem = CueingProblem(model, held(M), ProblemOptions(h_u=0.1, initial="rest", final="centre"))
-        assert spin_share(problem) == pytest.approx(share, rel=1e-9)
+        assert spin_share(problem, SPIN_FLOOR) == pytest.approx(smart_share, rel=1e-9)
+        assert spin_share(problem) == pytest.approx(random_share, rel=1e-9)
         step = 0.8 * model.limits.acceleration[0] * 0.1  # the spin-up's rate gained per interval
         *smart, (_, random_x, _) = initial_guesses(problem, 4, seed=0)
         for name, x, _ in smart:
-            assert np.abs(x[:, 3]).max() == pytest.approx(share * v, abs=step), name
+            assert np.abs(x[:, 3]).max() == pytest.approx(smart_share * v, abs=step), name
         # the track out at half its travel, or at its end (the radius of the share) where the spin is faster
-        assert [abs(x[0, 1]) for _, x, _ in smart] == [0.0, R if share > SPIN_SHARE else R / 2, 0.0]
-        # the random start: its random accelerations on top of the same spin-up (a walk of ~0.1 rad/s)
+        assert [abs(x[0, 1]) for _, x, _ in smart] == [0.0, R if smart_share > SPIN_SHARE else R / 2, 0.0]
+        # the random start: its random accelerations on top of its spin-up (a walk of ~0.1 rad/s)
         middle = random_x[len(random_x) // 3:2 * len(random_x) // 3, 3]
-        assert np.median(middle) == pytest.approx(share * v, abs=0.3)
+        assert np.median(middle) == pytest.approx(random_share * v, abs=0.3)
 
 
 def test_a_start_at_the_end_of_a_joints_travel_is_planned_from(params):

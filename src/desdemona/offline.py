@@ -29,8 +29,12 @@ from desdemona.profiles import DesiredPath
 from desdemona.simulate import LimitCheck, LimitViolation, Trajectory, check, evaluate_plan, trajectory_dataframe
 
 
-#: The share of the yaw's rate limit a spun-up guess turns at, at least (thesis table 5.2: half).
+#: The share of the yaw's rate limit the random starts' spin-up turns at, at least (thesis table 5.2:
+#: half).
 SPIN_SHARE = 0.5
+#: The share of the yaw's rate limit the smart guesses' spin-up turns at, at least: enough to leave
+#: the stationary point of no turn (no gradient of the centripetal terms at zero yaw rate).
+SPIN_FLOOR = 0.3
 
 
 @dataclass(frozen=True)
@@ -132,9 +136,8 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
 
     free = model.config.free
     fixed = problem.options.initial != "free"  # the start is fixed (at rest, or given)
-    rate = spin_share(problem) if fixed else None
     if fixed:
-        guesses += _guesses_from_start(problem, rate)
+        guesses += _guesses_from_start(problem, spin_share(problem, SPIN_FLOOR))
     elif model.config.takes_modulus:
         classical = classical_dfs(problem.path, model, times=problem.t_nodes)
         add("classical-loop", classical.q0, classical.qd0, classical.u)
@@ -167,7 +170,7 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
         u = rng.uniform(-0.2, 0.2, size=(N, n)) * lim.acceleration
         q0, qd0 = rng.uniform(lo, hi), rng.uniform(-0.5, 0.5, size=n) * lim.velocity
         if fixed:  # only the accelerations are random, on top of the spin-up
-            q0, qd0, u = *_start(problem), _spin_up(problem, 1.0, rate) + u
+            q0, qd0, u = *_start(problem), _spin_up(problem, 1.0, spin_share(problem)) + u
         add(f"random {len(guesses)}", q0, qd0, u)
     return guesses[:count]
 
@@ -197,15 +200,16 @@ def _spin_up(problem: CueingProblem, direction: float, rate: float = SPIN_SHARE,
     return u
 
 
-def spin_share(problem: CueingProblem) -> float:
-    """The share of the yaw's rate limit that the spun-up guesses turn at: :data:`SPIN_SHARE`, or more
-    where the path holds a larger force, up to the rate whose centripetal force at the cabin's largest
-    radius gives the median of the desired modulus held (:func:`desdemona.sizing.held_modulus`), at
-    most the limit.
+def spin_share(problem: CueingProblem, floor: float = SPIN_SHARE) -> float:
+    """The share of the yaw's rate limit that a spun-up guess turns at: the rate whose centripetal
+    force at the cabin's largest radius gives the median of the desired modulus held
+    (:func:`desdemona.sizing.held_modulus`), within [``floor``, 1].
 
-    A guess that turns too slowly for a sustained force has to be spun up by the solver over every
-    interval of the path, one at a time: the arm's acceleration limit blocks each step (the F-16 turn on
-    ``full``, "Spin of the guesses" in docs/benchmarks.md).
+    The smart guesses take it from :data:`SPIN_FLOOR` up, the random starts from :data:`SPIN_SHARE`
+    up. A guess that turns at another rate than the path's sustained force asks has to be brought
+    to it by the solver over every interval of the path, one at a time: the arm's acceleration limit
+    blocks each step, too slow a spin on the F-16 turn on ``full``, too fast a one on the 747
+    take-off ("Spin of the guesses" in docs/benchmarks.md).
     """
     model = problem.model
     radius = max(abs(r) for r in sizing.radii(model))
@@ -213,7 +217,7 @@ def spin_share(problem: CueingProblem) -> float:
         return SPIN_SHARE
     g, held = float(model.params.gravity), float(np.median(sizing.held_modulus(problem.path)))
     horizontal = np.sqrt(max(held ** 2 - g ** 2, 0.0))
-    return float(np.clip(np.sqrt(horizontal / radius) / model.limits.velocity[0], SPIN_SHARE, 1.0))
+    return float(np.clip(np.sqrt(horizontal / radius) / model.limits.velocity[0], floor, 1.0))
 
 
 def _guesses_from_start(problem: CueingProblem, rate: float) -> list[tuple[str, np.ndarray, np.ndarray]]:
