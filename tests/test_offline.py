@@ -276,8 +276,8 @@ def test_the_spun_up_guesses_turn_as_fast_as_the_held_force_asks(params):
         S[:, 5] = M
         return DesiredPath("held", t, S)
 
-    rate = lambda share: np.hypot(g, R * (share * v) ** 2)  # the modulus a share of the limit holds
-    cases = [(g, SPIN_FLOOR, SPIN_SHARE), (rate(0.4), 0.4, SPIN_SHARE), (rate(0.7), 0.7, 0.7), (4.5 * g, 1.0, 1.0)]
+    modulus = lambda share: np.hypot(g, R * (share * v) ** 2)  # what a share of the rate limit holds
+    cases = [(g, SPIN_FLOOR, SPIN_SHARE), (modulus(0.4), 0.4, SPIN_SHARE), (modulus(0.7), 0.7, 0.7), (4.5 * g, 1.0, 1.0)]
     for M, smart_share, random_share in cases:
         problem = CueingProblem(model, held(M), ProblemOptions(h_u=0.1, initial="rest", final="centre"))
         assert spin_share(problem, SPIN_FLOOR) == pytest.approx(smart_share, rel=1e-9)

@@ -136,6 +136,7 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
 
     free = model.config.free
     fixed = problem.options.initial != "free"  # the start is fixed (at rest, or given)
+    random_rate = spin_share(problem) if fixed else None
     if fixed:
         guesses += _guesses_from_start(problem, spin_share(problem, SPIN_FLOOR))
     elif model.config.takes_modulus:
@@ -170,7 +171,7 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
         u = rng.uniform(-0.2, 0.2, size=(N, n)) * lim.acceleration
         q0, qd0 = rng.uniform(lo, hi), rng.uniform(-0.5, 0.5, size=n) * lim.velocity
         if fixed:  # only the accelerations are random, on top of the spin-up
-            q0, qd0, u = *_start(problem), _spin_up(problem, 1.0, spin_share(problem)) + u
+            q0, qd0, u = *_start(problem), _spin_up(problem, 1.0, random_rate) + u
         add(f"random {len(guesses)}", q0, qd0, u)
     return guesses[:count]
 
