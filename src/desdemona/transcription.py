@@ -313,18 +313,22 @@ class CueingProblem(Formulation):
         n, N, nx, o = self.model.n, self.N, self.nx, self.options
         lim = self.model.limits
         qmin, qmax = self.position_bounds()
-        if self.smooth:  # a rate is a parabola between nodes: back off by its largest bulge
-            velocity = lim.velocity - lim.jerk * float(self.steps.max())**2 / 8.0
-            x_lo = np.r_[qmin, -velocity, -lim.acceleration, np.full(self.nz, -np.inf)]
-            x_hi = np.r_[qmax, velocity, lim.acceleration, np.full(self.nz, np.inf)]
+        if self.smooth:
+            # A rate is a parabola between nodes: each node backs off by the largest bulge of the
+            # intervals beside it, j_max h^2 / 8, so a plan's fine first steps may come nearer the
+            # limit than its coarse tail (a uniform back-off by the tail's bulge held an arm at its
+            # rate limit 0.15 % below it on-line).
+            h = np.r_[self.steps[0], np.maximum(self.steps[:-1], self.steps[1:]), self.steps[-1]]
+            velocity = lim.velocity - lim.jerk * h[:, None]**2 / 8.0  # (N + 1, n)
+            x_lo = [np.r_[qmin, -v, -lim.acceleration, np.full(self.nz, -np.inf)] for v in velocity]
+            x_hi = [np.r_[qmax, v, lim.acceleration, np.full(self.nz, np.inf)] for v in velocity]
             control = lim.jerk
         else:
-            x_lo = np.r_[qmin, -lim.velocity, np.full(self.nz, -np.inf)]
-            x_hi = np.r_[qmax, lim.velocity, np.full(self.nz, np.inf)]
+            x_lo = [np.r_[qmin, -lim.velocity, np.full(self.nz, -np.inf)]] * (N + 1)
+            x_hi = [np.r_[qmax, lim.velocity, np.full(self.nz, np.inf)]] * (N + 1)
             control = lim.acceleration
-        lbx = np.tile(np.r_[x_lo, -control], N)
-        ubx = np.tile(np.r_[x_hi, control], N)
-        lbx, ubx = np.r_[lbx, x_lo], np.r_[ubx, x_hi]
+        lbx = np.concatenate([np.r_[x_lo[k], -control] for k in range(N)] + [x_lo[N]])
+        ubx = np.concatenate([np.r_[x_hi[k], control] for k in range(N)] + [x_hi[N]])
         last = slice(N * (nx + self.nu), N * (nx + self.nu) + nx)
         moving = slice(n, self.n_motion)  # rates (and accelerations): zero at rest
         if o.initial in ("rest", "given"):
