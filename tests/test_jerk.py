@@ -184,3 +184,25 @@ def test_a_rate_backs_off_by_the_bulge_of_its_own_intervals(params):
     assert command.source == "mpc"
     qd = qd0 + np.cumsum(command.sequence[:, 0]) * 0.02
     assert qd.min() >= qd0 - 1e-6 and qd.max() <= v - j * 0.02**2 / 8 + 1e-9
+
+
+def test_a_position_backs_off_by_the_bulge_of_its_own_intervals(params):
+    """The same for positions, qdd_max h_sub^2 / 8: on ``full`` the 4 s plan's tail has 0.2 s intervals,
+    whose bulge kept the heave 25 mm inside its 1 m travel, also over the fine steps a cycle runs;
+    the stopping rows back off as the node they start from."""
+    model = Model(params, "full")
+    prob = MPC(model, MPCOptions(horizon=4.0)).problem
+    h, a, nw = np.asarray(prob.steps), model.limits.acceleration, prob.nx + prob.nu
+    assert prob.m == 1 and h.min() == pytest.approx(0.02) and h.max() == pytest.approx(0.2)
+    heave = prob.ubx[nw + 2:prob.N * nw:nw]  # the heave at nodes 1 .. N - 1
+    np.testing.assert_allclose(heave, 1.0 - a[2] * np.maximum(h[:-1], h[1:])**2 / 8)
+    assert heave[0] == pytest.approx(1.0 - a[2] * 0.02**2 / 8) and heave[-1] == pytest.approx(1.0 - a[2] * 0.2**2 / 8)
+    # the stopping rows (track, heave) of the first and last stage, by the node after each
+    rows = [i for i, f in enumerate(prob.families) if f.name == "stopping"]
+    assert len(rows) == 1 and prob.families[0].name != "position"  # one sub-step: no inner points
+    offset = sum(f.lower.size for f in prob.families[:rows[0]])
+    stride = prob.nx + sum(f.lower.size for f in prob.families)
+    first = prob.ubg[prob.nx + prob.n_initial + offset:][:2]
+    last = prob.ubg[prob.n_initial + (prob.N - 1) * stride + prob.nx + offset:][:2]
+    np.testing.assert_allclose(first, [4.0, 1.0] - a[1:3] * 0.02**2 / 8)
+    np.testing.assert_allclose(last, [4.0, 1.0] - a[1:3] * 0.2**2 / 8)

@@ -312,20 +312,22 @@ class CueingProblem(Formulation):
     def _bounds(self) -> None:
         n, N, nx, o = self.model.n, self.N, self.nx, self.options
         lim = self.model.limits
-        qmin, qmax = self.position_bounds()
+        # Between nodes a rate is a parabola and a position bulges between sub-step points: each node
+        # backs off by the largest bulge of the intervals beside it, so a plan's fine first steps may
+        # come nearer a limit than its coarse tail (one back-off by the tail's bulge held an arm 0.15 %
+        # under its rate limit on-line, and the heave on `full` 25 mm inside its travel).
+        h = self.node_steps()
+        positions = [self.position_bounds(hk / self.m) for hk in h]
         if self.smooth:
-            # A rate is a parabola between nodes: each node backs off by the largest bulge of the
-            # intervals beside it, j_max h^2 / 8, so a plan's fine first steps may come nearer the
-            # limit than its coarse tail (a uniform back-off by the tail's bulge held an arm at its
-            # rate limit 0.15 % below it on-line).
-            h = np.r_[self.steps[0], np.maximum(self.steps[:-1], self.steps[1:]), self.steps[-1]]
             velocity = lim.velocity - lim.jerk * h[:, None]**2 / 8.0  # (N + 1, n)
-            x_lo = [np.r_[qmin, -v, -lim.acceleration, np.full(self.nz, -np.inf)] for v in velocity]
-            x_hi = [np.r_[qmax, v, lim.acceleration, np.full(self.nz, np.inf)] for v in velocity]
+            x_lo = [np.r_[q[0], -v, -lim.acceleration, np.full(self.nz, -np.inf)]
+                    for q, v in zip(positions, velocity)]
+            x_hi = [np.r_[q[1], v, lim.acceleration, np.full(self.nz, np.inf)]
+                    for q, v in zip(positions, velocity)]
             control = lim.jerk
         else:
-            x_lo = [np.r_[qmin, -lim.velocity, np.full(self.nz, -np.inf)]] * (N + 1)
-            x_hi = [np.r_[qmax, lim.velocity, np.full(self.nz, np.inf)]] * (N + 1)
+            x_lo = [np.r_[q[0], -lim.velocity, np.full(self.nz, -np.inf)] for q in positions]
+            x_hi = [np.r_[q[1], lim.velocity, np.full(self.nz, np.inf)] for q in positions]
             control = lim.acceleration
         lbx = np.concatenate([np.r_[x_lo[k], -control] for k in range(N)] + [x_lo[N]])
         ubx = np.concatenate([np.r_[x_hi[k], control] for k in range(N)] + [x_hi[N]])
@@ -360,16 +362,28 @@ class CueingProblem(Formulation):
         if o.initial == "given":
             self.lbx, self.ubx, self.lbg, self.ubg = self.bounds_from(start_state(o.initial_state, n)[0])
 
+    def node_steps(self) -> np.ndarray:
+        """(N + 1,) the longer of the two intervals beside each node (the first and last: their one)."""
+        h = self.steps
+        return np.r_[h[0], np.maximum(h[:-1], h[1:]), h[-1]]
+
     def _constraint_bounds(self, widen=None) -> tuple[np.ndarray, np.ndarray]:
         """(lbg, ubg): per stage the gaps (equalities), then the families in the order of the stage's
-        g. ``widen`` = (lower, upper, stages): the position and stopping families of the first
-        ``stages[j]`` stages take bound j at least that far out (:meth:`bounds_from`)."""
+        g. The position rows of a stage back off by its own sub-steps' bulge, the stopping rows by
+        that of the node they start from (:meth:`_bounds`). ``widen`` = (lower, upper, stages): the
+        position and stopping families of the first ``stages[j]`` stages take bound j at least that
+        far out (:meth:`bounds_from`)."""
         nx, N, bounded = self.nx, self.N, self.model.limits.bounded
+        node_h = self.node_steps()
         rows_lo, rows_hi = [], []
         for k in range(N):
             lower, upper = [np.zeros(nx)], [np.zeros(nx)]
             for f in self.families:
                 lo, hi = f.lower, f.upper
+                if f.name in ("position", "stopping"):
+                    h_sub = (self.steps[k] if f.name == "position" else node_h[k + 1]) / self.m
+                    qmin, qmax = (q[bounded] for q in self.position_bounds(h_sub))
+                    lo, hi = np.tile(qmin, lo.size // len(bounded)), np.tile(qmax, hi.size // len(bounded))
                 if widen is not None and f.name in ("position", "stopping"):
                     wide = k < widen[2][bounded]
                     count = lo.size // len(bounded)
