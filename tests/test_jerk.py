@@ -206,3 +206,11 @@ def test_a_position_backs_off_by_the_bulge_of_its_own_intervals(params):
     last = prob.ubg[prob.n_initial + (prob.N - 1) * stride + prob.nx + offset:][:2]
     np.testing.assert_allclose(first, [4.0, 1.0] - a[1:3] * 0.02**2 / 8)
     np.testing.assert_allclose(last, [4.0, 1.0] - a[1:3] * 0.2**2 / 8)
+    # a start the fine nodes reach leaves the bounds as they are (no widening a cycle); one beyond them
+    # widens the first nodes out to it
+    q0 = np.zeros(6)
+    q0[1] = 3.99
+    assert prob.bounds_from(q0)[1] is prob.ubx
+    q0[1] = 4.0
+    ubx = prob.bounds_from(q0)[1]
+    assert ubx is not prob.ubx and ubx[nw + 1] == 4.0 and ubx[(prob.N - 1) * nw + 1] == prob.ubx[(prob.N - 1) * nw + 1]

@@ -318,6 +318,9 @@ class CueingProblem(Formulation):
         # under its rate limit on-line, and the heave on `full` 25 mm inside its travel).
         h = self.node_steps()
         positions = [self.position_bounds(hk / self.m) for hk in h]
+        self._node_positions = tuple(np.array(side) for side in zip(*positions))  # (N + 1, n) each
+        self._inner_positions = tuple(np.array(side) for side in zip(*(self.position_bounds(hk / self.m)
+                                                                          for hk in self.steps)))  # (N, n)
         if self.smooth:
             velocity = lim.velocity - lim.jerk * h[:, None]**2 / 8.0  # (N + 1, n)
             x_lo = [np.r_[q[0], -v, -lim.acceleration, np.full(self.nz, -np.inf)]
@@ -374,15 +377,14 @@ class CueingProblem(Formulation):
         position and stopping families of the first ``stages[j]`` stages take bound j at least that
         far out (:meth:`bounds_from`)."""
         nx, N, bounded = self.nx, self.N, self.model.limits.bounded
-        node_h = self.node_steps()
         rows_lo, rows_hi = [], []
         for k in range(N):
             lower, upper = [np.zeros(nx)], [np.zeros(nx)]
             for f in self.families:
                 lo, hi = f.lower, f.upper
                 if f.name in ("position", "stopping"):
-                    h_sub = (self.steps[k] if f.name == "position" else node_h[k + 1]) / self.m
-                    qmin, qmax = (q[bounded] for q in self.position_bounds(h_sub))
+                    qmin, qmax = ((side[k] if f.name == "position" else node[k + 1])[bounded]
+                                  for side, node in zip(self._inner_positions, self._node_positions))
                     lo, hi = np.tile(qmin, lo.size // len(bounded)), np.tile(qmax, hi.size // len(bounded))
                 if widen is not None and f.name in ("position", "stopping"):
                     wide = k < widen[2][bounded]
@@ -430,9 +432,15 @@ class CueingProblem(Formulation):
             crossing = np.sqrt(2.0 * band / lim.acceleration)
         t = self.t_nodes - self.t_nodes[0]
         stages = np.searchsorted(t, crossing, side="right") + 1  # intervals started before it is crossed, and one more
+        below, above = lower < qmin, upper > qmax
+        # the fine first nodes back off less (:meth:`_bounds`): where each node it would widen already
+        # reaches q0 (a joint held at the end of its travel through the fine steps), nothing changes
+        within = np.arange(1, self.N + 1)[:, None] <= stages
+        node_lo, node_hi = (side[1:] for side in self._node_positions)
+        if not np.any(within & ((below & (node_lo > lower)) | (above & (node_hi < upper)))):
+            return self.lbx, self.ubx, self.lbg, self.ubg
         n, nw = self.model.n, self.nx + self.nu
         lbx, ubx = self.lbx.copy(), self.ubx.copy()
-        below, above = lower < qmin, upper > qmax
         last = self.N if self.options.final == "none" else self.N - 1  # a fixed end stays fixed
         for k in range(1, last + 1):  # the start node is the start
             wide = k <= stages
