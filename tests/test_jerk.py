@@ -214,3 +214,22 @@ def test_a_position_backs_off_by_the_bulge_of_its_own_intervals(params):
     q0[1] = 4.0
     ubx = prob.bounds_from(q0)[1]
     assert ubx is not prob.ubx and ubx[nw + 1] == 4.0 and ubx[(prob.N - 1) * nw + 1] == prob.ubx[(prob.N - 1) * nw + 1]
+
+
+def test_braking_near_the_end_of_a_joints_travel_stops_within_it(params):
+    """The brake's approach to rest, proportional to the rate, covers about qd T; near the end of a
+    joint's travel (the heave on ``full`` 28 mm from its end at 0.13 m/s, where a run that missed its
+    deadlines for seconds was left braking) the joint stops as quickly as its limits allow instead,
+    within its travel and without turning back."""
+    model = Model(params, "full")
+    mpc = MPC(model, MPCOptions(horizon=4.0))
+    h, lim = mpc.options.step, model.limits
+    q, qd, a = np.array([0, 0, 0.9715, 0, 0, 0.0]), np.array([0, 0, 0.133, 0, 0, 0.0]), np.zeros(6)
+    heave = []
+    for _ in range(100):
+        qdd, jerk = mpc.brake(q, qd, a)
+        assert np.all(np.abs(jerk) <= lim.jerk * (1 + 1e-9)) and np.all(np.abs(qdd) <= lim.acceleration * (1 + 1e-9))
+        q, qd, a = q + qd * h + qdd * h**2 / 2 + jerk * h**3 / 6, qd + qdd * h + jerk * h**2 / 2, qdd + jerk * h
+        heave.append(q[2])
+    assert max(heave) <= lim.position_max[2] and abs(qd[2]) < 1e-6
+    assert heave[-1] >= max(heave) - 1e-3  # at rest where it stopped, not turned back (0.16 mm)

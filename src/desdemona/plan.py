@@ -185,3 +185,38 @@ class Plan:
     def states(self) -> np.ndarray:
         """Node states (N + 1, 2n): positions then rates."""
         return np.hstack(self.nodes())
+
+
+def stopping_jerk(qd, a, h: float, A, J) -> np.ndarray:
+    """Per joint the jerk of the coming step [/s^3] of a stop as quick as the limits allow: the
+    acceleration turned against the motion at up to the jerk limit ``J``, held at ``A``, and turned back
+    to zero so that the rate reaches zero as the acceleration does. Of the jerks in [-J, J] it takes the
+    one that brakes most while the rate, were the acceleration then taken to zero at ``J``, does not
+    pass zero, and the acceleration stays within ``A`` (qd, a, A, J: (n,) per joint; h [s])."""
+    qd, a = np.asarray(qd, dtype=float), np.asarray(a, dtype=float)
+    s = np.where(qd != 0.0, np.sign(qd), -np.sign(a))  # the direction of motion
+    u, b = s * qd, s * a  # rate and acceleration along it
+
+    def left(k):  # the rate left along it after the step and a ramp of the acceleration to zero
+        b1 = b + k * h
+        return u + b * h + 0.5 * k * h * h + b1 * np.abs(b1) / (2.0 * J)
+
+    lo, hi = -np.asarray(J, dtype=float) * np.ones_like(u), np.asarray(J, dtype=float) * np.ones_like(u)
+    for _ in range(50):  # the smallest jerk along the motion that leaves a rate >= 0
+        mid = 0.5 * (lo + hi)
+        short = left(mid) < 0.0
+        lo, hi = np.where(short, mid, lo), np.where(short, hi, mid)
+    k = np.where(left(-J * np.ones_like(u)) >= 0.0, -J, hi)
+    k = np.maximum(k, (-A - b) / h)  # the acceleration no further than A against the motion
+    return s * np.clip(k, -J, J)
+
+
+def stopping_time(qd, a, A, J) -> np.ndarray:
+    """Per joint the shortest time [s] to rest from rate ``qd`` and acceleration ``a`` with the
+    acceleration within ``A`` and the jerk within ``J`` (continuous time): with b the acceleration along
+    the motion and w = |qd| + b^2 / 2J the rate the stop starts from once the acceleration has been
+    taken to zero, b / J + w / A + A / J, or b / J + 2 sqrt(w / J) where the stop never reaches A."""
+    qd, a = np.asarray(qd, dtype=float), np.asarray(a, dtype=float)
+    b = np.where(qd != 0.0, np.sign(qd) * a, -np.abs(a))
+    w = np.abs(qd) + b**2 / (2.0 * J)
+    return b / J + np.where(w >= A**2 / J, w / A + A / J, 2.0 * np.sqrt(w / J))
