@@ -43,7 +43,7 @@ import tables  # benchmarks/tables.py: the script's own folder is on the path
 
 from desdemona import Model
 from desdemona.report import read_table
-from desdemona.service import serve
+from desdemona.plan import stopping_time
 
 HERE = Path(__file__).resolve().parent
 RESULTS = HERE / "service-results"
@@ -160,7 +160,7 @@ def _parking(cycles: list[dict], folder: Path, rate: float, model: Model, outage
              judged_from: float) -> dict:
     """How the session parked: after the host's last message, the time from the first parking cycle to
     parked, against the time the limits allow from the rates and accelerations it had
-    (:func:`desdemona.service.serve.stopping_time`, and the two cycles of coming to rest); with an
+    (:func:`desdemona.plan.stopping_time`, and the two cycles of coming to rest); with an
     outage, when parking began after it began and when the session ran again."""
     t = np.array([float(c["t"]) for c in cycles])
     status = [c["status"] for c in cycles]
@@ -172,7 +172,7 @@ def _parking(cycles: list[dict], folder: Path, rate: float, model: Model, outage
     names, lim = model.config.joint_names, model.limits
     qd = np.array([col[f"qd_{j}"][k] for j in names])
     a = np.array([col[f"qdd_{j}"][k] for j in names])
-    bound = float(np.max(serve.stopping_time(qd, a, lim.acceleration, lim.jerk))) + 2.0 / rate
+    bound = float(np.max(stopping_time(qd, a, lim.acceleration, lim.jerk))) + 2.0 / rate
     row = {"parking_s": None if end is None else float(t[end] - t[begin]), "parking_bound_s": bound}
     if outage_at is not None:
         after = np.flatnonzero(t >= outage_at)

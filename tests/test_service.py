@@ -214,13 +214,13 @@ def test_parking_stops_each_joint_as_quickly_as_its_limits_allow():
     """From the arm spinning near its rate limit and the gimbals moving, the stop brakes at the
     acceleration limit, ramped at the jerk limit, and is nearly still within a few cycles of the
     shortest stop the limits allow (continuous time); no limit is exceeded on the way."""
-    from desdemona.plan import State
+    from desdemona.plan import State, stopping_jerk, stopping_time
 
     lim, h = Model(config="dfs").limits, 0.02
     state = State(np.zeros(4), np.array([2.5, -1.0, 0.5, 2.0]), np.array([0.3, 0.5, -1.0, 0.0]))
-    bound = np.max(serve.stopping_time(state.qd, state.a, lim.acceleration, lim.jerk))
+    bound = np.max(stopping_time(state.qd, state.a, lim.acceleration, lim.jerk))
     for k in range(int(2 * bound / h)):
-        jerk = serve.stopping_jerk(state.qd, state.a, h, lim.acceleration, lim.jerk)
+        jerk = stopping_jerk(state.qd, state.a, h, lim.acceleration, lim.jerk)
         assert np.all(np.abs(jerk) <= lim.jerk + 1e-12)
         state = state.advance(state.a, h, jerk)
         assert np.all(np.abs(state.a) <= lim.acceleration + 1e-12) and np.all(np.abs(state.qd) <= lim.velocity)

@@ -45,7 +45,7 @@ from desdemona._casadi import call
 from desdemona.model import Model
 from desdemona.mpc import MPC
 from desdemona.online import OnlineOptions, OnlineResult, judge
-from desdemona.plan import Plan, State, stopping_jerk, stopping_time  # noqa: F401 (stopping_time: the service's API)
+from desdemona.plan import Plan, State, stopping_jerk
 from desdemona.predictors import LIVE, predictor
 from desdemona.profiles import DesiredPath, ProfileError
 from desdemona.service import protocol
