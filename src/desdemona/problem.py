@@ -538,10 +538,10 @@ class Formulation:
             families.append(Family(name, expression, -np.ones(expression.numel()), np.ones(expression.numel())))
         return families
 
-    def position_bounds(self, h_sub: float | None = None) -> tuple[np.ndarray, np.ndarray]:
+    def position_bounds(self, h_sub=None) -> tuple[np.ndarray, np.ndarray]:
         """(n,) lower and upper position bounds, backed off by the largest bulge of a parabola between
         two sub-step points h_sub apart (default the longest), qdd_max h_sub^2 / 8 (unbounded joints
-        stay infinite)."""
+        stay infinite); (K, n) each for sub-steps h_sub of shape (K, 1)."""
         lim = self.model.limits
         backoff = lim.acceleration * (self.h_sub if h_sub is None else h_sub)**2 / 8.0
         return (lim.position_min + np.where(np.isfinite(lim.position_min), backoff, 0.0),

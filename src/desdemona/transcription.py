@@ -316,24 +316,22 @@ class CueingProblem(Formulation):
         # backs off by the largest bulge of the intervals beside it, so a plan's fine first steps may
         # come nearer a limit than its coarse tail (one back-off by the tail's bulge held an arm 0.15 %
         # under its rate limit on-line, and the heave on `full` 25 mm inside its travel).
-        h = self.node_steps()
-        positions = [self.position_bounds(hk / self.m) for hk in h]
-        self._node_positions = tuple(np.array(side) for side in zip(*positions))  # (N + 1, n) each
-        self._inner_positions = tuple(np.array(side) for side in zip(*(self.position_bounds(hk / self.m)
-                                                                          for hk in self.steps)))  # (N, n)
+        h = self.node_steps()[:, None]
+        self._node_positions = self.position_bounds(h / self.m)  # (N + 1, n) each
+        self._inner_positions = self.position_bounds(self.steps[:, None] / self.m)  # (N, n) each
+        qmin, qmax = self._node_positions
+        free = np.full((N + 1, self.nz), np.inf)
         if self.smooth:
-            velocity = lim.velocity - lim.jerk * h[:, None]**2 / 8.0  # (N + 1, n)
-            x_lo = [np.r_[q[0], -v, -lim.acceleration, np.full(self.nz, -np.inf)]
-                    for q, v in zip(positions, velocity)]
-            x_hi = [np.r_[q[1], v, lim.acceleration, np.full(self.nz, np.inf)]
-                    for q, v in zip(positions, velocity)]
+            velocity = lim.velocity - lim.jerk * h**2 / 8.0  # (N + 1, n)
+            x_lo = np.hstack([qmin, -velocity, np.broadcast_to(-lim.acceleration, qmin.shape), -free])
+            x_hi = np.hstack([qmax, velocity, np.broadcast_to(lim.acceleration, qmax.shape), free])
             control = lim.jerk
         else:
-            x_lo = [np.r_[q[0], -lim.velocity, np.full(self.nz, -np.inf)] for q in positions]
-            x_hi = [np.r_[q[1], lim.velocity, np.full(self.nz, np.inf)] for q in positions]
+            velocity = np.broadcast_to(lim.velocity, qmin.shape)
+            x_lo, x_hi = np.hstack([qmin, -velocity, -free]), np.hstack([qmax, velocity, free])
             control = lim.acceleration
-        lbx = np.concatenate([np.r_[x_lo[k], -control] for k in range(N)] + [x_lo[N]])
-        ubx = np.concatenate([np.r_[x_hi[k], control] for k in range(N)] + [x_hi[N]])
+        lbx = np.r_[np.hstack([x_lo[:N], np.tile(-control, (N, 1))]).ravel(), x_lo[N]]
+        ubx = np.r_[np.hstack([x_hi[:N], np.tile(control, (N, 1))]).ravel(), x_hi[N]]
         last = slice(N * (nx + self.nu), N * (nx + self.nu) + nx)
         moving = slice(n, self.n_motion)  # rates (and accelerations): zero at rest
         if o.initial in ("rest", "given"):
@@ -383,9 +381,9 @@ class CueingProblem(Formulation):
             for f in self.families:
                 lo, hi = f.lower, f.upper
                 if f.name in ("position", "stopping"):
-                    qmin, qmax = ((side[k] if f.name == "position" else node[k + 1])[bounded]
-                                  for side, node in zip(self._inner_positions, self._node_positions))
-                    lo, hi = np.tile(qmin, lo.size // len(bounded)), np.tile(qmax, hi.size // len(bounded))
+                    bounds, row = (self._inner_positions, k) if f.name == "position" else (self._node_positions, k + 1)
+                    count = lo.size // len(bounded)
+                    lo, hi = (np.tile(side[row][bounded], count) for side in bounds)
                 if widen is not None and f.name in ("position", "stopping"):
                     wide = k < widen[2][bounded]
                     count = lo.size // len(bounded)
