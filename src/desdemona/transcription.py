@@ -384,11 +384,10 @@ class CueingProblem(Formulation):
                     bounds, row = (self._inner_positions, k) if f.name == "position" else (self._node_positions, k + 1)
                     count = lo.size // len(bounded)
                     lo, hi = (np.tile(side[row][bounded], count) for side in bounds)
-                if widen is not None and f.name in ("position", "stopping"):
-                    wide = k < widen[2][bounded]
-                    count = lo.size // len(bounded)
-                    lo = np.minimum(lo, np.tile(np.where(wide, widen[0][bounded], lo[:len(bounded)]), count))
-                    hi = np.maximum(hi, np.tile(np.where(wide, widen[1][bounded], hi[:len(bounded)]), count))
+                    if widen is not None:
+                        wide = k < widen[2][bounded]
+                        lo = np.minimum(lo, np.tile(np.where(wide, widen[0][bounded], lo[:len(bounded)]), count))
+                        hi = np.maximum(hi, np.tile(np.where(wide, widen[1][bounded], hi[:len(bounded)]), count))
                 lower.append(lo)
                 upper.append(hi)
             rows_lo.append(np.concatenate(lower))
