@@ -9,7 +9,7 @@ from desdemona import profiles
 from desdemona.model import Model
 from desdemona.mpc import MPC, MPCOptions
 from desdemona.params import ParameterError, load_params
-from desdemona.plan import Plan, State, advance, ramp, stopping_reach
+from desdemona.plan import Plan, advance, ramp
 from desdemona.problem import ProblemOptions
 from desdemona.transcription import CueingProblem
 from desdemona.simulate import check
@@ -233,72 +233,3 @@ def test_braking_near_the_end_of_a_joints_travel_stops_within_it(params):
         heave.append(q[2])
     assert max(heave) <= lim.position_max[2] and abs(qd[2]) < 1e-6
     assert heave[-1] >= max(heave) - 1e-3  # at rest where it stopped, not turned back (0.16 mm)
-
-
-def _stop_extremes(qd, a, B, J, dt=2e-4):
-    """The lowest and highest displacement of the stop :func:`stopping_reach` describes, integrated
-    in fine steps: the acceleration to zero at J, then to -B along the motion, held, and back to zero
-    as the rate comes to rest."""
-    x, v, acc, lo, hi = 0.0, qd, a, 0.0, 0.0
-    while acc != 0.0:  # the ramp to zero
-        step = min(dt, abs(acc) / J)
-        jerk = -math.copysign(J, acc)
-        x, v, acc = x + v * step + acc * step**2 / 2 + jerk * step**3 / 6, v + acc * step + jerk * step**2 / 2, \
-            0.0 if step == abs(acc) / J else acc + jerk * step
-        lo, hi = min(lo, x), max(hi, x)
-    s, w = math.copysign(1.0, v), abs(v)
-    peak = min(B, math.sqrt(w * J))  # the braking the stop reaches
-    stop = w * w / (2 * peak) + w * peak / (2 * J) if w > 0 else 0.0  # the symmetric trapezoid (a triangle below B)
-    end = x + s * stop
-    return min(lo, end), max(hi, end)
-
-
-def test_the_stopping_reach_bounds_a_jerk_limited_stop_from_both_sides():
-    """Every stop from a grid of rates and accelerations (both signs, the turned-over ramps included)
-    lies within the two displacements of stopping_reach; where the acceleration is along the motion
-    and the stop reaches B, the end is the exact reach, and the second row is never more than 4 mm beyond the first on the
-    track's limits (it binds only where the ramp turns the motion over)."""
-    A, J = 5.0, 20.0
-    B = 0.5 * A
-    for qd in np.linspace(-3.2, 3.2, 33):
-        for a in np.linspace(-A, A, 21):
-            lo, hi = _stop_extremes(qd, a, B, J)
-            end, turn = (float(r) for r in stopping_reach(qd, a, B, A, J))
-            assert min(end, turn, 0.0) <= lo + 1e-6 and hi - 1e-6 <= max(end, turn, 0.0), (qd, a, lo, hi, end, turn)
-            if qd * a >= 0 and abs(qd) + a * a / (2 * J) >= B * B / J:  # the stop reaches B: exact
-                assert abs(end - (lo if qd + a < 0 else hi)) < 1e-4  # the smoothing of |x|
-    rates = np.linspace(0.01, 3.2, 60)
-    excess = [float(np.diff(stopping_reach(v, a, B, A, J))[0]) for v in rates for a in np.linspace(-A, A, 41)
-              if v + a * abs(a) / (2 * J) >= 0]
-    assert max(excess) < 4.1e-3
-
-
-def test_a_state_the_controller_accepts_can_brake_to_rest_within_the_travel(params):
-    """The invariant behind the fallback: a command sequence is accepted only if the state it leaves
-    is stoppable (MPC._safe_sequence), and from every such state the brake stops the joint within its
-    travel. Checked on a grid of heave states on ``full`` near the top of its travel, moving up, the
-    acceleration either way; the state of a one-QP plan that came late on the 747 take-off (heave at
-    0.94 m, 0.56 m/s up, accelerating) is refused."""
-    model = Model(params, "full")
-    mpc = MPC(model, MPCOptions(horizon=4.0))
-    h, lim = mpc.options.step, model.limits
-    zero = np.zeros(6)
-
-    def at(q, qd, a):
-        return (np.array([0, 0, q, 0, 0, 0.0]), np.array([0, 0, qd, 0, 0, 0.0]), np.array([0, 0, a, 0, 0, 0.0]))
-
-    assert not mpc._safe_sequence(State(*at(0.9398, 0.5622, 0.214)), [], [])
-    accepted = 0
-    for q0 in (0.5, 0.7, 0.85, 0.95):
-        for qd0 in (0.2, 0.6, 1.0, 1.6, 2.2):
-            for a0 in (-4.0, -1.0, 0.0, 2.0, 4.5):
-                if not mpc._safe_sequence(State(*at(q0, qd0, a0)), [], []):
-                    continue
-                accepted += 1
-                q, qd, a = at(q0, qd0, a0)
-                for _ in range(150):
-                    qdd, jerk = mpc.brake(q, qd, a)
-                    q, qd, a = q + qd * h + qdd * h**2 / 2 + jerk * h**3 / 6, qd + qdd * h + jerk * h**2 / 2, qdd + jerk * h
-                    assert lim.position_min[2] <= q[2] <= lim.position_max[2], (q0, qd0, a0, q[2])
-                assert abs(qd[2]) < 1e-3 and np.allclose(q[[0, 1, 3, 4, 5]], zero[:5])
-    assert 30 <= accepted < 100  # states refused too: the grid reaches past what can stop

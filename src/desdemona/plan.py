@@ -220,24 +220,3 @@ def stopping_time(qd, a, A, J) -> np.ndarray:
     b = np.where(qd != 0.0, np.sign(qd) * a, -np.abs(a))
     w = np.abs(qd) + b**2 / (2.0 * J)
     return b / J + np.where(w >= A**2 / J, w / A + A / J, 2.0 * np.sqrt(w / J))
-
-
-def stopping_reach(qd, a, B, A, J, eps: float = 1e-8):
-    """Per joint how far past its present position a jerk-limited stop from rate ``qd`` and
-    acceleration ``a`` can reach, as two displacements that bound it from both sides (floats, NumPy
-    arrays or CasADi expressions; B <= A the braking and the acceleration limit, J the jerk limit).
-
-    The stop they describe: the acceleration taken to zero at J, which leaves the rate
-    w = qd + a |a| / 2J after d0 = qd |a| / J + a^3 / 3J^2, then a stop from w braking at B, ramps at J
-    included: w |w| / 2B + w B / 2J (exact where the ramp reaches B, above the triangular stop where it
-    does not). The first displacement is where it ends, d0 + w |w| / 2B + w B / 2J. Where the ramp turns
-    the motion over (``a`` against ``qd``, a^2 / 2J > |qd|), the turning point lies beyond the
-    start by at most qd |qd| / 2A + qd A / 8J, the second (a scan over both signs, rates and
-    accelerations, in units of A^2 / J and A^3 / J^2, finds it within; tests/test_jerk.py keeps it).
-    Both within the position limits, the whole stop is. The rates' and accelerations' magnitudes are
-    smoothed, sqrt(x^2 + eps) >= |x|, so that a solver sees no kink."""
-    mag_qd, mag_a = (qd * qd + eps) ** 0.5, (a * a + eps) ** 0.5
-    w = qd + a * mag_a / (2.0 * J)
-    end = qd * mag_a / J + a * a * a / (3.0 * J * J) + w * (w * w + eps) ** 0.5 / (2.0 * B) + w * B / (2.0 * J)
-    turn = qd * mag_qd / (2.0 * A) + qd * A / (8.0 * J)
-    return end, turn
