@@ -9,7 +9,7 @@ from desdemona import profiles
 from desdemona.model import Model
 from desdemona.mpc import MPC, MPCOptions
 from desdemona.params import ParameterError, load_params
-from desdemona.plan import Plan, advance, ramp
+from desdemona.plan import Plan, State, advance, ramp, stopping_extent, stopping_reach
 from desdemona.problem import ProblemOptions
 from desdemona.transcription import CueingProblem
 from desdemona.simulate import check
@@ -233,3 +233,65 @@ def test_braking_near_the_end_of_a_joints_travel_stops_within_it(params):
         heave.append(q[2])
     assert max(heave) <= lim.position_max[2] and abs(qd[2]) < 1e-6
     assert heave[-1] >= max(heave) - 1e-3  # at rest where it stopped, not turned back (0.16 mm)
+
+
+def test_the_stopping_reach_bounds_the_brake_from_both_sides(params):
+    """From every state of a grid of rates and accelerations (both signs, motions the brake turns
+    over included), placed so that stopping_extent (at the limits, with the brake's lag) ends
+    exactly at the track's end, the brake of MPC stops the track within its travel: the bound the
+    controller's check relies on. Where the acceleration is along the motion the bound is tight
+    (within 8 cm of where the ordinary brake, which stops more gently, ends in the open)."""
+    model = Model(params, "full")
+    mpc = MPC(model, MPCOptions(horizon=4.0))
+    lim, h = model.limits, mpc.options.step
+    A, J, top = lim.acceleration[1], lim.jerk[1], lim.position_max[1]
+    for qd0 in np.linspace(-3.0, 3.0, 13):
+        for a0 in np.linspace(-A, A, 11):
+            low, high = stopping_extent(0.0, qd0, a0, A, J, h)
+            q, qd, a = np.zeros(6), np.zeros(6), np.zeros(6)
+            up = qd0 + a0 * abs(a0) / (2 * J) >= 0
+            q[1], qd[1], a[1] = top - max(high, 0.0) if up else -top - min(low, 0.0), qd0, a0
+            extremes = [q[1]]
+            for _ in range(300):
+                qdd, jerk = mpc.brake(q, qd, a)
+                q, qd, a = q + qd * h + qdd * h**2 / 2 + jerk * h**3 / 6, qd + qdd * h + jerk * h**2 / 2, qdd + jerk * h
+                extremes.append(q[1])
+            assert -top <= min(extremes) and max(extremes) <= top, (qd0, a0, min(extremes), max(extremes))
+            assert abs(qd[1]) < 1e-6
+    braking = 0.5 * A  # the plans' braking: the ordinary brake, away from the ends, goes a little further
+    q, qd, a = np.zeros(6), np.r_[0, 2.0, 0, 0, 0, 0], np.r_[0, 2.0, 0, 0, 0, 0]
+    for _ in range(300):
+        qdd, jerk = mpc.brake(q, qd, a)
+        q, qd, a = q + qd * h + qdd * h**2 / 2 + jerk * h**3 / 6, qd + qdd * h + jerk * h**2 / 2, qdd + jerk * h
+    assert 0.0 < q[1] - float(stopping_reach(2.0, 2.0, braking, J)) < 0.08
+
+
+def test_a_state_the_controller_accepts_can_brake_to_rest_within_the_travel(params):
+    """The invariant behind the fallback: a command sequence is accepted only if the state it leaves
+    is stoppable (MPC._safe_sequence), and from every such state the brake stops the joint within its
+    travel. Checked on a grid of heave states on ``full`` near the top of its travel, moving up, the
+    acceleration either way; the state of a one-QP plan that came late on the 747 take-off (heave at
+    0.94 m, 0.56 m/s up, accelerating) is refused."""
+    model = Model(params, "full")
+    mpc = MPC(model, MPCOptions(horizon=4.0))
+    h, lim = mpc.options.step, model.limits
+    zero = np.zeros(6)
+
+    def at(q, qd, a):
+        return (np.array([0, 0, q, 0, 0, 0.0]), np.array([0, 0, qd, 0, 0, 0.0]), np.array([0, 0, a, 0, 0, 0.0]))
+
+    assert not mpc._safe_sequence(State(*at(0.9398, 0.5622, 0.214)), [], [])
+    accepted = 0
+    for q0 in (0.5, 0.7, 0.85, 0.95):
+        for qd0 in (0.2, 0.6, 1.0, 1.6, 2.2):
+            for a0 in (-4.0, -1.0, 0.0, 2.0, 4.5):
+                if not mpc._safe_sequence(State(*at(q0, qd0, a0)), [], []):
+                    continue
+                accepted += 1
+                q, qd, a = at(q0, qd0, a0)
+                for _ in range(150):
+                    qdd, jerk = mpc.brake(q, qd, a)
+                    q, qd, a = q + qd * h + qdd * h**2 / 2 + jerk * h**3 / 6, qd + qdd * h + jerk * h**2 / 2, qdd + jerk * h
+                    assert lim.position_min[2] <= q[2] <= lim.position_max[2], (q0, qd0, a0, q[2])
+                assert abs(qd[2]) < 1e-3 and np.allclose(q[[0, 1, 3, 4, 5]], zero[:5])
+    assert 30 <= accepted < 100  # states refused too: the grid reaches past what can stop

@@ -33,7 +33,7 @@ import numpy as np
 from desdemona._casadi import call
 from desdemona.model import Model
 from desdemona.perception import VestibularModel
-from desdemona.plan import Plan, State, advance, stopping_jerk
+from desdemona.plan import Plan, State, advance, stopping_extent, stopping_jerk
 from desdemona.problem import ProblemOptions
 from desdemona.profiles import ALIGNED_WEIGHTS, DesiredPath, at_least_g, vertical_force
 from desdemona.simulate import TOLERANCE
@@ -98,8 +98,8 @@ class MPCOptions:
     where nothing is known, the desired path is taken as held at its last previewed value: an end cost
     (eq. 3.8's K) that prices where the plan leaves the machine by what holding the path would cost from
     there; a short horizon needs it where the machine takes longer than the horizon to get where a cue
-    wants it ("Reach beyond the horizon"). The thesis takes K = 0 for the dfs (7.3). A session reaches at least
-    :func:`default_horizon` (:func:`desdemona.session.online`).
+    wants it ("Reach beyond the horizon"). The thesis takes K = 0 for the dfs (7.3). A session reaches
+    at least :func:`default_horizon` (:func:`desdemona.session.online`).
     """
 
     horizon: float = 2.0
@@ -178,10 +178,9 @@ class MPCOptions:
         ``tail_step`` rounded to whole steps, from ``far`` seconds on twice that (the last interval
         shorter where the plan ends; "auto" as None here: the controller resolves it for its
         configuration, :class:`MPC`); uniform with a perception model whose channels are of higher
-        order than one (:attr:`~desdemona.perception.VestibularModel.diagonal`). The 4 s plans of
-        ``full`` have 46 intervals instead of 56 with ``tail_step`` to the end: the QP's work falls with
-        them, the felt force stays within 1 % on the built-in paths and moves either way on real ones
-        ("Coarse tail of the plan")."""
+        order than one (:attr:`~desdemona.perception.VestibularModel.diagonal`). The 4 s plans of ``full``
+        have 46 intervals instead of 56 with ``tail_step`` to the end: the QP's work falls, the felt force
+        stays within 1 % on the built-in paths and moves either way on real ones ("Coarse tail of the plan")."""
         total = int(round(self.length / self.step))
         block = 1 if self.tail_step is None else int(round(self.tail_step / self.step))
         if block <= 1 or (self.perception is not None and not self.perception.diagonal):
@@ -244,10 +243,9 @@ class _Solved(NamedTuple):
     cost: float | None
 
 
-#: The least a placed start must save of the first plan's cost (a mean square felt error, (m/s^2)^2)
-#: to be taken: 1e-4 is an RMS of 0.01 m/s^2, a seventeenth of the smallest force threshold. Less is
-#: a place the plan does not feel, such as the track's position under a held 1 g, where the start
-#: would land wherever the solver's last digits put it ("Placed start").
+#: The least a placed start must save of the first plan's cost (a mean square felt error, (m/s^2)^2) to be
+#: taken: 1e-4 is an RMS of 0.01 m/s^2, a seventeenth of the smallest force threshold. Less is a place the
+#: plan does not feel (the track under a held 1 g), set by the solver's last digits ("Placed start").
 PLACE_SAVING = 1e-4
 
 
@@ -280,8 +278,8 @@ class MPC:
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         self.limits = model.limits
         self._limit_use = model.step_limit_use(options.step)
-        self.z = self.z_d = None  # filter states of the felt and the desired path (with perception)
-        self._z_d_next = None  # the desired filter state one step on, from this step's preview
+        # filter states of the felt and the desired path (with perception); the desired one step on
+        self.z = self.z_d = self._z_d_next = None
         self._rti = RealTimeIteration(self.problem, options.qp_solver) if options.plan_method == "rti" else None
         self.smooth = self.problem.smooth
         self.plan: tuple[np.ndarray, np.ndarray] | None = None  # the last plan per step: accelerations, jerks
@@ -289,8 +287,6 @@ class MPC:
         # each step's time since its interval's start, (steps, 1)
         self._offsets = (np.concatenate([np.arange(c) for c in self._counts]) * options.step)[:, None]
         self.plan_age = 0
-
-    # ------------------------------------------------------------------------------------------
 
     def step(self, state, preview) -> Command:
         """The commands of the coming cycle from the state (q, qd[, qdd]) and the preview of S_d.
@@ -542,14 +538,19 @@ class MPC:
 
     def _safe_sequence(self, state: State, sequence, jerks) -> bool:
         """:meth:`_safe` for every step of a sequence of accelerations and jerks, from ``state`` on;
-        with jerk limits each step must also start at the acceleration the last one ended with."""
+        with jerk limits each step must start at the acceleration the last one ended with, and the state
+        it leaves must be one :meth:`brake` can stop within the travel (:func:`~desdemona.plan.stopping_extent`):
+        a one-QP plan keeps its stopping rows only to first order."""
+        lim = self.limits
         for qdd, jerk in zip(sequence, jerks):
-            if self.smooth and np.any(np.abs(qdd - state.a) > TOLERANCE * self.limits.acceleration):
-                return False
-            if not self._safe(state.q, state.qd, qdd, jerk):
+            jumps = self.smooth and np.any(np.abs(qdd - state.a) > TOLERANCE * lim.acceleration)
+            if jumps or not self._safe(state.q, state.qd, qdd, jerk):
                 return False
             state = state.advance(qdd, self.options.step, jerk)
-        return True
+        if not self.smooth:  # a constant deceleration: the plans' own stopping rows suffice
+            return True
+        low, high = stopping_extent(state.q, state.qd, state.a, lim.acceleration, lim.jerk, self.options.step)
+        return bool(np.all(high <= lim.position_max) and np.all(low >= lim.position_min))
 
     def _fallback(self, state: State, reason: str, start: float) -> Command:
         r = self.options.replan_steps
@@ -577,8 +578,7 @@ class MPC:
         with T the time the jerk limit needs to build up the braking deceleration and lose it again
         (so the rate comes to rest without overshoot), at most ``braking`` x the acceleration limit; the
         jerk is scaled down until safe. Where the travel ahead is shorter than that approach covers (qd T
-        and the ramp), the joint stops as quickly as its limits allow (:func:`~desdemona.plan.stopping_jerk`;
-        the 747 take-off on ``full`` with a 2.5 ms deadline ran its heave 6 mm past its end without it).
+        and the ramp), the joint stops as quickly as its limits allow (:func:`~desdemona.plan.stopping_jerk`).
         """
         lim, h, braking = self.limits, self.options.step, self.options.braking
         if not self.smooth:

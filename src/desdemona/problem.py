@@ -52,7 +52,7 @@ import casadi as ca
 import numpy as np
 
 from desdemona.perception import VestibularModel
-from desdemona.plan import advance
+from desdemona.plan import STOP_LAG, advance, stopping_reach
 from desdemona.model import Model
 from desdemona.profiles import DesiredPath
 
@@ -420,7 +420,7 @@ class Formulation:
             residuals.append(ca.sqrt(self.null_weight * h_u * data[2]) * null)
         r = ca.vertcat(*residuals)
         residual = ca.Function("stage_residual", [x, u, data], [r], ["x", "u", "d"], ["r"])
-        families = self._families(positions, efforts, powers, q_next, qd_next)
+        families = self._families(positions, efforts, powers, q_next, qd_next, a + jerk * h_u if self.smooth else None)
         g = ca.vertcat(*[f.expression for f in families])
         x_next = ca.vertcat(q_next, qd_next, *([a + jerk * h_u] if self.smooth else []), z_next)
         stage = ca.Function("stage", [x, u, data], [x_next, ca.sumsqr(r), g], ["x", "u", "d"], ["x_next", "L", "g"])
@@ -511,13 +511,15 @@ class Formulation:
         depth = ca.fmax(0, q[bounded] - ca.DM(high - width)) + ca.fmax(0, ca.DM(low + width) - q[bounded])
         return wall * (depth / ca.DM(width)) ** 2
 
-    def _families(self, positions, efforts, powers, q_next, qd_next) -> list[Family]:
+    def _families(self, positions, efforts, powers, q_next, qd_next, a_next=None) -> list[Family]:
         """The path constraints of one interval, family by family, each with its own bounds.
 
         position : bounded joints at the inner sub-step points, backed off by the bulge of a parabola
             between two points (qdd_max h^2 / 8), so they hold for all t (nodes are variable bounds);
         stopping : with ``stoppable``, where each bounded joint comes to rest braking at ``braking``
             times its acceleration limit from the interval's end (the on-line end condition, chapter 7);
+            with jerk limits how far up and down the stop reaches (:func:`stopping_reach`: the
+            acceleration at the end and the ramps count), plus :data:`STOP_LAG`;
         effort, power : |tau| and |tau qd| over their limits (less ``margin``) at every sub-step point.
         Velocity and acceleration limits are bounds on the variables (linear and constant in t).
         """
@@ -531,8 +533,16 @@ class Formulation:
                                    np.tile(qmax, len(inner))))
         if o.stoppable and bounded:
             q_end, qd_end = q_next[bounded], qd_next[bounded]
-            brake = ca.DM(2.0 * o.braking * lim.acceleration[bounded])
-            families.append(Family("stopping", q_end + qd_end * ca.sqrt(qd_end**2 + 1e-8) / brake, qmin, qmax))
+            if self.smooth:
+                A, J = ca.DM(lim.acceleration[bounded]), ca.DM(lim.jerk[bounded])
+                a_end, B, late = a_next[bounded], o.braking * A, STOP_LAG * A * o.h_u**2
+                up = q_end + stopping_reach(qd_end, a_end, B, J) + late
+                down = q_end - stopping_reach(-qd_end, -a_end, B, J) - late
+                inf = np.full(len(bounded), np.inf)
+                families.append(Family("stopping", ca.vertcat(up, down), np.r_[-inf, qmin], np.r_[qmax, inf]))
+            else:
+                brake = ca.DM(2.0 * o.braking * lim.acceleration[bounded])
+                families.append(Family("stopping", q_end + qd_end * ca.sqrt(qd_end**2 + 1e-8) / brake, qmin, qmax))
         for name, rows in (("effort", efforts), ("power", powers)):
             expression = ca.vertcat(*rows)
             families.append(Family(name, expression, -np.ones(expression.numel()), np.ones(expression.numel())))

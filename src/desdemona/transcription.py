@@ -388,6 +388,8 @@ class CueingProblem(Formulation):
                         wide = k < widen[2][bounded]
                         lo = np.minimum(lo, np.tile(np.where(wide, widen[0][bounded], lo[:len(bounded)]), count))
                         hi = np.maximum(hi, np.tile(np.where(wide, widen[1][bounded], hi[:len(bounded)]), count))
+                    if f.name == "stopping" and count == 2:  # one side each: how far up, how far down
+                        lo[:len(bounded)], hi[len(bounded):] = -np.inf, np.inf
                 lower.append(lo)
                 upper.append(hi)
             rows_lo.append(np.concatenate(lower))
