@@ -222,9 +222,10 @@ def stopping_time(qd, a, A, J) -> np.ndarray:
     return b / J + np.where(w >= A**2 / J, w / A + A / J, 2.0 * np.sqrt(w / J))
 
 
-#: The travel a stop is given beyond :func:`stopping_reach`, as a share of A h^2 (A the acceleration
-#: limit, h the control step): the brake acts in whole steps, a step behind the ideal ramp; 1/2 (1 mm
-#: on the track at 20 ms) covers the most a scan of rates and accelerations found it late (0.65 mm).
+#: The travel a stop is given beyond :func:`stopping_extent`'s reach, at most, as a share of A h^2 (A
+#: the acceleration limit, h the control step): the brake acts in whole steps, a step behind the ideal
+#: ramp; 1/2 (1 mm on the track at 20 ms) covers the most a scan of rates and accelerations found it
+#: late (0.65 mm). Never more than the reach itself: a joint at rest at its end stays stoppable.
 STOP_LAG = 0.5
 
 
@@ -243,11 +244,11 @@ def stopping_reach(qd, a, B, J, eps: float = 1e-8):
 
     a polynomial in (qd, a): smooth where the acceleration changes sign, where a stop that first takes
     the acceleration to zero has a kink (a solver stalls on it). With W below zero the motion never
-    turns upwards and W is taken as zero (smoothly, W+ = (W + sqrt(W^2 + eps)) / 2): the reach is then
+    turns upwards and W is taken as zero (smoothly, W+ = (W + sqrt(W^2 + eps) - sqrt(eps)) / 2): the reach is then
     at most the turning point the ramp left behind, |a|^3 / 6J^2. ``tests/test_jerk.py`` checks it
     against the brake of :class:`~desdemona.mpc.MPC`."""
     w = qd + a * a / (2.0 * J)
-    w = 0.5 * (w + (w * w + eps) ** 0.5)
+    w = 0.5 * (w + (w * w + eps) ** 0.5 - eps**0.5)  # zero at rest: a joint at rest at its end stays there
     return w * a / J - a * a * a / (6.0 * J * J) + w * w / (2.0 * B) + w * B / (2.0 * J)
 
 
@@ -256,11 +257,16 @@ def stopping_extent(q, qd, a, A, J, h):
     A, jerk J) can reach, with :data:`STOP_LAG` for a brake that acts every ``h`` seconds: the check
     behind the controller's fallback (:meth:`desdemona.mpc.MPC.brake` stops as quickly as that near
     an end). Each side braking at the most its ramp reaches, min(A, sqrt(W J)) (the triangle where it
-    does not reach A), so that no stop is judged longer than it is."""
+    does not reach A), so that no stop is judged longer than it is; a side the motion does not turn
+    towards is not reached (where :func:`stopping_reach` counts the turning point the ramp left
+    behind)."""
     late = STOP_LAG * A * h**2
 
     def reach(v, acc):
         w = np.maximum(v + acc * acc / (2.0 * J), 0.0)
-        return stopping_reach(v, acc, np.clip(np.sqrt(w * J), 1e-9, A), J, eps=0.0)
+        r = stopping_reach(v, acc, np.clip(np.sqrt(w * J), 1e-9, A), J, eps=0.0)
+        # only a motion that goes that way reaches further (a ramp away from an end leaves it behind)
+        r = np.where(np.where(acc >= 0.0, w > 0.0, v > 0.0), r, 0.0)
+        return r + np.clip(r, 0.0, late)
 
-    return q - reach(-qd, -a) - late, q + reach(qd, a) + late
+    return q - reach(-qd, -a), q + reach(qd, a)

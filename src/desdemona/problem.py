@@ -52,7 +52,7 @@ import casadi as ca
 import numpy as np
 
 from desdemona.perception import VestibularModel
-from desdemona.plan import STOP_LAG, advance, stopping_reach
+from desdemona.plan import advance, stopping_reach
 from desdemona.model import Model
 from desdemona.profiles import DesiredPath
 
@@ -519,7 +519,7 @@ class Formulation:
         stopping : with ``stoppable``, where each bounded joint comes to rest braking at ``braking``
             times its acceleration limit from the interval's end (the on-line end condition, chapter 7);
             with jerk limits how far up and down the stop reaches (:func:`stopping_reach`: the
-            acceleration at the end and the ramps count), plus :data:`STOP_LAG`;
+            acceleration at the end and the ramps count);
         effort, power : |tau| and |tau qd| over their limits (less ``margin``) at every sub-step point.
         Velocity and acceleration limits are bounds on the variables (linear and constant in t).
         """
@@ -535,9 +535,9 @@ class Formulation:
             q_end, qd_end = q_next[bounded], qd_next[bounded]
             if self.smooth:
                 A, J = ca.DM(lim.acceleration[bounded]), ca.DM(lim.jerk[bounded])
-                a_end, B, late = a_next[bounded], o.braking * A, STOP_LAG * A * o.h_u**2
-                up = q_end + stopping_reach(qd_end, a_end, B, J) + late
-                down = q_end - stopping_reach(-qd_end, -a_end, B, J) - late
+                a_end, B = a_next[bounded], o.braking * A
+                up = q_end + stopping_reach(qd_end, a_end, B, J)
+                down = q_end - stopping_reach(-qd_end, -a_end, B, J)
                 inf = np.full(len(bounded), np.inf)
                 families.append(Family("stopping", ca.vertcat(up, down), np.r_[-inf, qmin], np.r_[qmax, inf]))
             else:
