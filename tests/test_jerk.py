@@ -295,3 +295,27 @@ def test_a_state_the_controller_accepts_can_brake_to_rest_within_the_travel(para
                     assert lim.position_min[2] <= q[2] <= lim.position_max[2], (q0, qd0, a0, q[2])
                 assert abs(qd[2]) < 1e-3 and np.allclose(q[[0, 1, 3, 4, 5]], zero[:5])
     assert 30 <= accepted < 100  # states refused too: the grid reaches past what can stop
+
+
+def test_a_state_the_controller_accepts_can_brake_within_the_velocity_limits(params):
+    """The rate rises by a |a| / 2J while the brake's ramp takes the acceleration to zero: a state
+    whose rate is near its limit and still rising is refused (MPC._safe_sequence), and from every
+    state accepted on a grid near the track's velocity limit the brake keeps it (the stress run of
+    the 747 take-off with 2.5 ms deadlines was refused once for the track at 1.015x its velocity)."""
+    model = Model(params, "full")
+    mpc = MPC(model, MPCOptions(horizon=4.0))
+    h, lim = mpc.options.step, model.limits
+    vmax, J = lim.velocity[1], lim.jerk[1]
+    accepted = 0
+    for qd0 in vmax - np.array([0.01, 0.05, 0.2]):
+        for a0 in (-2.0, 0.0, 0.5, 1.0, 2.0, 4.0):
+            q, qd, a = np.zeros(6), np.r_[0, qd0, 0, 0, 0, 0], np.r_[0, a0, 0, 0, 0, 0]
+            if not mpc._safe_sequence(State(q, qd, a), [], []):
+                assert qd0 + a0 * abs(a0) / (2 * J) > vmax
+                continue
+            accepted += 1
+            for _ in range(100):
+                qdd, jerk = mpc.brake(q, qd, a)
+                q, qd, a = q + qd * h + qdd * h**2 / 2 + jerk * h**3 / 6, qd + qdd * h + jerk * h**2 / 2, qdd + jerk * h
+                assert abs(qd[1]) <= vmax * (1 + 1e-6), (qd0, a0, qd[1])
+    assert 6 <= accepted < 18

@@ -356,8 +356,7 @@ class MPC:
         first = self._solve(q, qd, a, data, method="nlp")
         if not first.success:
             return q, qd
-        # the seed of the placed solve; a plan that takes over at the first step is one period
-        # younger than a plan of the last cycle
+        # the seed of the placed solve: a plan taking over at the first step is one period younger than the last cycle's
         self.plan, self.plan_age = self._per_step(*first.plan), -self.options.replan_steps
         placed = self._solve(q, qd, a, data, method="nlp", place=True)
         if placed.success and first.cost - placed.cost > PLACE_SAVING:
@@ -537,10 +536,10 @@ class MPC:
         return float(np.max(call(self._limit_use, q, qd, qdd, jerk))) <= 1.0 + TOLERANCE
 
     def _safe_sequence(self, state: State, sequence, jerks) -> bool:
-        """:meth:`_safe` for every step of a sequence of accelerations and jerks, from ``state`` on;
-        with jerk limits each step must start at the acceleration the last one ended with, and the state
-        it leaves must be one :meth:`brake` can stop within the travel (:func:`~desdemona.plan.stopping_extent`):
-        a one-QP plan keeps its stopping rows only to first order."""
+        """:meth:`_safe` for every step of a sequence of accelerations and jerks, from ``state`` on; with
+        jerk limits each step must start at the acceleration the last one ended with, and :meth:`brake`
+        must be able to stop the state it leaves within the travel (:func:`~desdemona.plan.stopping_extent`)
+        and the velocity limits (qd + a |a| / 2J): a one-QP plan keeps its own such rows to first order."""
         lim = self.limits
         for qdd, jerk in zip(sequence, jerks):
             jumps = self.smooth and np.any(np.abs(qdd - state.a) > TOLERANCE * lim.acceleration)
@@ -550,7 +549,8 @@ class MPC:
         if not self.smooth:  # a constant deceleration: the plans' own stopping rows suffice
             return True
         low, high = stopping_extent(state.q, state.qd, state.a, lim.acceleration, lim.jerk, self.options.step)
-        return bool(np.all(high <= lim.position_max) and np.all(low >= lim.position_min))
+        settles = np.abs(state.qd + state.a * np.abs(state.a) / (2.0 * lim.jerk)) <= lim.velocity * (1.0 + TOLERANCE)
+        return bool(np.all((high <= lim.position_max) & (low >= lim.position_min) & settles))
 
     def _fallback(self, state: State, reason: str, start: float) -> Command:
         r = self.options.replan_steps

@@ -520,6 +520,9 @@ class Formulation:
             times its acceleration limit from the interval's end (the on-line end condition, chapter 7);
             with jerk limits how far up and down the stop reaches (:func:`stopping_reach`: the
             acceleration at the end and the ramps count);
+        rate : with ``stoppable`` and jerk limits, the rate each joint ends at when its acceleration
+            is taken to zero at the jerk limit, qd + a |a| / 2J, within the velocity limits: the
+            brake can then keep them (its ramp raises the rate that much first);
         effort, power : |tau| and |tau qd| over their limits (less ``margin``) at every sub-step point.
         Velocity and acceleration limits are bounds on the variables (linear and constant in t).
         """
@@ -543,6 +546,10 @@ class Formulation:
             else:
                 brake = ca.DM(2.0 * o.braking * lim.acceleration[bounded])
                 families.append(Family("stopping", q_end + qd_end * ca.sqrt(qd_end**2 + 1e-8) / brake, qmin, qmax))
+        if o.stoppable and self.smooth:  # the rate a ramp of the acceleration to zero ends at
+            J = ca.DM(lim.jerk)
+            families.append(Family("rate", qd_next + a_next * ca.sqrt(a_next**2 + 1e-8) / (2.0 * J),
+                                   -lim.velocity, lim.velocity))
         for name, rows in (("effort", efforts), ("power", powers)):
             expression = ca.vertcat(*rows)
             families.append(Family(name, expression, -np.ones(expression.numel()), np.ones(expression.numel())))

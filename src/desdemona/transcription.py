@@ -219,7 +219,7 @@ class CueingProblem(Formulation):
                                         (("sigma", 1), ("l_gap", nx), ("l_init", ni), ("l_path", g.numel())))
         # the position families lead each stage's g, the torque and power limits follow
         curved = g.numel() if self.limit_curvature else sum(
-            f.expression.numel() for f in self.families if f.name in ("position", "stopping"))
+            f.expression.numel() for f in self.families if f.name in ("position", "stopping", "rate"))
         gaps, limits = -ca.dot(l_gap, x_next), ca.dot(l_path[:curved], g[:curved])
         J = ca.jacobian(ca.vertcat(-x_next, g), xu)
         J0 = ca.jacobian(ca.vertcat(-x_next, init, g), xu)
