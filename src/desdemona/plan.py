@@ -244,11 +244,11 @@ def stopping_reach(qd, a, B, J, eps: float = 1e-8):
 
     a polynomial in (qd, a): smooth where the acceleration changes sign, where a stop that first takes
     the acceleration to zero has a kink (a solver stalls on it). With W below zero the motion never
-    turns upwards and W is taken as zero (smoothly, W+ = (W + sqrt(W^2 + eps) - sqrt(eps)) / 2): the reach is then
-    at most the turning point the ramp left behind, |a|^3 / 6J^2. ``tests/test_jerk.py`` checks it
-    against the brake of :class:`~desdemona.mpc.MPC`."""
+    turns upwards and W is taken as zero, smoothly: W+ = (W + sqrt(W^2 + eps) - sqrt(eps)) / 2, zero
+    at rest; the reach is then at most the turning point the ramp left behind, |a|^3 / 6J^2.
+    ``tests/test_jerk.py`` checks it against the brake of :class:`~desdemona.mpc.MPC`."""
     w = qd + a * a / (2.0 * J)
-    w = 0.5 * (w + (w * w + eps) ** 0.5 - eps**0.5)  # zero at rest: a joint at rest at its end stays there
+    w = 0.5 * (w + (w * w + eps) ** 0.5 - eps**0.5)
     return w * a / J - a * a * a / (6.0 * J * J) + w * w / (2.0 * B) + w * B / (2.0 * J)
 
 
