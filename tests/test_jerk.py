@@ -235,6 +235,15 @@ def test_braking_near_the_end_of_a_joints_travel_stops_within_it(params):
     assert heave[-1] >= max(heave) - 1e-3  # at rest where it stopped, not turned back (0.16 mm)
 
 
+def _braked(mpc, q, qd, a, steps):
+    """The states of ``steps`` cycles of the controller's brake from (q, qd, a)."""
+    state = State(q, qd, a)
+    for _ in range(steps):
+        qdd, jerk = mpc.brake(state.q, state.qd, state.a)
+        state = state.advance(qdd, mpc.options.step, jerk)
+        yield state
+
+
 def test_the_stopping_reach_bounds_the_brake_from_both_sides(params):
     """From every state of a grid of rates and accelerations (both signs, motions the brake turns
     over included), placed so that stopping_extent (at the limits, with the brake's lag) ends
@@ -251,19 +260,13 @@ def test_the_stopping_reach_bounds_the_brake_from_both_sides(params):
             q, qd, a = np.zeros(6), np.zeros(6), np.zeros(6)
             up = qd0 + a0 * abs(a0) / (2 * J) >= 0
             q[1], qd[1], a[1] = top - max(high, 0.0) if up else -top - min(low, 0.0), qd0, a0
-            extremes = [q[1]]
-            for _ in range(300):
-                qdd, jerk = mpc.brake(q, qd, a)
-                q, qd, a = q + qd * h + qdd * h**2 / 2 + jerk * h**3 / 6, qd + qdd * h + jerk * h**2 / 2, qdd + jerk * h
-                extremes.append(q[1])
+            states = list(_braked(mpc, q, qd, a, 300))
+            extremes = [q[1]] + [s.q[1] for s in states]
             assert -top <= min(extremes) and max(extremes) <= top, (qd0, a0, min(extremes), max(extremes))
-            assert abs(qd[1]) < 1e-6
+            assert abs(states[-1].qd[1]) < 1e-6
     braking = 0.5 * A  # the plans' braking: the ordinary brake, away from the ends, goes a little further
-    q, qd, a = np.zeros(6), np.r_[0, 2.0, 0, 0, 0, 0], np.r_[0, 2.0, 0, 0, 0, 0]
-    for _ in range(300):
-        qdd, jerk = mpc.brake(q, qd, a)
-        q, qd, a = q + qd * h + qdd * h**2 / 2 + jerk * h**3 / 6, qd + qdd * h + jerk * h**2 / 2, qdd + jerk * h
-    assert 0.0 < q[1] - float(stopping_reach(2.0, 2.0, braking, J)) < 0.08
+    *_, rest = _braked(mpc, np.zeros(6), np.r_[0, 2.0, 0, 0, 0, 0], np.r_[0, 2.0, 0, 0, 0, 0], 300)
+    assert 0.0 < rest.q[1] - float(stopping_reach(2.0, 2.0, braking, J)) < 0.08
 
 
 def test_a_state_the_controller_accepts_can_brake_to_rest_within_the_travel(params):
@@ -274,7 +277,7 @@ def test_a_state_the_controller_accepts_can_brake_to_rest_within_the_travel(para
     0.94 m, 0.56 m/s up, accelerating) is refused."""
     model = Model(params, "full")
     mpc = MPC(model, MPCOptions(horizon=4.0))
-    h, lim = mpc.options.step, model.limits
+    lim = model.limits
     zero = np.zeros(6)
 
     def at(q, qd, a):
@@ -288,12 +291,9 @@ def test_a_state_the_controller_accepts_can_brake_to_rest_within_the_travel(para
                 if not mpc._safe_sequence(State(*at(q0, qd0, a0)), [], []):
                     continue
                 accepted += 1
-                q, qd, a = at(q0, qd0, a0)
-                for _ in range(150):
-                    qdd, jerk = mpc.brake(q, qd, a)
-                    q, qd, a = q + qd * h + qdd * h**2 / 2 + jerk * h**3 / 6, qd + qdd * h + jerk * h**2 / 2, qdd + jerk * h
-                    assert lim.position_min[2] <= q[2] <= lim.position_max[2], (q0, qd0, a0, q[2])
-                assert abs(qd[2]) < 1e-3 and np.allclose(q[[0, 1, 3, 4, 5]], zero[:5])
+                for s in _braked(mpc, *at(q0, qd0, a0), 150):
+                    assert lim.position_min[2] <= s.q[2] <= lim.position_max[2], (q0, qd0, a0, s.q[2])
+                assert abs(s.qd[2]) < 1e-3 and np.allclose(s.q[[0, 1, 3, 4, 5]], zero[:5])
     assert 30 <= accepted < 100  # states refused too: the grid reaches past what can stop
 
 
@@ -304,7 +304,7 @@ def test_a_state_the_controller_accepts_can_brake_within_the_velocity_limits(par
     the 747 take-off with 2.5 ms deadlines was refused once for the track at 1.015x its velocity)."""
     model = Model(params, "full")
     mpc = MPC(model, MPCOptions(horizon=4.0))
-    h, lim = mpc.options.step, model.limits
+    lim = model.limits
     vmax, J = lim.velocity[1], lim.jerk[1]
     accepted = 0
     for qd0 in vmax - np.array([0.01, 0.05, 0.2]):
@@ -314,8 +314,6 @@ def test_a_state_the_controller_accepts_can_brake_within_the_velocity_limits(par
                 assert qd0 + a0 * abs(a0) / (2 * J) > vmax
                 continue
             accepted += 1
-            for _ in range(100):
-                qdd, jerk = mpc.brake(q, qd, a)
-                q, qd, a = q + qd * h + qdd * h**2 / 2 + jerk * h**3 / 6, qd + qdd * h + jerk * h**2 / 2, qdd + jerk * h
-                assert abs(qd[1]) <= vmax * (1 + 1e-6), (qd0, a0, qd[1])
+            for s in _braked(mpc, q, qd, a, 100):
+                assert abs(s.qd[1]) <= vmax * (1 + 1e-6), (qd0, a0, s.qd[1])
     assert 6 <= accepted < 18

@@ -33,7 +33,7 @@ import numpy as np
 from desdemona._casadi import call
 from desdemona.model import Model
 from desdemona.perception import VestibularModel
-from desdemona.plan import Plan, State, advance, stopping_extent, stopping_jerk
+from desdemona.plan import Plan, State, advance, settled_rate, stopping_extent, stopping_jerk
 from desdemona.problem import ProblemOptions
 from desdemona.profiles import ALIGNED_WEIGHTS, DesiredPath, at_least_g, vertical_force
 from desdemona.simulate import TOLERANCE
@@ -485,7 +485,7 @@ class MPC:
         prob, k = self.problem, self.model.config.free.index(0)
         jerk = self.limits.jerk[k] if self.smooth else np.inf
         settle = abs(a[k]) / jerk
-        rate = qd[k] + a[k] * abs(a[k]) / (2.0 * jerk)
+        rate = settled_rate(qd[k], a[k], jerk)
         first = max(1, int(np.searchsorted(prob.t_nodes - prob.t_nodes[0], settle - 1e-12)))
         prob.keep_rate_sign(bounds, k, first, 1.0 if rate >= 0.0 else -1.0)
 
@@ -549,7 +549,7 @@ class MPC:
         if not self.smooth:  # a constant deceleration: the plans' own stopping rows suffice
             return True
         low, high = stopping_extent(state.q, state.qd, state.a, lim.acceleration, lim.jerk, self.options.step)
-        settles = np.abs(state.qd + state.a * np.abs(state.a) / (2.0 * lim.jerk)) <= lim.velocity * (1.0 + TOLERANCE)
+        settles = np.abs(settled_rate(state.qd, state.a, lim.jerk)) <= lim.velocity * (1.0 + TOLERANCE)
         return bool(np.all((high <= lim.position_max) & (low >= lim.position_min) & settles))
 
     def _fallback(self, state: State, reason: str, start: float) -> Command:

@@ -222,6 +222,13 @@ def stopping_time(qd, a, A, J) -> np.ndarray:
     return b / J + np.where(w >= A**2 / J, w / A + A / J, 2.0 * np.sqrt(w / J))
 
 
+def settled_rate(qd, a, J, eps: float = 0.0):
+    """The rate a joint has once its acceleration ``a`` is taken to zero at the jerk limit ``J``,
+    qd + a |a| / 2J (floats, NumPy arrays or CasADi expressions; ``eps`` > 0 smooths |a| for a
+    solver: sqrt(a^2 + eps))."""
+    return qd + a * (a * a + eps) ** 0.5 / (2.0 * J)
+
+
 #: The travel a stop is given beyond :func:`stopping_extent`'s reach, at most, as a share of A h^2 (A
 #: the acceleration limit, h the control step): the brake acts in whole steps, a step behind the ideal
 #: ramp; 1/2 (1 mm on the track at 20 ms) covers the most a scan of rates and accelerations found it

@@ -52,7 +52,7 @@ import casadi as ca
 import numpy as np
 
 from desdemona.perception import VestibularModel
-from desdemona.plan import advance, stopping_reach
+from desdemona.plan import advance, settled_rate, stopping_reach
 from desdemona.model import Model
 from desdemona.profiles import DesiredPath
 
@@ -420,9 +420,10 @@ class Formulation:
             residuals.append(ca.sqrt(self.null_weight * h_u * data[2]) * null)
         r = ca.vertcat(*residuals)
         residual = ca.Function("stage_residual", [x, u, data], [r], ["x", "u", "d"], ["r"])
-        families = self._families(positions, efforts, powers, q_next, qd_next, a + jerk * h_u if self.smooth else None)
+        a_next = a + jerk * h_u if self.smooth else None
+        families = self._families(positions, efforts, powers, q_next, qd_next, a_next)
         g = ca.vertcat(*[f.expression for f in families])
-        x_next = ca.vertcat(q_next, qd_next, *([a + jerk * h_u] if self.smooth else []), z_next)
+        x_next = ca.vertcat(q_next, qd_next, *([a_next] if self.smooth else []), z_next)
         stage = ca.Function("stage", [x, u, data], [x_next, ca.sumsqr(r), g], ["x", "u", "d"], ["x_next", "L", "g"])
         return stage, residual, families
 
@@ -547,8 +548,7 @@ class Formulation:
                 brake = ca.DM(2.0 * o.braking * lim.acceleration[bounded])
                 families.append(Family("stopping", q_end + qd_end * ca.sqrt(qd_end**2 + 1e-8) / brake, qmin, qmax))
         if o.stoppable and self.smooth:  # the rate a ramp of the acceleration to zero ends at
-            J = ca.DM(lim.jerk)
-            families.append(Family("rate", qd_next + a_next * ca.sqrt(a_next**2 + 1e-8) / (2.0 * J),
+            families.append(Family("rate", settled_rate(qd_next, a_next, ca.DM(lim.jerk), eps=1e-8),
                                    -lim.velocity, lim.velocity))
         for name, rows in (("effort", efforts), ("power", powers)):
             expression = ca.vertcat(*rows)

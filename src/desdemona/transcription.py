@@ -388,8 +388,8 @@ class CueingProblem(Formulation):
                         wide = k < widen[2][bounded]
                         lo = np.minimum(lo, np.tile(np.where(wide, widen[0][bounded], lo[:len(bounded)]), count))
                         hi = np.maximum(hi, np.tile(np.where(wide, widen[1][bounded], hi[:len(bounded)]), count))
-                    if f.name == "stopping" and count == 2:  # one side each: how far up, how far down
-                        lo[:len(bounded)], hi[len(bounded):] = -np.inf, np.inf
+                    # a side the family leaves open stays open (the stopping rows: how far up, how far down)
+                    lo, hi = np.where(np.isneginf(f.lower), -np.inf, lo), np.where(np.isposinf(f.upper), np.inf, hi)
                 lower.append(lo)
                 upper.append(hi)
             rows_lo.append(np.concatenate(lower))
