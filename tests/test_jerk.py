@@ -317,3 +317,24 @@ def test_a_state_the_controller_accepts_can_brake_within_the_velocity_limits(par
             for s in _braked(mpc, q, qd, a, 100):
                 assert abs(s.qd[1]) <= vmax * (1 + 1e-6), (qd0, a0, s.qd[1])
     assert 6 <= accepted < 18
+
+
+@pytest.mark.parametrize("method", ["rti", "nlp"])
+def test_a_start_just_beyond_the_stopping_rows_is_planned_from(params, method):
+    """A one-QP plan keeps its stopping rows to first order and can leave a state whose own stop (at
+    the plans' braking) lies a fraction of a millimetre beyond them; along the strongest ramp a stop's
+    reach stays where it is, so no plan kept the rows from there and the controller fell back (the
+    catapult on `full`, 6 cycles running). The rows now reach out to such a start until its
+    acceleration can have passed the braking: the track at 2.6 m/s, accelerating at 4.5 m/s^2 towards
+    its end, 0.2 mm and 1 mm beyond, is planned from and the plan passes the check."""
+    model = Model(params, "full")
+    lim = model.limits
+    t = np.arange(0.0, 2.05, 0.05)
+    values = np.tile([0.0, 0.0, 0.0, 0.0, 0.0, 9.81], (len(t), 1))
+    for excess in (2e-4, 1e-3):
+        mpc = MPC(model, MPCOptions(horizon=2.0, step=0.05, method=method, deadline=float("inf")))
+        bound = mpc.problem._node_positions[1][1][1]  # the first stopping row's upper bound on the track
+        q, qd, a = np.zeros(6), np.r_[0, 2.6, 0, 0, 0, 0], np.r_[0, 4.5, 0, 0, 0, 0]
+        q[1] = bound + excess - stopping_reach(qd, a, mpc.options.braking * lim.acceleration, lim.jerk)[1]
+        command = mpc.step((q, qd, a), (t, values))
+        assert (command.source, command.reason) == ("mpc", ""), excess

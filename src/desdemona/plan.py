@@ -236,7 +236,11 @@ def settled_rate(qd, a, J, eps: float = 0.0):
 STOP_LAG = 0.5
 
 
-def stopping_reach(qd, a, B, J, eps: float = 1e-8):
+#: The smoothing of the plans' stopping reach and rate (|x| as sqrt(x^2 + eps), [m^2/s^2]).
+STOP_EPS = 1e-8
+
+
+def stopping_reach(qd, a, B, J, eps: float = STOP_EPS):
     """Per joint how far up (towards its upper end) a jerk-limited stop from rate ``qd`` and
     acceleration ``a`` reaches, braking at ``B`` (floats, NumPy arrays or CasADi expressions); how far
     down is ``-stopping_reach(-qd, -a, B, J)``.

@@ -52,7 +52,7 @@ import casadi as ca
 import numpy as np
 
 from desdemona.perception import VestibularModel
-from desdemona.plan import advance, settled_rate, stopping_reach
+from desdemona.plan import STOP_EPS, advance, settled_rate, stopping_reach
 from desdemona.model import Model
 from desdemona.profiles import DesiredPath
 
@@ -548,7 +548,7 @@ class Formulation:
                 brake = ca.DM(2.0 * o.braking * lim.acceleration[bounded])
                 families.append(Family("stopping", q_end + qd_end * ca.sqrt(qd_end**2 + 1e-8) / brake, qmin, qmax))
         if o.stoppable and self.smooth:  # the rate a ramp of the acceleration to zero ends at
-            families.append(Family("rate", settled_rate(qd_next, a_next, ca.DM(lim.jerk), eps=1e-8),
+            families.append(Family("rate", settled_rate(qd_next, a_next, ca.DM(lim.jerk), eps=STOP_EPS),
                                    -lim.velocity, lim.velocity))
         for name, rows in (("effort", efforts), ("power", powers)):
             expression = ca.vertcat(*rows)
@@ -563,3 +563,26 @@ class Formulation:
         backoff = lim.acceleration * (self.h_sub if h_sub is None else h_sub)**2 / 8.0
         return (lim.position_min + np.where(np.isfinite(lim.position_min), backoff, 0.0),
                 lim.position_max - np.where(np.isfinite(lim.position_max), backoff, 0.0))
+
+    def stop_overreach(self, q0, qd0, a0, qmin, qmax) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+        """Where a start's own stop (:func:`stopping_reach` at ``braking``) lies beyond the stopping
+        rows' bounds ``qmin``, ``qmax`` (n,) but within the travel: (lower, upper, ramp), the bounds
+        reaching out to it and the time [s] until the acceleration can have passed the braking, |a0 ±
+        B| / J, after which harder braking pulls the stop back in; None where no start lies so (or
+        there are no such rows). A one-QP plan keeps the rows to first order and can leave a state a
+        fraction of a millimetre beyond them, and along the strongest ramp a stop's reach stays where
+        it is: no plan from that state keeps the rows at once (the catapult on ``full`` fell back 7
+        cycles running). Along the ramp the smoothed reach (W+ of :func:`stopping_reach`) rises by
+        sqrt(eps) / 2 a second: the bounds reach that much further, over the ramp and one second more."""
+        lim, o = self.model.limits, self.options
+        if not (o.stoppable and self.smooth and lim.bounded):
+            return None
+        B = o.braking * lim.acceleration
+        up, down = q0 + stopping_reach(qd0, a0, B, lim.jerk), q0 - stopping_reach(-qd0, -a0, B, lim.jerk)
+        over, under = (up > qmax) & (up <= lim.position_max), (down < qmin) & (down >= lim.position_min)
+        if not (over.any() or under.any()):
+            return None
+        ramp = np.where(over, np.maximum(a0 + B, 0.0), np.where(under, np.maximum(B - a0, 0.0), -np.inf)) / lim.jerk
+        drift = 0.5 * STOP_EPS**0.5 * (np.maximum(ramp, 0.0) + 1.0)  # the smoothed reach's rise along the ramp
+        return (np.where(under, np.maximum(down - drift, lim.position_min), qmin),
+                np.where(over, np.minimum(up + drift, lim.position_max), qmax), ramp)

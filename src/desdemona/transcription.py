@@ -406,8 +406,9 @@ class CueingProblem(Formulation):
         return bool(config.free and config.free[0] == 0 and not np.isfinite(lim.position_min[0])
                     and not np.isfinite(lim.position_max[0]))
 
-    def bounds_from(self, q0) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """(lbx, ubx, lbg, ubg) for a plan that starts at the positions q0 (n,).
+    def bounds_from(self, q0, qd0=None, a0=None) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """(lbx, ubx, lbg, ubg) for a plan that starts at the positions q0 (n,) (with the rates qd0 and
+        accelerations a0 where given).
 
         The optimiser keeps positions a bulge (qdd_max h^2 / 8) inside their limits, so that the
         parabola between two points stays inside too. A start in that band (at rest at the end of a
@@ -417,27 +418,29 @@ class CueingProblem(Formulation):
         jerk-limited start from rest needs to cross the band, and one interval more; after that the
         plan is inside, as everywhere. The bounds unchanged where q0 lies inside. A start in the band
         moving outwards, whose stopping point lies beyond the start, is still infeasible: no plan
-        from it keeps the stopping condition."""
+        from it keeps the stopping condition. A start whose own stop lies just beyond the stopping
+        rows (:meth:`~desdemona.problem.Formulation.stop_overreach`) has the position and stopping
+        rows reach out to it until its acceleration can have passed the braking, and one interval more."""
         q0 = np.asarray(q0, dtype=float)
         qmin, qmax = self.position_bounds()
         lower, upper = np.minimum(qmin, q0), np.maximum(qmax, q0)
-        if np.array_equal(lower, qmin) and np.array_equal(upper, qmax):
-            return self.lbx, self.ubx, self.lbg, self.ubg
-        lim = self.model.limits
-        band = np.maximum(np.nan_to_num(qmin) - np.nan_to_num(lower), np.nan_to_num(upper) - np.nan_to_num(qmax))
-        if self.smooth:
-            crossing = np.cbrt(6.0 * band / lim.jerk)
-        else:
-            crossing = np.sqrt(2.0 * band / lim.acceleration)
         t = self.t_nodes - self.t_nodes[0]
-        stages = np.searchsorted(t, crossing, side="right") + 1  # intervals started before it is crossed, and one more
+        over = None if qd0 is None else self.stop_overreach(q0, qd0, a0, *(side[1] for side in self._node_positions))
+        rows = None if over is None else (over[0], over[1], np.searchsorted(t, over[2], side="right") + 1)
         below, above = lower < qmin, upper > qmax
-        # the fine first nodes back off less (:meth:`_bounds`): where each node it would widen already
-        # reaches q0 (a joint held at the end of its travel through the fine steps), nothing changes
-        within = np.arange(1, self.N + 1)[:, None] <= stages
-        node_lo, node_hi = (side[1:] for side in self._node_positions)
-        if not np.any(within & ((below & (node_lo > lower)) | (above & (node_hi < upper)))):
-            return self.lbx, self.ubx, self.lbg, self.ubg
+        if below.any() or above.any():
+            lim = self.model.limits
+            band = np.maximum(np.nan_to_num(qmin) - np.nan_to_num(lower), np.nan_to_num(upper) - np.nan_to_num(qmax))
+            crossing = np.cbrt(6.0 * band / lim.jerk) if self.smooth else np.sqrt(2.0 * band / lim.acceleration)
+            stages = np.searchsorted(t, crossing, side="right") + 1  # intervals started before it is crossed, and one more
+            # the fine first nodes back off less (:meth:`_bounds`): where each node it would widen already
+            # reaches q0 (a joint held at the end of its travel through the fine steps), nothing changes
+            within = np.arange(1, self.N + 1)[:, None] <= stages
+            node_lo, node_hi = (side[1:] for side in self._node_positions)
+            below, above = (side & np.any(within & (node_lo > lower if side is below else node_hi < upper), axis=0)
+                            for side in (below, above))
+        if not (below.any() or above.any()):
+            return (self.lbx, self.ubx, *self._constraint_bounds(rows)) if rows else (self.lbx, self.ubx, self.lbg, self.ubg)
         n, nw = self.model.n, self.nx + self.nu
         lbx, ubx = self.lbx.copy(), self.ubx.copy()
         last = self.N if self.options.final == "none" else self.N - 1  # a fixed end stays fixed
@@ -446,6 +449,8 @@ class CueingProblem(Formulation):
             lo, hi = lbx[k * nw:k * nw + n], ubx[k * nw:k * nw + n]  # views
             lo[:] = np.where(wide & below, np.minimum(lo, lower), lo)
             hi[:] = np.where(wide & above, np.maximum(hi, upper), hi)
+        if rows:
+            lower, upper, stages = np.minimum(lower, rows[0]), np.maximum(upper, rows[1]), np.maximum(stages, rows[2])
         return (lbx, ubx, *self._constraint_bounds((lower, upper, stages)))
 
     def _solver(self) -> ca.Function:
@@ -546,7 +551,7 @@ class CueingProblem(Formulation):
         with a perception model the filter states ``z``: "fix the start". The rest of the plan is
         bounded as :meth:`bounds_from` ``q`` has it."""
         n = self.model.n
-        lbx, ubx, lbg, ubg = self.bounds_from(q)
+        lbx, ubx, lbg, ubg = self.bounds_from(q, qd, np.zeros(n) if a is None else a)
         lbx, ubx = lbx.copy(), ubx.copy()
         lbx[:n], ubx[:n] = (q, q) if positions is None else positions
         lbx[n:2 * n], ubx[n:2 * n] = qd, qd
