@@ -437,8 +437,8 @@ class CueingProblem(Formulation):
             # reaches q0 (a joint held at the end of its travel through the fine steps), nothing changes
             within = np.arange(1, self.N + 1)[:, None] <= stages
             node_lo, node_hi = (side[1:] for side in self._node_positions)
-            below, above = (side & np.any(within & (node_lo > lower if side is below else node_hi < upper), axis=0)
-                            for side in (below, above))
+            below = below & np.any(within & (node_lo > lower), axis=0)
+            above = above & np.any(within & (node_hi < upper), axis=0)
         if not (below.any() or above.any()):
             return (self.lbx, self.ubx, *self._constraint_bounds(rows)) if rows else (self.lbx, self.ubx, self.lbg, self.ubg)
         n, nw = self.model.n, self.nx + self.nu
