@@ -9,7 +9,7 @@ from desdemona import profiles
 from desdemona.model import Model
 from desdemona.mpc import MPC, MPCOptions
 from desdemona.params import ParameterError, load_params
-from desdemona.plan import Plan, State, advance, ramp, stopping_extent, stopping_reach
+from desdemona.plan import STOP_LAG, Plan, State, advance, ramp, stopping_extent, stopping_reach
 from desdemona.problem import ProblemOptions
 from desdemona.transcription import CueingProblem
 from desdemona.simulate import check
@@ -335,6 +335,26 @@ def test_a_start_just_beyond_the_stopping_rows_is_planned_from(params, method):
         mpc = MPC(model, MPCOptions(horizon=2.0, step=0.05, method=method, deadline=float("inf")))
         bound = mpc.problem._node_positions[1][1][1]  # the first stopping row's upper bound on the track
         q, qd, a = np.zeros(6), np.r_[0, 2.6, 0, 0, 0, 0], np.r_[0, 4.5, 0, 0, 0, 0]
-        q[1] = bound + excess - stopping_reach(qd, a, mpc.options.braking * lim.acceleration, lim.jerk)[1]
+        lag = mpc.problem._stop_lag(slice(None))  # the brake's lag the rows carry
+        q[1] = bound + excess - stopping_reach(qd, a, mpc.options.braking * lim.acceleration, lim.jerk, lag=lag)[1]
         command = mpc.step((q, qd, a), (t, values))
         assert (command.source, command.reason) == ("mpc", ""), excess
+
+
+def test_the_plans_stopping_rows_are_never_short_of_the_controllers_check(params):
+    """The rows a plan keeps on-line (the reach at the plans' braking, with the brake's lag) reach at
+    least as far as the check the controller holds a plan to (the reach at the limits, with the lag,
+    :func:`stopping_extent`): a plan that keeps its rows is not refused for its stop (the catapult on
+    `full` fell back once, a heave state 1.6 mm inside its row but 3 mm past the check). Zero at rest,
+    so that a joint at rest at its end can be planned from."""
+    lim = Model(params, "full").limits
+    A, J, h = lim.acceleration[2], lim.jerk[2], 0.05
+    lag = STOP_LAG * A * h * h
+    for qd in np.linspace(-3.0, 3.0, 25):
+        for a in np.linspace(-A, A, 21):
+            row = float(stopping_reach(qd, a, 0.5 * A, J, lag=lag))
+            vector = np.zeros(6)
+            _, high = stopping_extent(np.zeros(6), vector + qd, vector + a, lim.acceleration, lim.jerk, h)
+            # moving away, the reach is negative and the node's own position bound is what binds
+            assert max(row, 0.0) >= high[2] - 1e-4, (qd, a, row, high[2])  # the smoothing's 0.05 mm aside
+    assert abs(float(stopping_reach(0.0, 0.0, 0.5 * A, J, lag=lag))) < 1e-9

@@ -271,7 +271,7 @@ class MPC:
             h_u=options.step, substeps=options.substeps, initial="given",
             initial_state=(np.zeros(model.n), np.zeros(model.n)), regularisation=options.regularisation,
             margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6,
-            stoppable=True, braking=options.braking, perception=options.perception, initial_filter="given",
+            stoppable=True, braking=options.braking, brake_step=options.step, perception=options.perception, initial_filter="given",
             steps=None if np.all(steps == options.step) else tuple(steps),
             jerk_weight=options.jerk_weight, rotation_band=options.rotation_band, null_weight=null_weight,
             wall=options.wall)

@@ -240,7 +240,7 @@ STOP_LAG = 0.5
 STOP_EPS = 1e-8
 
 
-def stopping_reach(qd, a, B, J, eps: float = STOP_EPS):
+def stopping_reach(qd, a, B, J, eps: float = STOP_EPS, lag=None):
     """Per joint how far up (towards its upper end) a jerk-limited stop from rate ``qd`` and
     acceleration ``a`` reaches, braking at ``B`` (floats, NumPy arrays or CasADi expressions); how far
     down is ``-stopping_reach(-qd, -a, B, J)``.
@@ -257,10 +257,19 @@ def stopping_reach(qd, a, B, J, eps: float = STOP_EPS):
     the acceleration to zero has a kink (a solver stalls on it). With W below zero the motion never
     turns upwards and W is taken as zero, smoothly: W+ = (W + sqrt(W^2 + eps) - sqrt(eps)) / 2, zero
     at rest; the reach is then at most the turning point the ramp left behind, |a|^3 / 6J^2.
-    ``tests/test_jerk.py`` checks it against the brake of :class:`~desdemona.mpc.MPC`."""
+    ``tests/test_jerk.py`` checks it against the brake of :class:`~desdemona.mpc.MPC`.
+
+    lag : with it [m, per joint], the reach r plus the travel :func:`stopping_extent` gives a brake
+    that acts in whole steps, min(r, lag), bounded smoothly from above by the harmonic mean
+    2 r+ lag / (r+ + lag) (r+ the reach's positive part, smoothed as W is): zero at rest, so that a
+    joint at rest at its end can still be planned from, and never short of the check's."""
     w = qd + a * a / (2.0 * J)
     w = 0.5 * (w + (w * w + eps) ** 0.5 - eps**0.5)
-    return w * a / J - a * a * a / (6.0 * J * J) + w * w / (2.0 * B) + w * B / (2.0 * J)
+    r = w * a / J - a * a * a / (6.0 * J * J) + w * w / (2.0 * B) + w * B / (2.0 * J)
+    if lag is None:
+        return r
+    positive = 0.5 * (r + (r * r + eps) ** 0.5 - eps**0.5)
+    return r + 2.0 * positive * lag / (positive + lag)
 
 
 def stopping_extent(q, qd, a, A, J, h):

@@ -52,7 +52,7 @@ import casadi as ca
 import numpy as np
 
 from desdemona.perception import VestibularModel
-from desdemona.plan import STOP_EPS, advance, settled_rate, stopping_reach
+from desdemona.plan import STOP_EPS, STOP_LAG, advance, settled_rate, stopping_reach
 from desdemona.model import Model
 from desdemona.profiles import DesiredPath
 
@@ -98,6 +98,10 @@ class ProblemOptions:
     stoppable : every planned state must be able to brake to rest within the position limits at
         ``braking`` times the acceleration limit (the on-line end condition of chapter 7, here at every
         node so that any shifted plan ends stoppable too).
+    brake_step : the step [s] of a controller's brake that takes over from a plan (on-line): the
+        stopping rows then also carry the brake's lag (:func:`~desdemona.plan.stopping_reach`'s
+        ``lag``, :data:`~desdemona.plan.STOP_LAG` x A h^2), so that a plan that keeps them passes the
+        controller's check (:func:`~desdemona.plan.stopping_extent`). None: no lag (off-line).
     expand : evaluate the NLP as one flat SX graph (fast to evaluate, slow to build); None chooses:
         flat when the problem will be solved EXPAND_SOLVES times or more and is below EXPAND_LIMIT.
     limit_curvature : put the second derivatives of the torque and power limits into IPOPT's Hessian.
@@ -160,6 +164,7 @@ class ProblemOptions:
     expand: bool | None = None
     stoppable: bool = False
     braking: float = 0.5
+    brake_step: float | None = None
     initial_filter: Literal["steady", "given"] = "steady"
     limit_curvature: bool | None = None
     unweighted: float | None = None
@@ -174,6 +179,8 @@ class ProblemOptions:
     def __post_init__(self):
         if not (math.isfinite(self.h_u) and self.h_u > 0):
             raise ValueError(f"h_u = {self.h_u!r}: the control step must be a positive number of seconds")
+        if self.brake_step is not None and not (math.isfinite(self.brake_step) and self.brake_step > 0):
+            raise ValueError(f"brake_step = {self.brake_step!r}: a positive number of seconds, or None")
         if self.substeps < 1:
             raise ValueError(f"substeps = {self.substeps!r}: must be >= 1")
         for name, value, allowed in (("initial", self.initial, ("free", "rest", "given")),
@@ -539,9 +546,9 @@ class Formulation:
             q_end, qd_end = q_next[bounded], qd_next[bounded]
             if self.smooth:
                 A, J = ca.DM(lim.acceleration[bounded]), ca.DM(lim.jerk[bounded])
-                a_end, B = a_next[bounded], o.braking * A
-                up = q_end + stopping_reach(qd_end, a_end, B, J)
-                down = q_end - stopping_reach(-qd_end, -a_end, B, J)
+                a_end, B, lag = a_next[bounded], o.braking * A, ca.DM(self._stop_lag(bounded)) if o.brake_step else None
+                up = q_end + stopping_reach(qd_end, a_end, B, J, lag=lag)
+                down = q_end - stopping_reach(-qd_end, -a_end, B, J, lag=lag)
                 inf = np.full(len(bounded), np.inf)
                 families.append(Family("stopping", ca.vertcat(up, down), np.r_[-inf, qmin], np.r_[qmax, inf]))
             else:
@@ -564,6 +571,11 @@ class Formulation:
         return (lim.position_min + np.where(np.isfinite(lim.position_min), backoff, 0.0),
                 lim.position_max - np.where(np.isfinite(lim.position_max), backoff, 0.0))
 
+    def _stop_lag(self, joints):
+        """The brake's lag [m] the stopping rows of ``joints`` carry (:attr:`ProblemOptions.brake_step`), or None."""
+        h = self.options.brake_step
+        return None if h is None else STOP_LAG * self.model.limits.acceleration[joints] * h * h
+
     def stop_overreach(self, q0, qd0, a0, qmin, qmax) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
         """Where a start's own stop (:func:`stopping_reach` at ``braking``) lies beyond the stopping
         rows' bounds ``qmin``, ``qmax`` (n,) but within the travel: (lower, upper, ramp), the bounds
@@ -577,8 +589,8 @@ class Formulation:
         lim, o = self.model.limits, self.options
         if not (o.stoppable and self.smooth and lim.bounded):
             return None
-        B = o.braking * lim.acceleration
-        up, down = q0 + stopping_reach(qd0, a0, B, lim.jerk), q0 - stopping_reach(-qd0, -a0, B, lim.jerk)
+        B, J, lag = o.braking * lim.acceleration, lim.jerk, self._stop_lag(slice(None))
+        up, down = q0 + stopping_reach(qd0, a0, B, J, lag=lag), q0 - stopping_reach(-qd0, -a0, B, J, lag=lag)
         over, under = (up > qmax) & (up <= lim.position_max), (down < qmin) & (down >= lim.position_min)
         if not (over.any() or under.any()):
             return None
