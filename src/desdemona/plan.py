@@ -198,8 +198,7 @@ def stopping_jerk(qd, a, h: float, A, J) -> np.ndarray:
     u, b = s * qd, s * a  # rate and acceleration along it
 
     def left(k):  # the rate left along it after the step and a ramp of the acceleration to zero
-        b1 = b + k * h
-        return u + b * h + 0.5 * k * h * h + b1 * np.abs(b1) / (2.0 * J)
+        return settled_rate(u + b * h + 0.5 * k * h * h, b + k * h, J)
 
     lo, hi = -np.asarray(J, dtype=float) * np.ones_like(u), np.asarray(J, dtype=float) * np.ones_like(u)
     for _ in range(50):  # the smallest jerk along the motion that leaves a rate >= 0
