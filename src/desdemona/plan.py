@@ -192,20 +192,31 @@ def stopping_jerk(qd, a, h: float, A, J) -> np.ndarray:
     acceleration turned against the motion at up to the jerk limit ``J``, held at ``A``, and turned back
     to zero so that the rate reaches zero as the acceleration does. Of the jerks in [-J, J] it takes the
     one that brakes most while the rate, were the acceleration then taken to zero at ``J``, does not
-    pass zero, and the acceleration stays within ``A`` (qd, a, A, J: (n,) per joint; h [s])."""
+    pass zero, and the acceleration stays within ``A`` (qd, a, A, J: (n,) per joint; h [s]).
+
+    In closed form: with u and b the rate and acceleration along the motion and c = b + k h the
+    acceleration the step leaves, the rate left after the step and the ramp is u + b h / 2 + c h / 2 +
+    c |c| / 2J, increasing in c; it is zero at c = 2R / (h / 2 + sqrt(h^2 / 4 + 2 |R| / J)), R = -(u +
+    b h / 2). The jerk is raised by a few units of round-off where that root leaves the rate a hair
+    below zero.
+    """
     qd, a = np.asarray(qd, dtype=float), np.asarray(a, dtype=float)
+    J = np.asarray(J, dtype=float) * np.ones_like(qd)
     s = np.where(qd != 0.0, np.sign(qd), -np.sign(a))  # the direction of motion
     u, b = s * qd, s * a  # rate and acceleration along it
 
     def left(k):  # the rate left along it after the step and a ramp of the acceleration to zero
         return settled_rate(u + b * h + 0.5 * k * h * h, b + k * h, J)
 
-    lo, hi = -np.asarray(J, dtype=float) * np.ones_like(u), np.asarray(J, dtype=float) * np.ones_like(u)
-    for _ in range(50):  # the smallest jerk along the motion that leaves a rate >= 0
-        mid = 0.5 * (lo + hi)
-        short = left(mid) < 0.0
-        lo, hi = np.where(short, mid, lo), np.where(short, hi, mid)
-    k = np.where(left(-J * np.ones_like(u)) >= 0.0, -J, hi)
+    R = -(u + 0.5 * b * h)
+    k = (2.0 * R / (0.5 * h + np.sqrt(0.25 * h * h + 2.0 * np.abs(R) / J)) - b) / h
+    bump = 4.0 * np.finfo(float).eps * (np.abs(k) + J)
+    for _ in range(8):
+        short = (left(k) < 0.0) & (k < J)
+        if not short.any():
+            break
+        k, bump = np.where(short, k + bump, k), 2.0 * bump
+    k = np.maximum(k, -J)  # where even the strongest ramp leaves the rate along the motion
     k = np.maximum(k, (-A - b) / h)  # the acceleration no further than A against the motion
     return s * np.clip(k, -J, J)
 
