@@ -9,7 +9,7 @@ from desdemona import profiles
 from desdemona.model import Model
 from desdemona.mpc import MPC, MPCOptions
 from desdemona.params import ParameterError, load_params
-from desdemona.plan import STOP_LAG, Plan, State, advance, ramp, stopping_extent, stopping_reach
+from desdemona.plan import STOP_LAG, Plan, State, advance, ramp, settled_rate, stopping_extent, stopping_jerk, stopping_reach
 from desdemona.problem import ProblemOptions
 from desdemona.transcription import CueingProblem
 from desdemona.simulate import check
@@ -233,6 +233,30 @@ def test_braking_near_the_end_of_a_joints_travel_stops_within_it(params):
         heave.append(q[2])
     assert max(heave) <= lim.position_max[2] and abs(qd[2]) < 1e-6
     assert heave[-1] >= max(heave) - 1e-3  # at rest where it stopped, not turned back (0.16 mm)
+
+
+def test_the_quickest_stops_jerk_is_the_strongest_that_does_not_pass_rest():
+    """stopping_jerk's closed form, on random states from rest-like to fast: where neither limit
+    binds, its jerk leaves the rate along the motion, once the acceleration is ramped to zero at J,
+    at or above zero, and a jerk stronger by 1e-9 J leaves it below (the root, from above); it never
+    leaves [-J, J] nor takes the acceleration past A."""
+    rng = np.random.default_rng(7)
+    A, J, h = np.array([0.8, 5.0, 5.0, 1.5, 1.5, 1.5]), np.array([1.0, 10.0, 10.0, 3.0, 3.0, 3.0]), 0.02
+    inner = 0
+    for scale in (1e-6, 1e-2, 1.0, 3.0):
+        for _ in range(400):
+            qd, a = rng.normal(size=6) * scale, rng.uniform(-1, 1, 6) * np.minimum(A, J * h * rng.choice([0.3, 3, 30]))
+            k = stopping_jerk(qd, a, h, A, J)
+            s = np.where(qd != 0.0, np.sign(qd), -np.sign(a))
+            u, b, kk = s * qd, s * a, s * k
+            left = settled_rate(u + b * h + 0.5 * kk * h * h, b + kk * h, J)
+            stronger = kk - 1e-9 * J
+            below = settled_rate(u + b * h + 0.5 * stronger * h * h, b + stronger * h, J)
+            free = (np.abs(kk) < J) & (kk > (-A - b) / h + 1e-9 * J)
+            inner += int(free.sum())
+            assert np.all(left[free] >= 0.0) and np.all(below[free] < 0.0)
+            assert np.all(np.abs(k) <= J) and np.all(b + kk * h >= -A * (1 + 1e-12))
+    assert inner > 1000  # states braked by the root, not by a limit
 
 
 def _braked(mpc, q, qd, a, steps):
