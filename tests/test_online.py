@@ -151,6 +151,27 @@ def test_online_command_writes_the_folder(tmp_path, capsys):
     assert not (tmp_path / "x").exists()
 
 
+def test_online_warns_when_most_cycles_ran_without_a_fresh_plan(tmp_path, capsys):
+    """A deadline no plan can meet (1 us): every cycle falls back, the run still keeps every limit
+    (exit 0, written), and the command says on stderr how many cycles went without a plan, why, and
+    what gives the plans their time; a run whose plans all came says nothing."""
+    from desdemona.cli import main
+    from desdemona.cli.commands import fallback_warning
+
+    out = tmp_path / "late"
+    assert main(["online", "cosine", "--config", "yaw-track", "--horizon", "1", "--step", "0.05",
+                 "--deadline", "1e-6", "--out", str(out), "--no-view"]) == 0
+    err = capsys.readouterr().err
+    cycles = (out / "cycles.csv").read_text().count("\n") - 1
+    assert f"warning: {cycles:,} of {cycles:,} cycles (100 %) ran without a fresh plan" in err
+    assert f"deadline missed {cycles:,} times" in err and "against 0.001 ms" in err and "--deadline" in err
+    assert fallback_warning(("mpc",) * 100, ("",) * 100, np.full(100, 1e-3), 0.02) == ""
+    mixed = ("mpc",) * 90 + ("brake",) * 10
+    warning = fallback_warning(mixed, ("",) * 90 + ("solver failed",) * 10, np.full(100, 1e-3), 0.02)
+    assert warning.startswith("10 of 100 cycles (10 %)") and "solver failed 10 times" in warning
+    assert "in part" in warning and "--deadline" not in warning  # not late: more time would not help
+
+
 def test_perceived_mpc_lowers_the_perceived_error(params):
     """yaw-track-cabin on-line with the thesis' vestibular model carried from step to step."""
     model = Model(params, "yaw-track-cabin")

@@ -7,6 +7,7 @@ choices through :mod:`desdemona.session`, runs the library and prints what it di
 
 from __future__ import annotations
 
+import collections
 import os
 import signal
 import sys
@@ -261,7 +262,35 @@ def run_online(args) -> int:
     print(f"  felt: {result.quality.headline()}")
     if result.baseline_quality is not None:
         print(f"  felt with the classical loop: {result.baseline_quality.headline()}")
+    warning = fallback_warning(sources, result.loop.reasons, times, result.deadline)
+    if warning:
+        print(f"desdemona: warning: {warning}", file=sys.stderr)
     return 0
+
+
+#: The share of an on-line run's cycles without a fresh plan above which the command warns.
+FALLBACK_WARN = 0.05
+
+
+def fallback_warning(sources, reasons, times, deadline: float) -> str:
+    """A sentence for a run in which more than :data:`FALLBACK_WARN` of the cycles went without a fresh
+    plan (``sources`` other than "mpc": the last plan kept, or the brake), why, and what gives the plans
+    their time; "" for a run that planned as it should. ``times`` [s] per cycle, ``deadline`` [s]."""
+    fallbacks = [reason for source, reason in zip(sources, reasons) if source != "mpc"]
+    if len(fallbacks) <= FALLBACK_WARN * len(sources):
+        return ""
+    late = sum(reason.startswith("deadline missed") for reason in fallbacks)
+    why = [f"deadline missed {late:,} times (median compute {1e3 * np.median(times):.3g} ms against "
+           f"{1e3 * deadline:.3g} ms)"] if late else []
+    others = collections.Counter(reason for reason in fallbacks if not reason.startswith("deadline missed"))
+    why += [f"{reason} {count:,} times" for reason, count in others.most_common()]
+    braked = sum(source == "brake" for source in sources)
+    advice = (" A longer --deadline, a larger --step or a shorter --horizon gives the plans their time." if late
+              else "")
+    share = len(fallbacks) / len(sources)
+    return (f"{len(fallbacks):,} of {len(sources):,} cycles ({100 * share:.0f} %) ran without a fresh plan, "
+            f"{braked:,} of them on the brake: {', '.join(why)}. The felt figures are "
+            f"{'mostly' if share > 0.5 else 'in part'} the fallbacks', not the plans'.{advice}")
 
 
 def _forecast(args, path):
