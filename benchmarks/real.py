@@ -28,8 +28,9 @@ what the occupant feels, read from the result's ``summary.json`` ("quality"):
   cabin, the force along the occupant's vertical), the same for every configuration and mode;
 - correlation and lag [s] of the dominant force channel (the one whose desired value varies most; on
   ``dfs`` f_z against M_d);
-- felt direction RMS and peak [deg], peak felt rotation through the canals [deg/s], acceleration
-  reversals per second of the worst joint (swings across 5 % of its peak);
+- felt direction RMS and peak [deg] and the peak of the part the machine made, beyond a still level
+  cabin's (``made``: :func:`desdemona.metrics.direction_made`), peak felt rotation through the canals
+  [deg/s], acceleration reversals per second of the worst joint (swings across 5 % of its peak);
 - on-line rows: the p99 compute time per cycle [ms] and the deadlines missed; and the classical
   loop's felt force RMS, correlation, felt direction peak and felt rotation peak from the same run
   (it reads only the present sample, as ``hold``), with MPC / classical for the felt force;
@@ -151,6 +152,7 @@ def felt_figures(quality: dict | None, channel: str) -> dict:
             "lag_s": quality["channels"]["lag_s"][channel],
             "direction_rms": quality["felt_direction"]["rms_deg"],
             "direction_peak": quality["felt_direction"]["peak_deg"],
+            "direction_made": quality["felt_direction"].get("made_peak_deg"),
             "rotation_peak": max((r for r in rotation if r is not None), default=None),
             "reversals": max(reversals, default=None)}
 
@@ -196,8 +198,8 @@ def cell(value, fmt: str) -> str:
 def table(rows: list[dict]) -> str:
     """The markdown table of every job's row."""
     lines = ["| case | s | configuration | mode | exit | wall [s] | wall / s | peak [MB] | felt force RMS | "
-             "corr | lag [s] | dir RMS / peak [deg] | rot peak [deg/s] | rev/s | p99 [ms] | missed | "
-             "classical: force RMS | corr | dir peak | rot peak | MPC / classical | forecast closes |",
+             "corr | lag [s] | dir RMS / peak / made [deg] | rot peak [deg/s] | rev/s | p99 [ms] | missed | "
+             "classical: force RMS | corr | dir peak / made | rot peak | MPC / classical | forecast closes |",
              "| --- " * 22 + "|"]
     for r in rows:
         ratio = (r["force_rms"] / r["classical_force_rms"]
@@ -206,11 +208,13 @@ def table(rows: list[dict]) -> str:
             f"| {r['case']} | {r['duration_s']:.0f} | {r['config']} | {r['mode']} | {r['exit']} | "
             f"{r['wall_s']:.1f} | {r['wall_s'] / r['duration_s']:.2f} | {r['peak_mb']:.0f} | "
             f"{cell(r.get('force_rms'), '.3f')} | {cell(r.get('correlation'), '.2f')} | {cell(r.get('lag_s'), '.2f')} | "
-            f"{cell(r.get('direction_rms'), '.1f')} / {cell(r.get('direction_peak'), '.0f')} | "
+            f"{cell(r.get('direction_rms'), '.1f')} / {cell(r.get('direction_peak'), '.0f')} / "
+            f"{cell(r.get('direction_made'), '.0f')} | "
             f"{cell(r.get('rotation_peak'), '.0f')} | {cell(r.get('reversals'), '.2f')} | "
             f"{cell(r.get('p99_ms'), '.1f')} | {cell(r.get('misses'), 'd')} | "
             f"{cell(r.get('classical_force_rms'), '.3f')} | {cell(r.get('classical_correlation'), '.2f')} | "
-            f"{cell(r.get('classical_direction_peak'), '.0f')} | {cell(r.get('classical_rotation_peak'), '.0f')} | "
+            f"{cell(r.get('classical_direction_peak'), '.0f')} / {cell(r.get('classical_direction_made'), '.0f')} | "
+            f"{cell(r.get('classical_rotation_peak'), '.0f')} | "
             f"{cell(ratio, '.2f')} | {cell(r.get('forecast_closes'), '.0%')} |")
     return "\n".join(lines)
 

@@ -110,6 +110,28 @@ def test_full_path_direction_is_measured_against_the_desired_force():
     assert m.direction_above_pct == 100.0
 
 
+def test_the_machine_made_direction_error_is_what_its_motion_adds_to_a_still_cabins():
+    """A push-over's negative g: a still cabin is 180 deg off and made none of it (0); a felt force
+    tilted 30 deg from the vertical against an upright target made 30 deg; one that follows a
+    target tilted 40 deg made -40 (it brought the force nearer); on a modulus path the error itself."""
+    zeros = np.zeros((len(T), 1))
+    S_d = np.tile(REST, (len(T), 1))
+    S_d[:, 5] = -1.9 * G
+    still = np.tile(REST, (len(T), 1))
+    m = metrics.of_arrays(T, still, S_d, zeros, zeros, ["yaw"])
+    assert math.degrees(m.direction_peak) == pytest.approx(180.0) and m.direction_made_peak == pytest.approx(0.0)
+    tilted_by = np.tile(REST, (len(T), 1))
+    tilted_by[:, 3:] = tilted(math.radians(30.0), axis=0)
+    upright = np.tile(REST, (len(T), 1))
+    m = metrics.of_arrays(T, tilted_by, upright, zeros, zeros, ["yaw"])
+    assert math.degrees(m.direction_made_peak) == pytest.approx(30.0)
+    S_d[:, 3:] = tilted(math.radians(40.0), axis=1, magnitude=1.2 * G)
+    made = metrics.direction_made(S_d[:, 3:], S_d[:, 3:])
+    np.testing.assert_allclose(np.degrees(made), -40.0)
+    assert m.to_dict()["felt_direction"]["made_peak_deg"] == pytest.approx(30.0)
+    np.testing.assert_allclose(metrics.direction_made(tilted_by[:, 3:]), metrics.direction_error(tilted_by[:, 3:]))
+
+
 @pytest.mark.parametrize("channel", [0, 1, 2])
 def test_rotation_step_through_a_high_pass_canal_is_felt_as_its_exponential(channel):
     tau, W, start = 5.9, math.radians(10.0), 2.0

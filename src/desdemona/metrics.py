@@ -53,6 +53,12 @@ Definitions (S, S_d : (K, 6) on a time grid t : (K,) [s]; channels wx, wy, wz [r
   a tilt of f by an angle a puts ``|f| sin a`` on a lateral otolith axis, so we take the angle at
   which that reaches the lateral otolith threshold at 1 g, ``asin(0.17 / 9.81)`` = 0.99 deg with
   Reid & Nahon's thresholds (the vestibular model's own thresholds are used).
+  Made by the machine (:func:`direction_made`): per sample that error minus the one a still, level
+  cabin leaves (f = (0, 0, +g)), its peak ``made_peak``: how far the machine's motion turned the felt
+  force away from the desired direction beyond where standing still leaves it. Where the desired
+  force itself turns (a push-over's negative g, a transient the aircraft makes in a tenth of a
+  second) a still cabin is already far off; this part is the machine's own. Zero for a still cabin,
+  negative where the motion brings the felt force nearer; on a modulus path the error itself.
 - Felt rotation: the cabin's angular velocity S[:, :3] minus the desired S_d[:, :3] (zero
   where S_d is None: no rotation is wanted from a modulus path) through the semicircular-canal channels
   of the vestibular model, i.e. the canal part of the perceived error above, also for modulus paths.
@@ -211,6 +217,15 @@ def direction_error(f, f_d=None) -> np.ndarray:
     return np.where(defined, angle, np.nan)
 
 
+def direction_made(f, f_d=None) -> np.ndarray:
+    """The felt-direction error [rad] (K,) beyond a still, level cabin's: :func:`direction_error` of f
+    (K, 3) less that of (0, 0, +g) against the same desired direction (f_d (K, 3), or None for cabin
+    +z, where a still cabin's is zero). In [-pi, pi]; NaN where the error is undefined."""
+    f = np.asarray(f, float).reshape(-1, 3)
+    still = np.broadcast_to(np.array([0.0, 0.0, G]), f.shape)
+    return direction_error(f, f_d) - direction_error(still, f_d)
+
+
 def direction_threshold(thresholds=perception.THRESHOLDS) -> float:
     """Felt-direction error [rad] taken as noticeable: asin(lateral otolith threshold / g), the tilt at
     which a 1 g specific force puts the smaller of the x and y thresholds of ``thresholds`` (6,) on a
@@ -301,7 +316,8 @@ class Metrics:
     sign_changes_per_s (raw), reversals_per_s (with a hysteresis), qd_start (joint rate at t[0]). Modulus M against M_d: modulus_rms [m/s^2],
     modulus_correlation, modulus_lag_s.
     Felt direction (full and modulus paths), against ``direction_reference`` ("S_d" or "cabin +z"):
-    direction_rms, direction_peak, direction_threshold [rad] and direction_above_pct [%].
+    direction_rms, direction_peak, direction_threshold [rad] and direction_above_pct [%]; the peak of
+    the part the machine made, direction_made_peak [rad] (:func:`direction_made`).
     Felt rotation (3,) per canal channel wx, wy, wz (full and modulus paths): rotation_rms,
     rotation_peak [rad/s] and rotation_above_pct [%]. NaN where undefined; ``to_dict`` and ``rows``
     give these in degrees, the keys naming the unit.
@@ -331,6 +347,7 @@ class Metrics:
     direction_peak: float
     direction_threshold: float
     direction_above_pct: float
+    direction_made_peak: float
     rotation_rms: np.ndarray
     rotation_peak: np.ndarray
     rotation_above_pct: np.ndarray
@@ -343,10 +360,11 @@ class Metrics:
 
     def felt_direction(self) -> dict[str, float | None]:
         """The felt-direction error's statistics in degrees, JSON-safe: rms_deg, peak_deg,
-        above_threshold_pct, threshold_deg."""
+        above_threshold_pct, threshold_deg, made_peak_deg (beyond a still cabin's)."""
         return {"rms_deg": _degrees(self.direction_rms), "peak_deg": _degrees(self.direction_peak),
                 "above_threshold_pct": _plain(self.direction_above_pct),
-                "threshold_deg": _degrees(self.direction_threshold)}
+                "threshold_deg": _degrees(self.direction_threshold),
+                "made_peak_deg": _degrees(self.direction_made_peak)}
 
     def felt_rotation(self) -> dict[str, dict[str, float | None]]:
         """The felt rotation's statistics per canal channel (wx, wy, wz), JSON-safe: rms_deg_s,
@@ -468,7 +486,9 @@ def of_arrays(t, S, S_d, qdd, qd, joint_names, M=None, M_d=None,
     else:
         rotation = felt_rotation(S, None, dt, vestibular)
     threshold = direction_threshold(vestibular.thresholds)
-    direction = direction_statistics(direction_error(S[:, 3:], None if S_d is None else S_d[:, 3:]), threshold)
+    f_d = None if S_d is None else S_d[:, 3:]
+    direction = direction_statistics(direction_error(S[:, 3:], f_d), threshold)
+    made = direction_made(S[:, 3:], f_d)
     modulus = (None, None, None)
     if M is not None and M_d is not None:
         modulus = (float(rms(np.asarray(M) - M_d)), float(correlation(M, M_d)[0]),
@@ -482,6 +502,7 @@ def of_arrays(t, S, S_d, qdd, qd, joint_names, M=None, M_d=None,
                    modulus_rms=modulus[0], modulus_correlation=modulus[1], modulus_lag_s=modulus[2],
                    direction_reference="cabin +z" if S_d is None else "S_d", direction_rms=direction[0],
                    direction_peak=direction[1], direction_threshold=threshold, direction_above_pct=direction[2],
+                   direction_made_peak=float(np.nanmax(made)) if np.isfinite(made).any() else math.nan,
                    rotation_rms=rms(rotation), rotation_peak=np.abs(rotation).max(axis=0),
                    rotation_above_pct=time_above_threshold(rotation, vestibular.thresholds[:3]))
 
