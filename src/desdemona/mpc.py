@@ -12,7 +12,7 @@ stoppable too). The solve itself, and the layout of its variables, belong to
 :mod:`desdemona.transcription`.
 
 Fallback, in order, whenever the solver fails, misses its deadline or is given an unusable preview:
-the next step of the previous plan; when no plan is left, a braking command. Every command, whatever
+the next step of the previous plan, for at most ``SHIFT_MAX``; then a braking command. Every command, whatever
 its source, is checked against every limit over the coming step before it is returned; a braking
 command is scaled down until it passes. The controller never returns a command that violates a limit.
 
@@ -42,9 +42,11 @@ from desdemona.transcription import CueingProblem
 
 
 REST_RATE = 0.05  # rad/s: below this over a whole seed the yaw counts as still (0.01 m/s^2 centripetal at 4 m)
-#: Where the plan's tail doubles [s] on a configuration whose cabin tilts (``MPCOptions.far`` "auto"):
-#: beyond it a 4 s plan on ``full`` has intervals of 0.2 s, 46 intervals in all instead of 56
-#: ("Coarse tail of the plan").
+#: How long [s] a fallback follows the last plan before it brakes, at most; the next plan then starts from a
+#: fresh seed (a plan's far part is no command to follow open-loop for seconds: "Fallback to the last plan").
+SHIFT_MAX = 2.0
+#: Where the plan's tail doubles [s] on a configuration whose cabin tilts (``MPCOptions.far`` "auto"): beyond
+#: it a 4 s plan on ``full`` has intervals of 0.2 s, 46 intervals in all instead of 56 ("Coarse tail of the plan").
 FAR = 2.0
 
 
@@ -71,8 +73,7 @@ class MPCOptions:
     gimbal's lock (:attr:`~desdemona.problem.ProblemOptions.null_weight`; None: its on-line default
     with the real-time iteration, where the spin was found, and 0 with IPOPT, whose thesis-timing rows
     of ``benchmarks/online.py`` it moved by up to 12 %, "Gimbals' lock");
-    spin_up : fraction of the yaw's acceleration limit with which a still yaw is seeded
-    (:meth:`MPC._leave_rest`), 0 to switch it off.
+    spin_up : fraction of the yaw's acceleration limit with which a still yaw is seeded (:meth:`MPC._leave_rest`), 0: off.
 
     rti_step : the share of each real-time iteration's QP step taken from the previous plan
     (:class:`~desdemona.realtime.RealTimeIteration`; 1 from a fresh seed); None: 0.5 where the cabin
@@ -553,15 +554,14 @@ class MPC:
         return bool(np.all((high <= lim.position_max) & (low >= lim.position_min) & settles))
 
     def _fallback(self, state: State, reason: str, start: float) -> Command:
-        r = self.options.replan_steps
-        if self.plan is not None and self.plan_age + 2 * r <= len(self.plan[0]):
+        r, most = self.options.replan_steps, round(SHIFT_MAX / self.options.step)
+        if self.plan is not None and self.plan_age + 2 * r <= min(len(self.plan[0]), most):
             self.plan_age += r
             window = slice(self.plan_age, self.plan_age + r)
             sequence, jerks = self.plan[0][window], self.plan[1][window]
             if self._safe_sequence(state, sequence, jerks):
                 return Command(sequence.copy(), "shifted", time.perf_counter() - start, reason, jerks.copy())
-        self.plan = None
-        sequence, jerks = [], []
+        self.plan, sequence, jerks = None, [], []  # a fresh seed for the next plan
         for _ in range(r):
             qdd, jerk = self.brake(*state)
             sequence.append(qdd)
