@@ -281,7 +281,7 @@ def fallback_warning(sources, reasons, times, deadline: float) -> str:
         return ""
     late = sum(reason.startswith("deadline missed") for reason in fallbacks)
     why = [f"deadline missed {late:,} times (median compute {1e3 * np.median(times):.3g} ms against "
-           f"{1e3 * deadline:.3g} ms)"] if late else []
+           f"{1e3 * deadline:.4g} ms)"] if late else []
     others = collections.Counter(reason for reason in fallbacks if not reason.startswith("deadline missed"))
     why += [f"{reason} {count:,} times" for reason, count in others.most_common()]
     braked = sum(source == "brake" for source in sources)
