@@ -216,9 +216,8 @@ def stopping_jerk(qd, a, h: float, A, J) -> np.ndarray:
         if not short.any():
             break
         k, bump = np.where(short, k + bump, k), 2.0 * bump
-    k = np.maximum(k, -J)  # where even the strongest ramp leaves the rate along the motion
     k = np.maximum(k, (-A - b) / h)  # the acceleration no further than A against the motion
-    return s * np.clip(k, -J, J)
+    return s * np.clip(k, -J, J)  # -J where even the strongest ramp leaves the rate along the motion
 
 
 def stopping_time(qd, a, A, J) -> np.ndarray:
@@ -273,12 +272,14 @@ def stopping_reach(qd, a, B, J, eps: float = STOP_EPS, lag=None):
     that acts in whole steps, min(r, lag), bounded smoothly from above by the harmonic mean
     2 r+ lag / (r+ + lag) (r+ the reach's positive part, smoothed as W is): zero at rest, so that a
     joint at rest at its end can still be planned from, and never short of the check's."""
-    w = qd + a * a / (2.0 * J)
-    w = 0.5 * (w + (w * w + eps) ** 0.5 - eps**0.5)
+    def plus(x):  # the positive part of x, smoothly, zero at zero
+        return 0.5 * (x + (x * x + eps) ** 0.5 - eps**0.5)
+
+    w = plus(qd + a * a / (2.0 * J))
     r = w * a / J - a * a * a / (6.0 * J * J) + w * w / (2.0 * B) + w * B / (2.0 * J)
     if lag is None:
         return r
-    positive = 0.5 * (r + (r * r + eps) ** 0.5 - eps**0.5)
+    positive = plus(r)
     return r + 2.0 * positive * lag / (positive + lag)
 
 
