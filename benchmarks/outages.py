@@ -7,9 +7,9 @@ Each run is the ``online`` command on a corpus case with ``--predictor hold --de
 late by the clock), in this process, with a chosen share of the plans refused as late, deterministically:
 ``random90`` refuses 90 % of them at random (seeded), ``burstN`` every plan in the N s from second 3 of
 every 6 s of the session (an outage of N s, then 6 - N s of plans). The placed start's solves are never
-refused. Per run: the felt force RMS of the vector |f - f_d| [m/s^2] (as ``benchmarks/real.py``), the
-classical loop's from the same run, the peak felt direction the machine made [deg]
-(:func:`desdemona.metrics.direction_made`), and the cycles by source (fresh plan, the last plan
+refused. Per run, read as ``real.felt_figures`` reads them: the felt force RMS of the vector |f - f_d|
+[m/s^2], the classical loop's from the same run, and the peak felt direction the machine made [deg]
+(:func:`desdemona.metrics.direction_made`); and the cycles by source (fresh plan, the last plan
 followed, the brake). "Fallback to the last plan" in ``docs/benchmarks.md`` has the table.
 """
 
@@ -27,7 +27,8 @@ import numpy as np
 from desdemona import mpc
 from desdemona.cli import main
 
-CORPUS = Path(__file__).parent / "corpus"
+import real  # benchmarks/real.py: its felt figures (the script's own folder is on the path)
+
 PATTERNS = {"random90": (0.9, None), "burst2": (0.0, 2.0), "burst3": (0.0, 3.0)}
 
 
@@ -47,26 +48,21 @@ def refusing(share: float, burst: float | None, seed: int = 0):
     return _solve
 
 
-def felt_force(quality: dict) -> float:
-    return float(np.sqrt(sum(quality["channels"]["rms"][c] ** 2 for c in ("fx", "fy", "fz"))))
-
-
 def run(case: str, config: str, pattern: str) -> dict:
     original = mpc.MPC._solve
     mpc.MPC._solve = refusing(*PATTERNS[pattern])
     try:
         with tempfile.TemporaryDirectory() as tmp:
             out = Path(tmp) / "result"
-            code = main(["online", str(CORPUS / f"{case}.csv"), "--config", config, "--predictor", "hold",
+            code = main(["online", str(real.CORPUS / f"{case}.csv"), "--config", config, "--predictor", "hold",
                          "--deadline", "1", "--out", str(out), "--no-view"])
             summary = json.loads((out / "summary.json").read_text())
             lines = [line for line in (out / "cycles.csv").read_text().splitlines() if not line.startswith("#")]
             sources = [row["source"] for row in csv.DictReader(lines)]
     finally:
         mpc.MPC._solve = original
-    return {"exit": code, "force": felt_force(summary["quality"]),
-            "loop": felt_force(summary["quality_classical_loop"]),
-            "made": summary["quality"]["felt_direction"]["made_peak_deg"],
+    felt, loop = (real.felt_figures(summary[key], "fx") for key in ("quality", "quality_classical_loop"))
+    return {"exit": code, "force": felt["force_rms"], "loop": loop["force_rms"], "made": felt["direction_made"],
             "sources": {s: sources.count(s) for s in ("mpc", "shifted", "brake")}}
 
 
