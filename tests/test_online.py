@@ -8,9 +8,10 @@ import pytest
 
 from desdemona import Model, profiles
 from desdemona.offline import OptimizeOptions, optimize
-from desdemona.mpc import MPC, REST_RATE, SHIFT_MAX, MPCOptions
+from desdemona.classical import tilt_angles
+from desdemona.mpc import MPC, REST_RATE, SHIFT_MAX, MPCOptions, _Solved
 from desdemona.online import OnlineOptions, run
-from desdemona.plan import advance
+from desdemona.plan import HOMING_ARRIVAL, HOMING_RATE, State, advance, homing_rate
 from desdemona.predictors import (HOLD_PERSISTENCE, PREDICTORS, HoldPredictor, cue_age, predict_hold, predict_linear,
                                   predict_perfect)
 from desdemona.perception import thesis_model
@@ -115,6 +116,56 @@ def test_a_long_outage_follows_the_last_plan_for_at_most_shift_max_then_brakes(p
     assert set(loop.sources[10 + shifted:45]) == {"brake"} and set(loop.sources[45:]) == {"mpc"}
     result, _ = check(model, path, loop.plan, step=options.step)
     assert result.passed, result.describe_violations()
+
+
+class Lost(MPC):
+    """An MPC that never gets a plan (its solver fails every cycle, without solving)."""
+
+    def _solve(self, q, qd, a, data, **kw):
+        zero = np.zeros((len(self.problem.steps), self.model.n))
+        return _Solved((zero, zero), False, 0.0, q, None)
+
+
+def test_homing_rate_centres_the_track_and_turns_each_gimbal_to_its_nearest_whole_turn(params):
+    """A braked machine goes home slowly once its arm is still: the track and heave towards their
+    centres at 0.03 m/s, each gimbal towards its attitude plus its nearest whole turn at 1 deg/s if
+    within a quarter turn of it (else it stays: the nearest upright pose may lie through a tilt), the
+    arm nowhere; slowing to arrive at rest; nothing while the arm turns."""
+    lim = Model(params, "full").limits
+    q = np.array([5.0, 3.9, -0.5, 0.3, 2 * np.pi - 0.2, 2.0])
+    rate = homing_rate(q, np.zeros(6), lim, 0)
+    turn, line = HOMING_RATE
+    np.testing.assert_allclose(rate, [0.0, -line, line, -turn, turn, 0.0])
+    assert not homing_rate(q, np.r_[REST_RATE, np.zeros(5)], lim, 0).any()
+    attitude = np.r_[0, 0, 0, 0.3, 0, 2.1]  # tilted homes: the outer gimbal there, the cabin 0.1 rad short
+    np.testing.assert_allclose(homing_rate(q, np.zeros(6), lim, 0, attitude)[[3, 5]], [0.0, turn])
+    near = np.array([0, 1e-3, 0, 0, 0, 0.0])  # 1 mm from the centre: sqrt(2 arrival e)
+    assert homing_rate(near, np.zeros(6), lim, 0)[1] == pytest.approx(-np.sqrt(2 * HOMING_ARRIVAL[1] * 1e-3))
+
+
+@pytest.mark.parametrize("forward", [0.0, 1.35])
+def test_a_lost_planner_brakes_then_brings_the_cabin_home_slowly(params, forward):
+    """With no plan for good (full, every solve failing), the brake stops the machine and then brings
+    it home at the homing rates, the cabin tilted by tilt coordination of the present force: level
+    under 1 g, pitched under a held forward force (as the classical washout tilts), every cycle within
+    every limit and no joint faster than its homing rate once stopped. On the 747 take-off with every
+    plan refused from 20 s, holding the pose where it stopped gave a felt force RMS of 1.65, going
+    level 1.89, the tilt 0.92 (the classical loop 0.95): benchmarks/outages.py."""
+    model = Model(params, "full")
+    options = MPCOptions(horizon=1.0, step=0.05)
+    mpc, g = Lost(model, options), params.gravity
+    t = np.arange(0.0, 1.05, 0.05)
+    values = np.tile([0.0, 0.0, 0.0, 0.0, forward, np.sqrt(g * g - forward * forward)], (len(t), 1))
+    state = State(np.array([0.0, 1.0, -0.3, 0.25, 0.1, -0.2]), np.r_[0.02, 0.5, -0.2, 0.1, 0.0, 0.05], np.zeros(6))
+    rates = []
+    for _ in range(round(40.0 / options.step)):
+        command = mpc.step(state, (t, values))
+        assert command.source == "brake" and mpc._safe_sequence(state, command.sequence, command.jerks)
+        state = state.advance(command.qdd, options.step, command.jerks[0])
+        rates.append(state.qd.copy())
+    roll, pitch = tilt_angles(0.0, forward, g)
+    np.testing.assert_allclose(state.q[1:], [0.0, 0.0, roll, 0.0, pitch], atol=1e-3)
+    assert np.all(np.abs(rates[40:]) <= np.r_[REST_RATE, HOMING_RATE[1], HOMING_RATE[1], [HOMING_RATE[0]] * 3] * 1.01)
 
 
 def test_brake_command_keeps_every_limit(params):

@@ -31,9 +31,11 @@ from typing import Literal, NamedTuple
 import numpy as np
 
 from desdemona._casadi import call
+from desdemona.classical import tilt_angles
 from desdemona.model import Model
 from desdemona.perception import VestibularModel
-from desdemona.plan import Plan, State, advance, settled_rate, stopping_extent, stopping_jerk
+from desdemona.plan import (REST_RATE, Plan, State, advance, braking_jerk, homing_rate, settled_rate,
+                            stopping_extent)
 from desdemona.problem import ProblemOptions
 from desdemona.profiles import ALIGNED_WEIGHTS, DesiredPath, at_least_g, vertical_force
 from desdemona.simulate import TOLERANCE
@@ -41,7 +43,6 @@ from desdemona.realtime import RealTimeIteration
 from desdemona.transcription import CueingProblem
 
 
-REST_RATE = 0.05  # rad/s: below this over a whole seed the yaw counts as still (0.01 m/s^2 centripetal at 4 m)
 #: How long [s] a fallback follows the last plan before it brakes, at most; the next plan then starts from a
 #: fresh seed (a plan's far part is no command to follow open-loop for seconds: "Fallback to the last plan").
 SHIFT_MAX = 2.0
@@ -288,6 +289,7 @@ class MPC:
         # each step's time since its interval's start, (steps, 1)
         self._offsets = (np.concatenate([np.arange(c) for c in self._counts]) * options.step)[:, None]
         self.plan_age = 0
+        self.present = None  # the last preview's present value
 
     def step(self, state, preview) -> Command:
         """The commands of the coming cycle from the state (q, qd[, qdd]) and the preview of S_d.
@@ -311,6 +313,7 @@ class MPC:
         self._z_d_next = None
         plan = None
         if not reason:
+            self.present = values[0].copy()  # the brake's home (homing)
             plan, success, elapsed, *_ = self._solve(q, qd, a, self._data(t, values))
             plan = self._per_step(*plan)
             if not success:
@@ -570,31 +573,28 @@ class MPC:
         return Command(np.array(sequence), "brake", time.perf_counter() - start, reason, np.array(jerks))
 
     def brake(self, q, qd, a=None) -> tuple[np.ndarray, np.ndarray]:
-        """The step's (acceleration, jerk) towards rest that keeps every limit over the step.
-
-        Without jerk limits: the strongest deceleration (at most ``braking`` x the acceleration limit,
-        not past zero rate within the step), scaled down until safe. With them: the acceleration turns
-        from ``a`` at most at the jerk limit towards a deceleration proportional to the rate, -qd / T,
-        with T the time the jerk limit needs to build up the braking deceleration and lose it again
-        (so the rate comes to rest without overshoot), at most ``braking`` x the acceleration limit; the
-        jerk is scaled down until safe. Where the travel ahead is shorter than that approach covers (qd T
-        and the ramp), the joint stops as quickly as its limits allow (:func:`~desdemona.plan.stopping_jerk`).
-        """
+        """The step's (acceleration, jerk) towards rest, then home (:meth:`homing`), that keeps every limit
+        over the step: with jerk limits :func:`~desdemona.plan.braking_jerk`, without them the strongest
+        change of rate (at most ``braking`` x the acceleration limit, not past it), scaled down until safe."""
         lim, h, braking = self.limits, self.options.step, self.options.braking
-        if not self.smooth:
-            full = -np.sign(qd) * np.minimum(braking * lim.acceleration, np.abs(qd) / h)
-            for scale in (1.0, 0.75, 0.5, 0.25, 0.1, 0.0):
-                if self._safe(q, qd, scale * full, np.zeros_like(qd)):
-                    return scale * full, np.zeros_like(qd)
-            return np.zeros_like(qd), np.zeros_like(qd)  # holding: the last resort (the check reports any excess)
-        a = np.zeros_like(qd) if a is None else np.asarray(a, dtype=float)
-        T = 2.0 * braking * lim.acceleration / lim.jerk + h
-        target = np.clip(-qd / T, -braking * lim.acceleration, braking * lim.acceleration)
-        full = np.clip((target - a) / h, -lim.jerk, lim.jerk)
-        ahead = np.where(qd > 0, lim.position_max - q, q - lim.position_min)  # inf without an end
-        short = ahead < np.abs(qd) * (T + (np.abs(a) + lim.acceleration) / lim.jerk + h)
-        full = np.where(short, stopping_jerk(qd, a, h, lim.acceleration, lim.jerk), full)
-        for scale in (1.0, 0.75, 0.5, 0.25, 0.1, 0.0):
-            if self._safe(q, qd, a, scale * full):
-                return a, scale * full
-        return a, full  # the last resort (the independent check reports any excess)
+        goal, a = self.homing(q, qd), np.zeros_like(qd) if a is None else np.asarray(a, dtype=float)
+        if self.smooth:
+            jerk = braking_jerk(q, qd, a, h, lim, braking, goal)
+            commands = [(a, scale * jerk) for scale in (1.0, 0.75, 0.5, 0.25, 0.1, 0.0)]
+        else:
+            full = np.clip((goal - qd) / h, -braking * lim.acceleration, braking * lim.acceleration)
+            commands = [(scale * full, np.zeros_like(qd)) for scale in (1.0, 0.75, 0.5, 0.25, 0.1, 0.0)]
+        for qdd, jerk in commands:
+            if self._safe(q, qd, qdd, jerk):
+                return qdd, jerk
+        # the last resort (the independent check reports any excess): the whole jerk, or holding
+        return commands[0] if self.smooth else commands[-1]
+
+    def homing(self, q, qd) -> np.ndarray:
+        """The rates that take a braked machine home (:func:`~desdemona.plan.homing_rate`), where the cabin
+        tilts (``full``) tilted by the classical washout's tilt coordination of the last present force
+        (:func:`~desdemona.classical.tilt_angles`): "Return home in an outage"."""
+        free, attitude = self.model.config.free, np.zeros(self.model.n)
+        if self.present is not None and 3 in free and 5 in free and not self.model.config.takes_modulus:
+            attitude[[free.index(3), free.index(5)]] = tilt_angles(*self.present[3:5], self.model.params.gravity)
+        return homing_rate(q, qd, self.limits, free.index(0) if 0 in free else None, attitude)

@@ -220,6 +220,55 @@ def stopping_jerk(qd, a, h: float, A, J) -> np.ndarray:
     return s * np.clip(k, -J, J)  # -J where even the strongest ramp leaves the rate along the motion
 
 
+def braking_jerk(q, qd, a, h: float, limits, braking: float, rate=0.0) -> np.ndarray:
+    """Per joint the jerk of one step of a brake towards the rate ``rate`` (default rest) [/s^3]: the
+    acceleration turned from ``a`` at most at the jerk limit J towards (rate - qd) / T, at most
+    ``braking`` x the acceleration limit A, with T = 2 braking A / J + h the time the jerk limit needs
+    to build that deceleration up and lose it again (the rate then settles without overshoot). Where
+    the travel ahead of a joint is shorter than that approach covers, it stops as quickly as its limits
+    allow (:func:`stopping_jerk`). ``limits``: the machine's :class:`~desdemona.params.Limits`."""
+    A, J = limits.acceleration, limits.jerk
+    T = 2.0 * braking * A / J + h
+    target = np.clip((rate - qd) / T, -braking * A, braking * A)
+    full = np.clip((target - a) / h, -J, J)
+    ahead = np.where(qd > 0, limits.position_max - q, q - limits.position_min)  # inf without an end
+    short = ahead < np.abs(qd) * (T + (np.abs(a) + A) / J + h)
+    return np.where(short, stopping_jerk(qd, a, h, A, J), full)
+
+
+#: How fast a braked machine goes home once its arm is still (:func:`homing_rate`): a turning joint at
+#: 1 deg/s (three in line at most 3 deg/s, the canals' threshold of roll), the track and heave at 0.03
+#: m/s; and how gently each arrives [/s^2]. The brake reaches that rate within its T (0.27 s): 0.11
+#: m/s^2 on the track, under the otoliths' threshold of 0.17 ("Return home in an outage").
+HOMING_RATE, HOMING_ARRIVAL = (np.radians(1.0), 0.03), (np.radians(0.5), 0.02)
+
+#: Below this rate [rad/s] the arm counts as still (0.01 m/s^2 of centripetal force at 4 m).
+REST_RATE = 0.05
+
+
+def homing_rate(q, qd, limits, arm: int | None, attitude=None) -> np.ndarray:
+    """(n,) the rates that take a braked machine home slowly once its arm (joint ``arm`` of q, None
+    where it is held) is still, below :data:`REST_RATE`: the joints with both ends (track, heave) to
+    their centres, each other joint but the arm (whose angle nothing feels) to ``attitude`` (n,
+    default 0) plus its nearest whole turn if within a quarter turn of it, at :data:`HOMING_RATE`,
+    slowing at :data:`HOMING_ARRIVAL` so as to arrive at rest: -sign(e) min(rate, sqrt(2 arrival
+    |e|)), e the way from home. Zero while the arm turns: a cabin tilted into its centripetal force
+    stays so."""
+    q = np.asarray(q, dtype=float)
+    if arm is not None and abs(qd[arm]) >= REST_RATE:
+        return np.zeros_like(q)
+    attitude = np.zeros_like(q) if attitude is None else np.asarray(attitude, dtype=float)
+    linear = np.isfinite(limits.position_min) & np.isfinite(limits.position_max)
+    turns = 2.0 * np.pi * np.round((q - attitude) / (2.0 * np.pi))
+    centre = (np.where(linear, limits.position_min, 0.0) + np.where(linear, limits.position_max, 0.0)) / 2.0
+    e = q - np.where(linear, centre, turns + attitude)
+    going = linear | (np.abs(e) <= 0.5 * np.pi)
+    if arm is not None:
+        going[arm] = False
+    rate, arrival = (np.where(linear, *pair[::-1]) for pair in (HOMING_RATE, HOMING_ARRIVAL))
+    return np.where(going, -np.sign(e) * np.minimum(rate, np.sqrt(2.0 * arrival * np.abs(e))), 0.0)
+
+
 def stopping_time(qd, a, A, J) -> np.ndarray:
     """Per joint the shortest time [s] to rest from rate ``qd`` and acceleration ``a`` with the
     acceleration within ``A`` and the jerk within ``J`` (continuous time): with b the acceleration along
