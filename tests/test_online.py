@@ -8,8 +8,8 @@ import pytest
 
 from desdemona import Model, profiles
 from desdemona.offline import OptimizeOptions, optimize
-from desdemona.classical import tilt_angles
-from desdemona.mpc import MPC, REST_RATE, SHIFT_MAX, MPCOptions, _Solved
+from desdemona.classical import still_home, tilt_angles
+from desdemona.mpc import HOMING_AFTER, MPC, REST_RATE, SHIFT_MAX, MPCOptions, _Solved
 from desdemona.online import OnlineOptions, run
 from desdemona.plan import HOMING_ARRIVAL, HOMING_RATE, State, advance, homing_rate
 from desdemona.predictors import (HOLD_PERSISTENCE, PREDICTORS, HoldPredictor, cue_age, predict_hold, predict_linear,
@@ -126,29 +126,36 @@ class Lost(MPC):
         return _Solved((zero, zero), False, 0.0, q, None)
 
 
-def test_homing_rate_centres_the_track_and_turns_each_gimbal_to_its_nearest_whole_turn(params):
-    """A braked machine goes home slowly once its arm is still: the track and heave towards their
-    centres at 0.03 m/s, each gimbal towards its attitude plus its nearest whole turn at 1 deg/s if
-    within a quarter turn of it (else it stays: the nearest upright pose may lie through a tilt), the
-    arm nowhere; slowing to arrive at rest; nothing while the arm turns."""
-    lim = Model(params, "full").limits
+def test_home_is_where_a_still_cabin_cues_the_present_force_and_is_reached_slowly(params):
+    """classical.still_home: the track and heave centred, the inner gimbal at its nearest half turn, the
+    cabin tilted by tilt coordination so that, still, it feels the force's horizontal part exactly
+    (the model's S there), whichever half turn; a tilting joint more than a quarter turn from its home
+    has none (NaN), nor has the arm. plan.homing_rate goes there at the homing rates, slowing to arrive
+    at rest, and nowhere while the arm turns."""
+    model = Model(params, "full")
+    for force in ([0.0, 1.35, 9.7], [1.0, -2.0, 9.5]):
+        for psi in (0.1, 3.0, -3.1, 6.2):
+            home = still_home(np.array([5.0, 1.0, -0.5, 0.1, psi, 0.1]), model, np.array(force))
+            assert np.isnan(home[0]) and home[1] == home[2] == 0.0 and home[4] == pytest.approx(np.pi * round(psi / np.pi))
+            felt = np.asarray(model.S(np.nan_to_num(home), np.zeros(6), np.zeros(6))).ravel()[3:]
+            np.testing.assert_allclose(felt[1], force[1], atol=1e-9)  # f_y = g sin q4 exactly
+            assert felt[0] == pytest.approx(force[0], rel=0.03, abs=1e-9)  # f_x = g cos q4 sin q6
+    assert np.isnan(still_home(np.array([0.0, 0, 0, 0, 0, 2.0]), model)[5])  # upside down-ish: stays
     q = np.array([5.0, 3.9, -0.5, 0.3, 2 * np.pi - 0.2, 2.0])
-    rate = homing_rate(q, np.zeros(6), lim, 0)
+    linear, home = np.isfinite(model.limits.position_min), still_home(q, model)
     turn, line = HOMING_RATE
-    np.testing.assert_allclose(rate, [0.0, -line, line, -turn, turn, 0.0])
-    assert not homing_rate(q, np.r_[REST_RATE, np.zeros(5)], lim, 0).any()
-    attitude = np.r_[0, 0, 0, 0.3, 0, 2.1]  # tilted homes: the outer gimbal there, the cabin 0.1 rad short
-    np.testing.assert_allclose(homing_rate(q, np.zeros(6), lim, 0, attitude)[[3, 5]], [0.0, turn])
+    np.testing.assert_allclose(homing_rate(q, np.zeros(6), home, linear, 0), [0.0, -line, line, -turn, turn, 0.0])
+    assert not homing_rate(q, np.r_[REST_RATE, np.zeros(5)], home, linear, 0).any()
     near = np.array([0, 1e-3, 0, 0, 0, 0.0])  # 1 mm from the centre: sqrt(2 arrival e)
-    assert homing_rate(near, np.zeros(6), lim, 0)[1] == pytest.approx(-np.sqrt(2 * HOMING_ARRIVAL[1] * 1e-3))
+    assert homing_rate(near, np.zeros(6), np.zeros(6), linear, 0)[1] == pytest.approx(-np.sqrt(2 * HOMING_ARRIVAL[1] * 1e-3))
 
 
 @pytest.mark.parametrize("forward", [0.0, 1.35])
 def test_a_lost_planner_brakes_then_brings_the_cabin_home_slowly(params, forward):
-    """With no plan for good (full, every solve failing), the brake stops the machine and then brings
-    it home at the homing rates, the cabin tilted by tilt coordination of the present force: level
-    under 1 g, pitched under a held forward force (as the classical washout tilts), every cycle within
-    every limit and no joint faster than its homing rate once stopped. On the 747 take-off with every
+    """With no plan for good (full, every solve failing), the brake stops the machine, holds it for
+    HOMING_AFTER, then brings it home at the homing rates, the cabin tilted by tilt coordination of the
+    present force: level under 1 g, pitched under a held forward force (as the classical washout
+    tilts), every cycle within every limit and no joint faster than its homing rate once stopped. On the 747 take-off with every
     plan refused from 20 s, holding the pose where it stopped gave a felt force RMS of 1.65, going
     level 1.89, the tilt 0.92 (the classical loop 0.95): benchmarks/outages.py."""
     model = Model(params, "full")
@@ -156,16 +163,19 @@ def test_a_lost_planner_brakes_then_brings_the_cabin_home_slowly(params, forward
     mpc, g = Lost(model, options), params.gravity
     t = np.arange(0.0, 1.05, 0.05)
     values = np.tile([0.0, 0.0, 0.0, 0.0, forward, np.sqrt(g * g - forward * forward)], (len(t), 1))
-    state = State(np.array([0.0, 1.0, -0.3, 0.25, 0.1, -0.2]), np.r_[0.02, 0.5, -0.2, 0.1, 0.0, 0.05], np.zeros(6))
-    rates = []
+    state = State(np.array([0.0, 0.5, -0.3, 0.25, 0.1, -0.2]), np.r_[0.02, 0.2, -0.2, 0.1, 0.0, 0.05], np.zeros(6))
+    rates, positions = [], []
     for _ in range(round(40.0 / options.step)):
         command = mpc.step(state, (t, values))
         assert command.source == "brake" and mpc._safe_sequence(state, command.sequence, command.jerks)
         state = state.advance(command.qdd, options.step, command.jerks[0])
         rates.append(state.qd.copy())
+        positions.append(state.q.copy())
+    stopped = round(HOMING_AFTER / options.step)  # held where it stopped until then
+    np.testing.assert_allclose(positions[stopped - 1], positions[stopped * 3 // 4], atol=2e-3)  # coming to rest
     roll, pitch = tilt_angles(0.0, forward, g)
     np.testing.assert_allclose(state.q[1:], [0.0, 0.0, roll, 0.0, pitch], atol=1e-3)
-    assert np.all(np.abs(rates[40:]) <= np.r_[REST_RATE, HOMING_RATE[1], HOMING_RATE[1], [HOMING_RATE[0]] * 3] * 1.01)
+    assert np.all(np.abs(rates[stopped:]) <= np.r_[REST_RATE, HOMING_RATE[1], HOMING_RATE[1], [HOMING_RATE[0]] * 3] * 1.01)
 
 
 def test_brake_command_keeps_every_limit(params):

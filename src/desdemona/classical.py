@@ -284,6 +284,38 @@ def _gimbal_targets(model: Model, q1, qd1, qdd1) -> np.ndarray:
     return np.stack([{3: outer, 4: np.zeros(len(q1)), 5: cabin}[joint_of[i]] for i in range(1, n)], axis=1)
 
 
+def still_home(q, model: Model, force=None) -> np.ndarray:
+    """(n,) where a still machine cues the specific force ``force`` (3,) [m/s^2] best, nearest the free
+    joints' positions ``q``; NaN where a joint has no home to go to (the fallback's brake brings the
+    machine there, :func:`desdemona.plan.homing_rate`):
+
+    - the arm: none (nothing feels its angle at rest);
+    - the track and heave: their centres;
+    - the inner gimbal q5 (the cabin's yaw while it is level): its nearest half turn, at which the
+      outer gimbal q4 and the cabin q6 tilt the cabin about its own x and y (at a quarter turn both
+      would tilt it about one axis, H = Rx(q4) Rz(q5) Ry(q6));
+    - q4 and q6: tilt coordination of ``force`` (:func:`tilt_angles`, as :func:`steady_start` tilts;
+      level where ``force`` is None or the cabin follows the force, ``dfs``), q4's sign turned with a
+      half turn of q5, plus the nearest whole turn; none where that lies more than a quarter turn
+      away: the way there may lead through a cabin upside down.
+    """
+    free, lim, q = model.config.free, model.limits, np.asarray(q, dtype=float)
+    home = np.where(np.isfinite(lim.position_min) & np.isfinite(lim.position_max),
+                    0.5 * (np.nan_to_num(lim.position_min) + np.nan_to_num(lim.position_max)), np.nan)
+    roll = pitch = psi = 0.0
+    if force is not None and not model.config.takes_modulus:
+        roll, pitch = tilt_angles(force[0], force[1], model.params.gravity)
+    if 4 in free:
+        k = free.index(4)
+        home[k] = psi = math.pi * round(q[k] / math.pi)
+    for joint, angle in ((3, math.cos(psi) * roll), (5, pitch)):
+        if joint in free:
+            k = free.index(joint)
+            nearest = angle + 2.0 * math.pi * round((q[k] - angle) / (2.0 * math.pi))
+            home[k] = nearest if abs(q[k] - nearest) <= 0.5 * math.pi else np.nan
+    return home
+
+
 def steady_start(path: DesiredPath, model: Model) -> tuple[np.ndarray, np.ndarray]:
     """(q0, qd0) of the free joints for a session that begins in steady state with the path's first
     sample, as a simulator is trimmed before its run.

@@ -31,7 +31,7 @@ from typing import Literal, NamedTuple
 import numpy as np
 
 from desdemona._casadi import call
-from desdemona.classical import tilt_angles
+from desdemona.classical import still_home
 from desdemona.model import Model
 from desdemona.perception import VestibularModel
 from desdemona.plan import (REST_RATE, Plan, State, advance, braking_jerk, homing_rate, settled_rate,
@@ -49,6 +49,9 @@ SHIFT_MAX = 2.0
 #: Where the plan's tail doubles [s] on a configuration whose cabin tilts (``MPCOptions.far`` "auto"): beyond
 #: it a 4 s plan on ``full`` has intervals of 0.2 s, 46 intervals in all instead of 56 ("Coarse tail of the plan").
 FAR = 2.0
+#: How long [s] the brake holds the machine where it stopped before it brings it home (:meth:`MPC.homing`):
+#: a gap in the plans keeps the pose the next plan starts from; an outage that lasts goes home.
+HOMING_AFTER = 2.0
 
 
 @dataclass(frozen=True)
@@ -288,7 +291,7 @@ class MPC:
         self._counts = np.rint(self.problem.steps / options.step).astype(int)  # steps per interval
         # each step's time since its interval's start, (steps, 1)
         self._offsets = (np.concatenate([np.arange(c) for c in self._counts]) * options.step)[:, None]
-        self.plan_age = 0
+        self.plan_age = self.braked = 0  # steps since the last plan began; steps braked in a row
         self.present = None  # the last preview's present value
 
     def step(self, state, preview) -> Command:
@@ -322,7 +325,7 @@ class MPC:
                 reason, plan = f"deadline missed ({elapsed * 1e3:.1f} ms > {self.deadline * 1e3:.1f} ms)", None
         r = self.options.replan_steps
         if plan is not None and self._safe_sequence(now, plan[0][:r], plan[1][:r]):
-            self.plan, self.plan_age = plan, 0
+            self.plan, self.plan_age, self.braked = plan, 0, 0
             command = Command(plan[0][:r].copy(), "mpc", time.perf_counter() - start, jerk=plan[1][:r].copy())
         else:
             reason = reason or "plan fails the limit check"
@@ -565,6 +568,7 @@ class MPC:
             if self._safe_sequence(state, sequence, jerks):
                 return Command(sequence.copy(), "shifted", time.perf_counter() - start, reason, jerks.copy())
         self.plan, sequence, jerks = None, [], []  # a fresh seed for the next plan
+        self.braked += r
         for _ in range(r):
             qdd, jerk = self.brake(*state)
             sequence.append(qdd)
@@ -573,17 +577,15 @@ class MPC:
         return Command(np.array(sequence), "brake", time.perf_counter() - start, reason, np.array(jerks))
 
     def brake(self, q, qd, a=None) -> tuple[np.ndarray, np.ndarray]:
-        """The step's (acceleration, jerk) towards rest, then home (:meth:`homing`), that keeps every limit
-        over the step: with jerk limits :func:`~desdemona.plan.braking_jerk`, without them the strongest
-        change of rate (at most ``braking`` x the acceleration limit, not past it), scaled down until safe."""
-        lim, h, braking = self.limits, self.options.step, self.options.braking
-        goal, a = self.homing(q, qd), np.zeros_like(qd) if a is None else np.asarray(a, dtype=float)
-        if self.smooth:
-            jerk = braking_jerk(q, qd, a, h, lim, braking, goal)
-            commands = [(a, scale * jerk) for scale in (1.0, 0.75, 0.5, 0.25, 0.1, 0.0)]
-        else:
-            full = np.clip((goal - qd) / h, -braking * lim.acceleration, braking * lim.acceleration)
-            commands = [(scale * full, np.zeros_like(qd)) for scale in (1.0, 0.75, 0.5, 0.25, 0.1, 0.0)]
+        """The step's (acceleration, jerk) towards rest, and after :data:`HOMING_AFTER` of braking in a
+        row towards home (:meth:`homing`), that keeps every limit over the step: with jerk limits
+        :func:`~desdemona.plan.braking_jerk`, without them the strongest change of rate (at most
+        ``braking`` x the acceleration limit); scaled down until safe."""
+        lim, h, most = self.limits, self.options.step, self.options.braking * self.limits.acceleration
+        goal = self.homing(q, qd) if self.braked * h >= HOMING_AFTER else np.zeros_like(qd)  # a lasting outage
+        a, zero = (np.zeros_like(qd) if a is None else np.asarray(a, dtype=float)), np.zeros_like(qd)
+        full = braking_jerk(q, qd, a, h, lim, self.options.braking, goal) if self.smooth else np.clip((goal - qd) / h, -most, most)
+        commands = [(a, s * full) if self.smooth else (s * full, zero) for s in (1.0, 0.75, 0.5, 0.25, 0.1, 0.0)]
         for qdd, jerk in commands:
             if self._safe(q, qd, qdd, jerk):
                 return qdd, jerk
@@ -591,10 +593,8 @@ class MPC:
         return commands[0] if self.smooth else commands[-1]
 
     def homing(self, q, qd) -> np.ndarray:
-        """The rates that take a braked machine home (:func:`~desdemona.plan.homing_rate`), where the cabin
-        tilts (``full``) tilted by the classical washout's tilt coordination of the last present force
-        (:func:`~desdemona.classical.tilt_angles`): "Return home in an outage"."""
-        free, attitude = self.model.config.free, np.zeros(self.model.n)
-        if self.present is not None and 3 in free and 5 in free and not self.model.config.takes_modulus:
-            attitude[[free.index(3), free.index(5)]] = tilt_angles(*self.present[3:5], self.model.params.gravity)
-        return homing_rate(q, qd, self.limits, free.index(0) if 0 in free else None, attitude)
+        """The rates that take a braked machine home (:func:`~desdemona.plan.homing_rate`): where a still
+        machine cues the last present force best (:func:`~desdemona.classical.still_home`)."""
+        free, force = self.model.config.free, None if self.present is None else self.present[3:]
+        home = still_home(q, self.model, force)
+        return homing_rate(q, qd, home, np.isfinite(self.limits.position_min), free.index(0) if 0 in free else None)

@@ -246,27 +246,19 @@ HOMING_RATE, HOMING_ARRIVAL = (np.radians(1.0), 0.03), (np.radians(0.5), 0.02)
 REST_RATE = 0.05
 
 
-def homing_rate(q, qd, limits, arm: int | None, attitude=None) -> np.ndarray:
-    """(n,) the rates that take a braked machine home slowly once its arm (joint ``arm`` of q, None
-    where it is held) is still, below :data:`REST_RATE`: the joints with both ends (track, heave) to
-    their centres, each other joint but the arm (whose angle nothing feels) to ``attitude`` (n,
-    default 0) plus its nearest whole turn if within a quarter turn of it, at :data:`HOMING_RATE`,
-    slowing at :data:`HOMING_ARRIVAL` so as to arrive at rest: -sign(e) min(rate, sqrt(2 arrival
-    |e|)), e the way from home. Zero while the arm turns: a cabin tilted into its centripetal force
-    stays so."""
-    q = np.asarray(q, dtype=float)
+def homing_rate(q, qd, home, linear, arm: int | None) -> np.ndarray:
+    """(n,) the rates that take a braked machine ``home`` (n,) slowly, once its arm (joint ``arm`` of
+    q, None where it is held) is still, below :data:`REST_RATE`: each joint with a home (not NaN) at
+    :data:`HOMING_RATE` (the second of the pair where ``linear``, (n,) bool: the track and heave),
+    slowing at :data:`HOMING_ARRIVAL` so as to arrive at rest, -sign(e) min(rate, sqrt(2 arrival |e|)),
+    e = q - home. Zero while the arm turns: a cabin tilted into its centripetal force stays so.
+    :func:`desdemona.classical.still_home` says where home is."""
+    q, home = np.asarray(q, dtype=float), np.asarray(home, dtype=float)
     if arm is not None and abs(qd[arm]) >= REST_RATE:
         return np.zeros_like(q)
-    attitude = np.zeros_like(q) if attitude is None else np.asarray(attitude, dtype=float)
-    linear = np.isfinite(limits.position_min) & np.isfinite(limits.position_max)
-    turns = 2.0 * np.pi * np.round((q - attitude) / (2.0 * np.pi))
-    centre = (np.where(linear, limits.position_min, 0.0) + np.where(linear, limits.position_max, 0.0)) / 2.0
-    e = q - np.where(linear, centre, turns + attitude)
-    going = linear | (np.abs(e) <= 0.5 * np.pi)
-    if arm is not None:
-        going[arm] = False
-    rate, arrival = (np.where(linear, *pair[::-1]) for pair in (HOMING_RATE, HOMING_ARRIVAL))
-    return np.where(going, -np.sign(e) * np.minimum(rate, np.sqrt(2.0 * arrival * np.abs(e))), 0.0)
+    e = np.nan_to_num(q - home)
+    rate, arrival = (np.where(linear, pair[1], pair[0]) for pair in (HOMING_RATE, HOMING_ARRIVAL))
+    return -np.sign(e) * np.minimum(rate, np.sqrt(2.0 * arrival * np.abs(e)))
 
 
 def stopping_time(qd, a, A, J) -> np.ndarray:
