@@ -226,7 +226,7 @@ def braking_jerk(q, qd, a, h: float, limits, braking: float, rate=0.0) -> np.nda
     ``braking`` x the acceleration limit A, with T = 2 braking A / J + h the time the jerk limit needs
     to build that deceleration up and lose it again (the rate then settles without overshoot). Where
     the travel ahead of a joint is shorter than that approach covers, it stops as quickly as its limits
-    allow (:func:`stopping_jerk`). ``limits``: the machine's :class:`~desdemona.params.Limits`."""
+    allow (:func:`stopping_jerk`). ``limits``: the machine's :class:`~desdemona.configs.Limits`."""
     A, J = limits.acceleration, limits.jerk
     T = 2.0 * braking * A / J + h
     target = np.clip((rate - qd) / T, -braking * A, braking * A)
