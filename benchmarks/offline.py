@@ -103,6 +103,7 @@ def main(argv=None) -> int:
     parser.add_argument("--quick", action="store_true", help="skip the long rows")
     args = parser.parse_args(argv)
     allocator.reuse_freed_memory()
+    allocator.one_blas_thread()
     os.environ["DESDEMONA_CACHE"] = tempfile.mkdtemp(prefix="desdemona-benchmark-")
     rows: list[Row] = []
     toy, params = thesis_toy_params(), default_params()

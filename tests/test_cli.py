@@ -1,5 +1,7 @@
 """The command line: exit codes, messages and the model summary; how a run starts and ends."""
 
+import os
+
 import numpy as np
 import pytest
 
@@ -19,6 +21,19 @@ def test_model_toy_yaw_track(capsys):
     assert main(["model", "--config", "yaw-track", "--base", "thesis-toy"]) == 0
     out = capsys.readouterr().out
     assert "'thesis-toy'" in out and "held at" in out
+
+
+def test_the_command_runs_openblas_on_one_thread_unless_told_otherwise(monkeypatch, capsys):
+    """A command sets OPENBLAS_NUM_THREADS=1 before its first solve loads CasADi's OpenBLAS, whose idle
+    threads otherwise spin between a factorisation's small blocks and take a core from the other
+    start (allocator.one_blas_thread); a user's own setting stays."""
+    monkeypatch.delenv("OPENBLAS_NUM_THREADS", raising=False)
+    assert main(["model", "--config", "dfs"]) == 0
+    assert os.environ["OPENBLAS_NUM_THREADS"] == "1"
+    monkeypatch.setenv("OPENBLAS_NUM_THREADS", "2")
+    assert main(["model", "--config", "dfs"]) == 0
+    assert os.environ["OPENBLAS_NUM_THREADS"] == "2"
+    capsys.readouterr()
 
 
 def test_unknown_configuration_lists_valid_ones(capsys):

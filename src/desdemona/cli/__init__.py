@@ -37,6 +37,7 @@ def main(argv: list[str] | None = None) -> int:
     from desdemona.simulate import LimitViolation
 
     allocator.reuse_freed_memory()  # IPOPT's factorisations reuse their workspace (allocator.py)
+    allocator.one_blas_thread()  # one process per start, no spinning BLAS threads between them
     try:
         # args.held: the output folders this run holds (report.claim), released as it ends
         with guard.interruptible(), contextlib.ExitStack() as args.held:
