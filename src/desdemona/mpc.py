@@ -316,7 +316,7 @@ class MPC:
         self._z_d_next = None
         plan = None
         if not reason:
-            self.present = values[0].copy()  # the brake's home (homing)
+            self.present = values[0].copy() if values.ndim == 2 else None  # S_d now: the brake's home (homing)
             plan, success, elapsed, *_ = self._solve(q, qd, a, self._data(t, values))
             plan = self._per_step(*plan)
             if not success:

@@ -238,9 +238,11 @@ def braking_jerk(q, qd, a, h: float, limits, braking: float, rate=0.0) -> np.nda
 
 #: How fast a braked machine goes home once its arm is still (:func:`homing_rate`): a turning joint at
 #: 1 deg/s (three in line at most 3 deg/s, the canals' threshold of roll), the track and heave at 0.03
-#: m/s; and how gently each arrives [/s^2]. The brake reaches that rate within its T (0.27 s): 0.11
-#: m/s^2 on the track, under the otoliths' threshold of 0.17 ("Return home in an outage").
-HOMING_RATE, HOMING_ARRIVAL = (np.radians(1.0), 0.03), (np.radians(0.5), 0.02)
+#: m/s, each slowing in proportion to the way left within the last HOMING_TIME [s] of it, so that it
+#: settles without overshoot (0.5 deg/s^2 and 0.015 m/s^2 at most). The brake reaches the rate within
+#: its T (0.27 s): 0.11 m/s^2 on the track, under the otoliths' threshold of 0.17 ("Return home in an
+#: outage").
+HOMING_RATE, HOMING_TIME = (np.radians(1.0), 0.03), 2.0
 
 #: Below this rate [rad/s] the arm counts as still (0.01 m/s^2 of centripetal force at 4 m).
 REST_RATE = 0.05
@@ -250,15 +252,14 @@ def homing_rate(q, qd, home, linear, arm: int | None) -> np.ndarray:
     """(n,) the rates that take a braked machine ``home`` (n,) slowly, once its arm (joint ``arm`` of
     q, None where it is held) is still, below :data:`REST_RATE`: each joint with a home (not NaN) at
     :data:`HOMING_RATE` (the second of the pair where ``linear``, (n,) bool: the track and heave),
-    slowing at :data:`HOMING_ARRIVAL` so as to arrive at rest, -sign(e) min(rate, sqrt(2 arrival |e|)),
-    e = q - home. Zero while the arm turns: a cabin tilted into its centripetal force stays so.
-    :func:`desdemona.classical.still_home` says where home is."""
+    and within :data:`HOMING_TIME` of home at the way left over that time, -clip(e / HOMING_TIME,
+    -rate, rate) with e = q - home. Zero while the arm turns: a cabin tilted into its centripetal
+    force stays so. :func:`desdemona.classical.still_home` says where home is."""
     q, home = np.asarray(q, dtype=float), np.asarray(home, dtype=float)
     if arm is not None and abs(qd[arm]) >= REST_RATE:
         return np.zeros_like(q)
-    e = np.nan_to_num(q - home)
-    rate, arrival = (np.where(linear, pair[1], pair[0]) for pair in (HOMING_RATE, HOMING_ARRIVAL))
-    return -np.sign(e) * np.minimum(rate, np.sqrt(2.0 * arrival * np.abs(e)))
+    rate = np.where(linear, HOMING_RATE[1], HOMING_RATE[0])
+    return -np.clip(np.nan_to_num(q - home) / HOMING_TIME, -rate, rate)
 
 
 def stopping_time(qd, a, A, J) -> np.ndarray:
