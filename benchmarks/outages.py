@@ -7,10 +7,13 @@ Each run is the ``online`` command on a corpus case with ``--predictor hold --de
 late by the clock), in this process, with a chosen share of the plans refused as late, deterministically:
 ``random90`` refuses 90 % of them at random (seeded), ``burstN`` every plan in the N s from second 3 of
 every 6 s of the session (an outage of N s, then 6 - N s of plans), ``lostN`` every plan from second N
-on (the planner lost for good). The placed start's solves are never refused. Per run, read as ``real.felt_figures`` reads them: the felt force RMS of the vector |f - f_d|
-[m/s^2], the classical loop's from the same run, and the peak felt direction the machine made [deg]
-(:func:`desdemona.metrics.direction_made`); the felt direction's RMS error [deg] and the peak felt
-rotation [deg/s]; and the cycles by source (fresh plan, the last plan followed, the brake). "Fallback to the last plan" in ``docs/benchmarks.md`` has the table.
+on (the planner lost for good). The placed start's solves are never refused.
+
+Per run, read as ``real.felt_figures`` reads them: the felt force RMS of the vector |f - f_d| [m/s^2],
+the classical loop's from the same run, the peak felt direction the machine made [deg]
+(:func:`desdemona.metrics.direction_made`), the felt direction's RMS error [deg], the peak felt
+rotation [deg/s]; and the cycles by source (fresh plan, the last plan followed, the brake). "Fallback to
+the last plan" and "Return home in an outage" in ``docs/benchmarks.md`` have the tables.
 """
 
 from __future__ import annotations
