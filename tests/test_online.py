@@ -879,16 +879,17 @@ def test_the_classical_loop_starts_on_the_gimbal_branch_it_steers_from():
     assert np.all(_loop_start(Model(config="yaw-track-cabin"), placed[[0, 1, 5]], np.zeros(3)) == placed[[0, 1, 5]])
 
 
-def test_the_felt_rotation_beyond_its_band_is_priced_again(params):
+def test_the_felt_rotation_beyond_its_band_and_its_ceiling_is_priced_again(params):
     """With ``rotation_band`` each sub-step adds the felt rotation beyond the band (per canal channel,
     either way) to the residuals, BAND_WEIGHT times its weight: nothing within the band, the excess
-    beyond it."""
+    beyond it; ``rotation_ceiling`` adds the excess beyond the ceiling again, CEILING_WEIGHT times."""
     from desdemona.perception import canals_model
-    from desdemona.problem import BAND_WEIGHT
+    from desdemona.problem import BAND_WEIGHT, CEILING_WEIGHT
 
     model = Model(params, "yaw-track-cabin")
     options = dataclasses.replace(OPTIONS, perception=canals_model(), substeps=1)
-    plain, banded = (MPC(model, dataclasses.replace(options, rotation_band=band)).problem for band in (None, 2.0))
+    plain, banded, ceiled = (MPC(model, dataclasses.replace(options, rotation_band=band, rotation_ceiling=top)).problem
+                             for band, top in ((None, None), (2.0, None), (2.0, 2.75)))
     thresholds = np.asarray(canals_model().thresholds[:3])
     x, u = np.zeros(plain.nx), np.zeros(plain.nu)
     data = plain.with_steps(np.zeros((6, plain.N)))[:, 0]
@@ -896,19 +897,24 @@ def test_the_felt_rotation_beyond_its_band_is_priced_again(params):
     for felt in (np.array([0.5, -1.5, 1.9]), np.array([3.0, -2.5, 0.0])):  # in thresholds
         z = felt * thresholds / plain.filter.C[np.arange(3), np.arange(3)]  # at rest: felt = C z
         x[plain.n_motion:] = z
-        r0, r1 = (np.asarray(p.residual(x, u, data)).ravel() for p in (plain, banded))
-        assert len(r1) == len(r0) + 3
-        beyond = np.sign(felt) * np.maximum(np.abs(felt) - 2.0, 0.0) * thresholds
-        expected = np.sqrt(BAND_WEIGHT * h / T * plain.cost_weights[:3]) * beyond
-        np.testing.assert_allclose(r1[6:9], expected, atol=1e-12)
+        r0, r1, r2 = (np.asarray(p.residual(x, u, data)).ravel() for p in (plain, banded, ceiled))
+        assert len(r1) == len(r0) + 3 and len(r2) == len(r0) + 6
+        for residuals, width, weight, at in ((r1, 2.0, BAND_WEIGHT, 6), (r2, 2.0, BAND_WEIGHT, 6),
+                                             (r2, 2.75, CEILING_WEIGHT, 9)):
+            beyond = np.sign(felt) * np.maximum(np.abs(felt) - width, 0.0) * thresholds
+            expected = np.sqrt(weight * h / T * plain.cost_weights[:3]) * beyond
+            np.testing.assert_allclose(residuals[at:at + 3], expected, atol=1e-12)
         np.testing.assert_allclose(np.delete(r1, np.s_[6:9]), r0, atol=1e-12)
-    with pytest.raises(ValueError, match="perception model"):
-        ProblemOptions(rotation_band=1.0)
+        np.testing.assert_allclose(np.delete(r2, np.s_[6:12]), r0, atol=1e-12)
+    assert np.any(r2[9:12] != 0)  # the second felt rotation reaches beyond the ceiling
+    for name in ("rotation_band", "rotation_ceiling"):
+        with pytest.raises(ValueError, match="perception model"):
+            ProblemOptions(**{name: 1.0})
 
 
 def test_online_weighs_the_felt_rotation_by_default_where_the_path_is_s(tmp_path, capsys):
-    """``online`` takes the canals model and a band of one threshold, but on dfs-yaw (the modulus alone);
-    --perception none and --rotation-band none switch them off; the felt figures are judged through
+    """``online`` takes the canals model, a band of one threshold and a ceiling of 20, but on dfs-yaw (the
+    modulus alone); --perception none, --rotation-band none and --rotation-ceiling none switch them off; the felt figures are judged through
     the thesis' model whatever the plan weighed."""
     from desdemona import session
     from desdemona.cli import main
@@ -918,17 +924,20 @@ def test_online_weighs_the_felt_rotation_by_default_where_the_path_is_s(tmp_path
                  "--deadline", "100", "--out", str(out), "--no-view"]) == 0
     summary = json.loads((out / "summary.json").read_text())
     assert summary["options"]["mpc"]["perception"]["name"] == "canals"
-    assert summary["options"]["mpc"]["rotation_band"] == 1.0
+    assert (summary["options"]["mpc"]["rotation_band"], summary["options"]["mpc"]["rotation_ceiling"]) == (1.0, 20.0)
     assert summary["quality"]["vestibular_model"] == "thesis"
     path = profiles.load("cosine")
-    for config, choices, expected in (("yaw-track", {"perception": None}, (None, None)),
-                                      ("yaw-track", {"rotation_band": None}, ("canals", None)),
-                                      ("dfs", {}, ("canals", 1.0)), ("dfs-yaw", {}, (None, None))):
+    for config, choices, expected in (("yaw-track", {"perception": None}, (None, None, None)),
+                                      ("yaw-track", {"rotation_band": None}, ("canals", None, 20.0)),
+                                      ("yaw-track", {"rotation_ceiling": None}, ("canals", 1.0, None)),
+                                      ("dfs", {}, ("canals", 1.0, 20.0)), ("dfs-yaw", {}, (None, None, None))):
         mpc = session.online(path, Model(config=config), **choices).options.mpc
-        assert (getattr(mpc.perception, "name", None), mpc.rotation_band) == expected
+        assert (getattr(mpc.perception, "name", None), mpc.rotation_band, mpc.rotation_ceiling) == expected
     capsys.readouterr()
     for extra, message in ((["--rotation-band", "wide"], "--rotation-band 'wide'"),
-                           (["--perception", "none", "--rotation-band", "1"], "with a perception model")):
+                           (["--rotation-ceiling", "-1"], "--rotation-ceiling -1"),
+                           (["--perception", "none", "--rotation-band", "1"], "with a perception model"),
+                           (["--perception", "none", "--rotation-ceiling", "20"], "with a perception model")):
         assert main(["online", "cosine", "--config", "yaw-track", "--out", str(tmp_path / "bad"), *extra]) == 2
         assert message in capsys.readouterr().err
         assert not (tmp_path / "bad").exists()

@@ -63,7 +63,8 @@ class MPCOptions:
     a whole number of steps (default: every step); delay : simulate the computation time as the thesis
     does (7.1, figure 7.2): the plan computed during [t, t + T_c] from the state at t is applied from
     t + T_c, so it starts from the state predicted there; deadline : compute budget per plan [s]
-    (default: T_c); substeps, regularisation, margin, weights, jerk_weight, wall : as in
+    (default: T_c); substeps, regularisation, margin, weights, jerk_weight, wall, rotation_band,
+    rotation_ceiling (the felt rotation beyond so many thresholds weighs more): as in
     :class:`~desdemona.problem.ProblemOptions` (jerk_weight None:
     :func:`~desdemona.problem.default_jerk_weight` on-line); braking : fraction of the acceleration
     limit assumed for stopping; method : "rti" (real-time iteration: one Gauss-Newton QP per plan,
@@ -71,12 +72,10 @@ class MPCOptions:
     to convergence, warm-started, at most ``max_iter`` iterations) or "auto" (see
     :attr:`plan_method`); perception : minimise the perceived difference through this vestibular model
     (chapter 6): the controller then carries the filter states of what the person has felt and of
-    what they should have felt from step to step; rotation_band : with it, the felt rotation beyond
-    this many perception thresholds weighs more (:attr:`~desdemona.problem.ProblemOptions.rotation_band`);
-    null_weight : the weight of the gimbals' rates that turn the cabin not at all, near the inner
-    gimbal's lock (:attr:`~desdemona.problem.ProblemOptions.null_weight`; None: its on-line default
-    with the real-time iteration, where the spin was found, and 0 with IPOPT, whose thesis-timing rows
-    of ``benchmarks/online.py`` it moved by up to 12 %, "Gimbals' lock");
+    what they should have felt from step to step; null_weight : the weight of the gimbals' rates that
+    turn the cabin not at all, near the inner gimbal's lock (:attr:`~desdemona.problem.ProblemOptions.null_weight`;
+    None: its on-line default with the real-time iteration, where the spin was found, and 0 with IPOPT,
+    whose thesis-timing rows of ``benchmarks/online.py`` it moved by up to 12 %, "Gimbals' lock");
     spin_up : fraction of the yaw's acceleration limit with which a still yaw is seeded (:meth:`MPC._leave_rest`), 0: off.
 
     rti_step : the share of each real-time iteration's QP step taken from the previous plan
@@ -130,6 +129,7 @@ class MPCOptions:
     jerk_weight: float | None = None
     reach: float | None = None
     rotation_band: float | None = None
+    rotation_ceiling: float | None = None
     null_weight: float | None = None
     wall: float = 0.0
 
@@ -278,8 +278,8 @@ class MPC:
             margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6,
             stoppable=True, braking=options.braking, brake_step=options.step, perception=options.perception, initial_filter="given",
             steps=None if np.all(steps == options.step) else tuple(steps),
-            jerk_weight=options.jerk_weight, rotation_band=options.rotation_band, null_weight=null_weight,
-            wall=options.wall)
+            jerk_weight=options.jerk_weight, rotation_band=options.rotation_band,
+            rotation_ceiling=options.rotation_ceiling, null_weight=null_weight, wall=options.wall)
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         self.limits = model.limits
         self._limit_use = model.step_limit_use(options.step)

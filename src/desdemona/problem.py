@@ -59,6 +59,9 @@ from desdemona.profiles import DesiredPath
 #: How much more a felt rotation beyond :attr:`ProblemOptions.rotation_band` weighs: on top of its
 #: weight, this many times it ("Felt rotation band").
 BAND_WEIGHT = 9.0
+#: How much more a felt rotation beyond :attr:`ProblemOptions.rotation_ceiling` weighs, on top of the
+#: band's ("Felt rotation ceiling").
+CEILING_WEIGHT = 100.0
 #: On-line on ``dfs``, the weight of the gimbals' motion that turns the cabin not at all near the inner
 #: gimbal's lock (:attr:`ProblemOptions.null_weight`, "Gimbals' lock").
 NULL_WEIGHT = 0.1
@@ -141,6 +144,10 @@ class ProblemOptions:
         its canal channel (either way) costs :data:`BAND_WEIGHT` times its weight more, on the excess: a
         plan may use a rotation the occupant hardly feels (the arm's slow spin-up, a tilt below the
         threshold) and pays steeply for one they would ("Felt rotation band"). None: no band.
+    rotation_ceiling : with a perception model, a felt rotation beyond this many perception thresholds
+        of its canal channel costs :data:`CEILING_WEIGHT` times its weight more again, on the excess: a
+        plan spins the arm up no faster than the occupant would feel as that much rotation, where the
+        band alone priced a sustained force above it ("Felt rotation ceiling"). None: no ceiling.
     null_weight : where the three gimbals are free, the weight of their rates that turn the cabin not at
         all: at the inner gimbal's lock (q5 = +-90 deg) the outer gimbal and the cabin turning against
         each other (:func:`gimbal_null_rate`), a motion no channel of S sees. Without it a controller's
@@ -174,6 +181,7 @@ class ProblemOptions:
     gauss_newton_first: bool | None = None
     wall: float = 0.0
     rotation_band: float | None = None
+    rotation_ceiling: float | None = None
     null_weight: float | None = None
 
     def __post_init__(self):
@@ -202,10 +210,11 @@ class ProblemOptions:
             raise ValueError(f"null_weight = {self.null_weight!r}: must be a number >= 0")
         if not (math.isfinite(self.wall) and self.wall >= 0):
             raise ValueError(f"wall = {self.wall!r}: must be a number >= 0")
-        if self.rotation_band is not None and not (self.perception is not None and math.isfinite(self.rotation_band)
-                                                   and self.rotation_band >= 0):
-            raise ValueError(f"rotation_band = {self.rotation_band!r}: a number of thresholds >= 0, with a "
-                             f"perception model (the band is on the felt rotation)")
+        for name in ("rotation_band", "rotation_ceiling"):
+            value = getattr(self, name)
+            if value is not None and not (self.perception is not None and math.isfinite(value) and value >= 0):
+                raise ValueError(f"{name} = {value!r}: a number of thresholds >= 0, with a perception model "
+                                 f"(it is on the felt rotation)")
         if not (self.regularisation >= 0 and 0 <= self.margin < 0.5):
             raise ValueError("regularisation must be >= 0 and margin in [0, 0.5)")
 
@@ -490,14 +499,16 @@ class Formulation:
                     else self.vestibular.casadi_discrete(h_u / m))
             C, D = ca.DM(self.filter.C), ca.DM(self.filter.D)
             residuals = []
-            band = self.options.rotation_band
-            width = None if band is None else ca.DM(band * np.asarray(self.vestibular.thresholds[:3]))
+            thresholds = np.asarray(self.vestibular.thresholds[:3])
+            bands = [(ca.DM(band * thresholds), weight) for band, weight in
+                     ((self.options.rotation_band, BAND_WEIGHT), (self.options.rotation_ceiling, CEILING_WEIGHT))
+                     if band is not None]
             for j in range(m):  # zero-order hold of S over each sub-step
                 felt = C @ z + D @ values[j] - d[6 * j: 6 * j + 6]
                 residuals.append(ca.sqrt(h_u / m * inv_T) * root_w * felt)
-                if width is not None:  # the felt rotation beyond the band, priced again
+                for width, weight in bands:  # the felt rotation beyond the band (the ceiling), priced again
                     beyond = ca.fmax(felt[:3] - width, 0.0) + ca.fmin(felt[:3] + width, 0.0)
-                    residuals.append(ca.sqrt(BAND_WEIGHT * h_u / m * inv_T) * root_w[:3] * beyond)
+                    residuals.append(ca.sqrt(weight * h_u / m * inv_T) * root_w[:3] * beyond)
                 z = A @ z + B @ values[j]
         lim, o = self.model.limits, self.options
         if o.wall > 0 and lim.bounded:

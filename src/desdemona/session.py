@@ -39,6 +39,9 @@ ONLINE_STARTS = ("rest", "home", "steady", "given")
 #: An on-line session's felt-rotation band [perception thresholds] (:attr:`MPCOptions.rotation_band`)
 #: with a perception model ("Felt rotation band").
 ROTATION_BAND = 1.0
+#: An on-line session's felt-rotation ceiling [perception thresholds] (:attr:`MPCOptions.rotation_ceiling`)
+#: with a perception model ("Felt rotation ceiling").
+ROTATION_CEILING = 20.0
 
 
 @dataclass(frozen=True)
@@ -178,7 +181,7 @@ def thesis(path: DesiredPath, model: Model, choices: Choices = Choices()) -> Ses
 def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, horizon: float | None = None,
            reach: float | None = None, step: float = 0.02, predictor: str = "perfect",
            reference: DesiredPath | None = None, forecast=None, perception="auto", rotation_band="auto",
-           **timing) -> Session:
+           rotation_ceiling="auto", **timing) -> Session:
     """The session of ``online``: the cued path and its :class:`~desdemona.online.OnlineOptions`.
 
     horizon : how far the preview reaches [s], None: :func:`~desdemona.mpc.default_horizon`
@@ -191,7 +194,8 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     :func:`~desdemona.perception.canals_model` wherever the cost is on S (all but ``dfs-yaw``, whose
     cost is the modulus alone); rotation_band :
     :attr:`MPCOptions.rotation_band` [thresholds], "auto": :data:`ROTATION_BAND` with a perception
-    model ("Canals in the on-line cost", "Felt rotation band"); ``timing``: the other
+    model ("Canals in the on-line cost", "Felt rotation band"); rotation_ceiling : the same of
+    :attr:`MPCOptions.rotation_ceiling`, :data:`ROTATION_CEILING` ("Felt rotation ceiling"); ``timing``: the other
     :class:`MPCOptions` fields (replan, delay, deadline, method, tail_step).
     """
     from desdemona.mpc import MPCOptions, default_horizon
@@ -203,9 +207,12 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
         raise ChoiceError("--perception applies to the full path S, not to the dfs modulus")
     if rotation_band == "auto":
         rotation_band = None if perception is None else ROTATION_BAND
-    if rotation_band is not None and not (perception is not None and math.isfinite(rotation_band) and rotation_band >= 0):
-        raise ChoiceError(f"--rotation-band {rotation_band:g}: a number of perception thresholds >= 0, with a "
-                          f"perception model (--perception)")
+    if rotation_ceiling == "auto":
+        rotation_ceiling = None if perception is None else ROTATION_CEILING
+    for option, value in (("band", rotation_band), ("ceiling", rotation_ceiling)):
+        if value is not None and not (perception is not None and math.isfinite(value) and value >= 0):
+            raise ChoiceError(f"--rotation-{option} {value:g}: a number of perception thresholds >= 0, with a "
+                              f"perception model (--perception)")
     if reference is not None and (reference.S_d is None) != (path.S_d is None):
         raise ChoiceError(f"--reference {reference.name}: its channels ({'t,M' if reference.S_d is None else 'S'}) "
                          f"differ from the path's")
@@ -238,7 +245,7 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     weighted, wall = cost(path, model, choices), _wall(choices)
     try:
         mpc = MPCOptions(horizon=horizon, step=step, reach=reach, perception=perception, rotation_band=rotation_band,
-                         wall=wall, **weighted, **timing)
+                         rotation_ceiling=rotation_ceiling, wall=wall, **weighted, **timing)
     except ValueError as exc:
         raise ChoiceError(f"--replan: {exc}") from None
     size = sizing.check_fits_online(path, model.config, mpc)

@@ -209,16 +209,19 @@ def run_batch(args) -> int:
 
 
 def _felt_choices(args) -> dict:
-    """``online``'s --perception and --rotation-band as :func:`desdemona.session.online` takes them."""
+    """``online``'s --perception, --rotation-band and --rotation-ceiling as :func:`desdemona.session.online`
+    takes them."""
     choices = {}
     if args.perception is not None:
         choices["perception"] = None if args.perception == "none" else perception_models.get_model(args.perception)
-    if args.rotation_band is not None:
-        try:
-            choices["rotation_band"] = None if args.rotation_band == "none" else float(args.rotation_band)
-        except ValueError:
-            raise UserError(f"--rotation-band {args.rotation_band!r}: a number of perception thresholds, "
-                            f"or none") from None
+    for name in ("rotation_band", "rotation_ceiling"):
+        value = getattr(args, name)
+        if value is not None:
+            try:
+                choices[name] = None if value == "none" else float(value)
+            except ValueError:
+                raise UserError(f"--{name.replace('_', '-')} {value!r}: a number of perception thresholds, "
+                                f"or none") from None
     return choices
 
 
