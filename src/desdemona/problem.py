@@ -56,12 +56,9 @@ from desdemona.plan import STOP_EPS, STOP_LAG, advance, settled_rate, stopping_r
 from desdemona.model import Model
 from desdemona.profiles import DesiredPath
 
-#: How much more a felt rotation beyond :attr:`ProblemOptions.rotation_band` weighs: on top of its
-#: weight, this many times it ("Felt rotation band").
-BAND_WEIGHT = 9.0
-#: How much more a felt rotation beyond :attr:`ProblemOptions.rotation_ceiling` weighs, on top of the
-#: band's ("Felt rotation ceiling").
-CEILING_WEIGHT = 100.0
+#: How much more a felt rotation beyond :attr:`ProblemOptions.rotation_band` (``rotation_ceiling``)
+#: weighs, on top of its weight: this many times it ("Felt rotation band", "Felt rotation ceiling").
+BAND_WEIGHT, CEILING_WEIGHT = 9.0, 100.0
 #: On-line on ``dfs``, the weight of the gimbals' motion that turns the cabin not at all near the inner
 #: gimbal's lock (:attr:`ProblemOptions.null_weight`, "Gimbals' lock").
 NULL_WEIGHT = 0.1
@@ -144,10 +141,8 @@ class ProblemOptions:
         its canal channel (either way) costs :data:`BAND_WEIGHT` times its weight more, on the excess: a
         plan may use a rotation the occupant hardly feels (the arm's slow spin-up, a tilt below the
         threshold) and pays steeply for one they would ("Felt rotation band"). None: no band.
-    rotation_ceiling : with a perception model, a felt rotation beyond this many perception thresholds
-        of its canal channel costs :data:`CEILING_WEIGHT` times its weight more again, on the excess: a
-        plan spins the arm up no faster than the occupant would feel as that much rotation, where the
-        band alone priced a sustained force above it ("Felt rotation ceiling"). None: no ceiling.
+        ``rotation_ceiling``, the same with :data:`CEILING_WEIGHT` on top: the arm spins up no faster
+        than felt as that much rotation ("Felt rotation ceiling").
     null_weight : where the three gimbals are free, the weight of their rates that turn the cabin not at
         all: at the inner gimbal's lock (q5 = +-90 deg) the outer gimbal and the cabin turning against
         each other (:func:`gimbal_null_rate`), a motion no channel of S sees. Without it a controller's
@@ -204,17 +199,11 @@ class ProblemOptions:
                              f"than one and needs a uniform grid")
         if self.initial == "given" and self.initial_state is None:
             raise ValueError("initial = 'given' needs initial_state = (q0, qd0)")
-        if self.unweighted is not None and not (math.isfinite(self.unweighted) and self.unweighted >= 0):
-            raise ValueError(f"unweighted = {self.unweighted!r}: must be a number >= 0")
-        if self.null_weight is not None and not (math.isfinite(self.null_weight) and self.null_weight >= 0):
-            raise ValueError(f"null_weight = {self.null_weight!r}: must be a number >= 0")
-        if not (math.isfinite(self.wall) and self.wall >= 0):
-            raise ValueError(f"wall = {self.wall!r}: must be a number >= 0")
-        for name in ("rotation_band", "rotation_ceiling"):
-            value = getattr(self, name)
-            if value is not None and not (self.perception is not None and math.isfinite(value) and value >= 0):
-                raise ValueError(f"{name} = {value!r}: a number of thresholds >= 0, with a perception model "
-                                 f"(it is on the felt rotation)")
+        for name in ("unweighted", "null_weight", "wall", "rotation_band", "rotation_ceiling"):
+            value, felt = getattr(self, name), name.startswith("rotation")  # on the felt rotation: needs a model
+            if value is not None and (felt and self.perception is None or not (math.isfinite(value) and value >= 0)):
+                raise ValueError(f"{name} = {value!r}: must be a number >= 0"
+                                 + (", with a perception model (it is on the felt rotation)" if felt else ""))
         if not (self.regularisation >= 0 and 0 <= self.margin < 0.5):
             raise ValueError("regularisation must be >= 0 and margin in [0, 0.5)")
 
