@@ -936,8 +936,9 @@ def test_online_weighs_the_felt_rotation_by_default_where_the_path_is_s(tmp_path
     capsys.readouterr()
     for extra, message in ((["--rotation-band", "wide"], "--rotation-band 'wide'"),
                            (["--rotation-ceiling", "-1"], "--rotation-ceiling -1"),
-                           (["--perception", "none", "--rotation-band", "1"], "with a perception model"),
-                           (["--perception", "none", "--rotation-ceiling", "20"], "with a perception model")):
+                           (["--rotation-ceiling", "nan"], "--rotation-ceiling nan: must be a finite number"),
+                           (["--perception", "none", "--rotation-band", "1"], "needs a perception model"),
+                           (["--perception", "none", "--rotation-ceiling", "20"], "needs a perception model")):
         assert main(["online", "cosine", "--config", "yaw-track", "--out", str(tmp_path / "bad"), *extra]) == 2
         assert message in capsys.readouterr().err
         assert not (tmp_path / "bad").exists()

@@ -58,7 +58,8 @@ from desdemona.profiles import DesiredPath
 
 #: How much more a felt rotation beyond :attr:`ProblemOptions.rotation_band` (``rotation_ceiling``)
 #: weighs, on top of its weight: this many times it ("Felt rotation band", "Felt rotation ceiling").
-BAND_WEIGHT, CEILING_WEIGHT = 9.0, 100.0
+BAND_WEIGHT = 9.0
+CEILING_WEIGHT = 100.0
 #: On-line on ``dfs``, the weight of the gimbals' motion that turns the cabin not at all near the inner
 #: gimbal's lock (:attr:`ProblemOptions.null_weight`, "Gimbals' lock").
 NULL_WEIGHT = 0.1
@@ -199,11 +200,12 @@ class ProblemOptions:
                              f"than one and needs a uniform grid")
         if self.initial == "given" and self.initial_state is None:
             raise ValueError("initial = 'given' needs initial_state = (q0, qd0)")
-        for name in ("unweighted", "null_weight", "wall", "rotation_band", "rotation_ceiling"):
-            value, felt = getattr(self, name), name.startswith("rotation")  # on the felt rotation: needs a model
-            if value is not None and (felt and self.perception is None or not (math.isfinite(value) and value >= 0)):
-                raise ValueError(f"{name} = {value!r}: must be a number >= 0"
-                                 + (", with a perception model (it is on the felt rotation)" if felt else ""))
+        for name in ("wall", "unweighted", "null_weight", "rotation_band", "rotation_ceiling"):  # all but wall: None for none
+            value = getattr(self, name)
+            if (value is not None or name == "wall") and not (math.isfinite(value) and value >= 0):
+                raise ValueError(f"{name} = {value!r}: must be a number >= 0")
+            if name.startswith("rotation") and value is not None and self.perception is None:
+                raise ValueError(f"{name} = {value!r}: needs a perception model (it is on the felt rotation)")
         if not (self.regularisation >= 0 and 0 <= self.margin < 0.5):
             raise ValueError("regularisation must be >= 0 and margin in [0, 0.5)")
 
@@ -469,7 +471,7 @@ class Formulation:
         Hessian can be formed from the same definition (see :mod:`desdemona.online`). ``data``:
         the stage's, :meth:`with_steps`.
         """
-        m, points = self.m, len(self.fractions)
+        m, points, lim, o = self.m, len(self.fractions), self.model.limits, self.options
         h_u, first, inv_T, root_w, d = data[0], data[1], data[2], data[3:self.n_head], data[self.n_head:]
         # times the interval's length h_u: the trapezoid rule with the end, or the points up to the
         # end, the first one weighed by ``first``
@@ -488,18 +490,15 @@ class Formulation:
                     else self.vestibular.casadi_discrete(h_u / m))
             C, D = ca.DM(self.filter.C), ca.DM(self.filter.D)
             residuals = []
-            thresholds = np.asarray(self.vestibular.thresholds[:3])
-            bands = [(ca.DM(band * thresholds), weight) for band, weight in
-                     ((self.options.rotation_band, BAND_WEIGHT), (self.options.rotation_ceiling, CEILING_WEIGHT))
-                     if band is not None]
+            bands = [(ca.DM(band * np.asarray(self.vestibular.thresholds[:3])), weight) for band, weight in
+                     ((o.rotation_band, BAND_WEIGHT), (o.rotation_ceiling, CEILING_WEIGHT)) if band is not None]
             for j in range(m):  # zero-order hold of S over each sub-step
-                felt = C @ z + D @ values[j] - d[6 * j: 6 * j + 6]
-                residuals.append(ca.sqrt(h_u / m * inv_T) * root_w * felt)
-                for width, weight in bands:  # the felt rotation beyond the band (the ceiling), priced again
-                    beyond = ca.fmax(felt[:3] - width, 0.0) + ca.fmin(felt[:3] + width, 0.0)
+                error = C @ z + D @ values[j] - d[6 * j: 6 * j + 6]  # felt less what should be felt
+                residuals.append(ca.sqrt(h_u / m * inv_T) * root_w * error)
+                for width, weight in bands:  # the felt rotation's error beyond the band (the ceiling), again
+                    beyond = ca.fmax(error[:3] - width, 0.0) + ca.fmin(error[:3] + width, 0.0)
                     residuals.append(ca.sqrt(weight * h_u / m * inv_T) * root_w[:3] * beyond)
                 z = A @ z + B @ values[j]
-        lim, o = self.model.limits, self.options
         if o.wall > 0 and lim.bounded:
             residuals += [ca.sqrt(trapezoid[j] * h_u * inv_T) * self._wall(positions[j], o.wall) for j in range(points)]
         rho = o.regularisation * h_u * inv_T

@@ -195,7 +195,8 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     cost is the modulus alone); rotation_band :
     :attr:`MPCOptions.rotation_band` [thresholds], "auto": :data:`ROTATION_BAND` with a perception
     model ("Canals in the on-line cost", "Felt rotation band"); rotation_ceiling : the same of
-    :attr:`MPCOptions.rotation_ceiling`, :data:`ROTATION_CEILING` ("Felt rotation ceiling"); ``timing``: the other
+    :attr:`MPCOptions.rotation_ceiling`, "auto": :data:`ROTATION_CEILING` with a perception model ("Felt
+    rotation ceiling"); ``timing``: the other
     :class:`MPCOptions` fields (replan, delay, deadline, method, tail_step).
     """
     from desdemona.mpc import MPCOptions, default_horizon
@@ -205,14 +206,15 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
         perception = None if model.config.modulus_cost else canals_model()
     if model.config.modulus_cost and perception is not None:
         raise ChoiceError("--perception applies to the full path S, not to the dfs modulus")
-    if rotation_band == "auto":
-        rotation_band = None if perception is None else ROTATION_BAND
-    if rotation_ceiling == "auto":
-        rotation_ceiling = None if perception is None else ROTATION_CEILING
+    rotation_band, rotation_ceiling = ((None if perception is None else default) if value == "auto" else value
+                                       for value, default in ((rotation_band, ROTATION_BAND),
+                                                              (rotation_ceiling, ROTATION_CEILING)))
     for option, value in (("band", rotation_band), ("ceiling", rotation_ceiling)):
-        if value is not None and not (perception is not None and math.isfinite(value) and value >= 0):
-            raise ChoiceError(f"--rotation-{option} {value:g}: a number of perception thresholds >= 0, with a "
-                              f"perception model (--perception)")
+        if value is not None and not (math.isfinite(value) and value >= 0):
+            raise ChoiceError(f"--rotation-{option} {value:g}: must be a finite number of perception thresholds >= 0")
+        if value is not None and perception is None:
+            raise ChoiceError(f"--rotation-{option} {value:g}: the felt rotation needs a perception model (none with "
+                              f"--perception none, nor on dfs-yaw); drop it or give --rotation-{option} none")
     if reference is not None and (reference.S_d is None) != (path.S_d is None):
         raise ChoiceError(f"--reference {reference.name}: its channels ({'t,M' if reference.S_d is None else 'S'}) "
                          f"differ from the path's")

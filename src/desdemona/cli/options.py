@@ -149,9 +149,10 @@ def build_parser() -> argparse.ArgumentParser:
                              "thresholds weighs ten times its weight, so the plan uses rotation the "
                              "occupant hardly feels; none: no band (default: 1)")
     online.add_argument("--rotation-ceiling", default=None, metavar="THRESHOLDS", dest="rotation_ceiling",
-                        help="with a perception model: a felt rotation beyond this many perception "
-                             "thresholds weighs a hundred times more again, so the arm spins up no faster "
-                             "than the occupant feels as that much rotation; none: no ceiling (default: 20)")
+                        help="with a perception model: the felt rotation's error beyond this many perception "
+                             "thresholds weighs 110 times its weight (100 on top of the band's 10), a soft "
+                             "ceiling: the arm spins up no faster than felt as that much false rotation; "
+                             "none: no ceiling (default: 20)")
     online.add_argument("--method", choices=("auto", "rti", "nlp"), default="auto",
                         help="rti: one QP per plan (fast); nlp: IPOPT to convergence; auto: rti when a "
                              "plan is made every step, nlp when --replan spans several steps, as the "
