@@ -300,8 +300,8 @@ def still_home(q, model: Model, force=None) -> np.ndarray:
       away: the way there may lead through a cabin upside down.
     """
     free, lim, q = model.config.free, model.limits, np.asarray(q, dtype=float)
-    home = np.where(np.isfinite(lim.position_min) & np.isfinite(lim.position_max),
-                    0.5 * (np.nan_to_num(lim.position_min) + np.nan_to_num(lim.position_max)), np.nan)
+    home = np.full(len(q), np.nan)
+    home[lim.bounded] = 0.5 * (lim.position_min + lim.position_max)[lim.bounded]
     roll = pitch = psi = 0.0
     if force is not None and not model.config.takes_modulus:
         roll, pitch = tilt_angles(force[0], force[1], model.params.gravity)

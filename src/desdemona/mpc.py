@@ -581,9 +581,9 @@ class MPC:
         row towards home (:meth:`homing`), that keeps every limit over the step: with jerk limits
         :func:`~desdemona.plan.braking_jerk`, without them the strongest change of rate (at most
         ``braking`` x the acceleration limit); scaled down until safe."""
-        lim, h, most = self.limits, self.options.step, self.options.braking * self.limits.acceleration
-        goal = self.homing(q, qd) if self.braked * h >= HOMING_AFTER else np.zeros_like(qd)  # a lasting outage
-        a, zero = (np.zeros_like(qd) if a is None else np.asarray(a, dtype=float)), np.zeros_like(qd)
+        lim, h, zero = self.limits, self.options.step, np.zeros_like(qd)
+        most, a = self.options.braking * lim.acceleration, zero if a is None else np.asarray(a, dtype=float)
+        goal = self.homing(q, qd) if self.braked * h >= HOMING_AFTER else zero  # a lasting outage
         full = braking_jerk(q, qd, a, h, lim, self.options.braking, goal) if self.smooth else np.clip((goal - qd) / h, -most, most)
         commands = [(a, s * full) if self.smooth else (s * full, zero) for s in (1.0, 0.75, 0.5, 0.25, 0.1, 0.0)]
         for qdd, jerk in commands:
@@ -597,4 +597,4 @@ class MPC:
         machine cues the last present force best (:func:`~desdemona.classical.still_home`)."""
         free, force = self.model.config.free, None if self.present is None else self.present[3:]
         home = still_home(q, self.model, force)
-        return homing_rate(q, qd, home, np.isfinite(self.limits.position_min), free.index(0) if 0 in free else None)
+        return homing_rate(q, qd, home, np.isin(np.arange(len(q)), self.limits.bounded), free.index(0) if 0 in free else None)

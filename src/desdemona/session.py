@@ -206,9 +206,10 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
         perception = None if model.config.modulus_cost else canals_model()
     if model.config.modulus_cost and perception is not None:
         raise ChoiceError("--perception applies to the full path S, not to the dfs modulus")
-    rotation_band, rotation_ceiling = ((None if perception is None else default) if value == "auto" else value
-                                       for value, default in ((rotation_band, ROTATION_BAND),
-                                                              (rotation_ceiling, ROTATION_CEILING)))
+    if rotation_band == "auto":
+        rotation_band = None if perception is None else ROTATION_BAND
+    if rotation_ceiling == "auto":
+        rotation_ceiling = None if perception is None else ROTATION_CEILING
     for option, value in (("band", rotation_band), ("ceiling", rotation_ceiling)):
         if value is not None and not (math.isfinite(value) and value >= 0):
             raise ChoiceError(f"--rotation-{option} {value:g}: must be a finite number of perception thresholds >= 0")
