@@ -94,10 +94,10 @@ def corpus_cases(folder: Path, build: bool = True, forecasts=()) -> list[dict]:
 def command(case: dict, config: str, mode: str, out: Path, wall: float | None = None,
             step: float | None = None, extra: tuple[str, ...] = ()) -> list[str]:
     """The command line of one job, as a user would type it (off-line with ``--wall`` where given,
-    on-line with ``--step`` where given and the ``extra`` arguments)."""
+    on-line with ``--step`` where given, and the ``extra`` arguments)."""
     base = [sys.executable, "-m", "desdemona"]
     if mode == "offline":
-        chosen = [] if wall is None else ["--wall", f"{wall:g}"]
+        chosen = ([] if wall is None else ["--wall", f"{wall:g}"]) + list(extra)
         return [*base, "optimize", case["file"], "--config", config, *chosen, "--out", str(out), "--overwrite",
                 "--quiet", "--no-view"]
     chosen = ["--forecast", case["forecast"]] if mode == "forecast" else []
@@ -257,6 +257,9 @@ def main(argv=None) -> int:
     parser.add_argument("--online-args", default="", metavar="ARGS",
                         help="on-line: more arguments for every job, e.g. '--perception none' to run the "
                              "formulation before a change side by side")
+    parser.add_argument("--offline-args", default="", metavar="ARGS",
+                        help="off-line: more arguments for every job, e.g. '--method ipopt' to run the "
+                             "solver before a change side by side")
     args = parser.parse_args(argv)
     try:
         steps = {config: 1.0 / float(hz) for config, hz in (item.split("=") for item in args.rate)}
@@ -290,7 +293,7 @@ def main(argv=None) -> int:
 
         done = batch.map_jobs(run_job, [(c, config, mode, str(args.out), args.timeout, args.wall,
                                          None if mode == "offline" else steps.get(config),
-                                         () if mode == "offline" else tuple(args.online_args.split()))
+                                         tuple((args.offline_args if mode == "offline" else args.online_args).split()))
                                         for c, config, mode in jobs],
                               args.processes, args.dask, progress)
     paths = {(c["name"], c["form"]): profiles.load(c["file"]) for c in cases}

@@ -72,6 +72,31 @@ def test_one_library_serves_every_path_and_later_runs(params, cache):
     assert len(list(cache.glob("stages-*.so"))) == 2
 
 
+@needs_compiler
+def test_fatrop_takes_the_stage_assembled_derivatives_compiled(params, cache, monkeypatch, tmp_path):
+    """fatrop differentiates nothing itself: on the NLP's functions compiled with the derivatives
+    assembled here (the Lagrangian's gradient beside its Hessian left at zero) it takes the same
+    iterates as on CasADi's own derivatives of the NLP, to the optimum IPOPT finds; the stage
+    library goes to the cache, the NLP's own library nowhere."""
+    monkeypatch.setattr("tempfile.tempdir", str(tmp_path))
+    model, path = Model(params, "yaw-track-cabin"), short(duration=1.5)
+    options = ProblemOptions(h_u=0.1, solver="fatrop", expand=False)
+    fast = CueingProblem(model, path, options)
+    slow = CueingProblem(model, path, ProblemOptions(h_u=0.1, solver="fatrop", expand=False, compile=False))
+    ipopt = CueingProblem(model, path, ProblemOptions(h_u=0.1, expand=False, compile=False))
+    assert fast.compiled and not slow.compiled and fast.limit_curvature
+    x, u = initial_guesses(fast, 1, 0)[0][1:]
+    a, b, c = (problem.solve(x, u) for problem in (fast, slow, ipopt))
+    assert a.success and b.success and c.success
+    assert a.iterations == b.iterations
+    np.testing.assert_allclose(a.x, b.x, atol=1e-9 * max(1.0, np.abs(b.x).max()))
+    assert a.cost == pytest.approx(c.cost, rel=1e-6)
+    assert len(list(cache.glob("stages-*.so"))) == 1
+    assert not list(tmp_path.glob("desdemona-*"))  # the NLP's library, loaded, is gone
+    # on more than three joints IPOPT leaves the limits' curvature out, fatrop keeps it
+    assert not CueingProblem(Model(params, "full"), short(), ProblemOptions(h_u=0.1, compile=False)).limit_curvature
+
+
 def test_small_problems_are_not_compiled(params, cache):
     problem = CueingProblem(Model(params, "yaw-track-cabin"), short(), ProblemOptions(h_u=0.1))
     assert not problem.compiled

@@ -66,29 +66,89 @@ def is_cached(functions: list[ca.Function]) -> bool:
 def compiled(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> list[ca.Function] | None:
     """The same functions, evaluated by a library compiled with ``flags`` from the cache (compiled now
     if it is not there yet), or None without a working compiler (with a warning that says why)."""
+    path = build(functions, flags)
+    return None if path is None else [ca.external(function.name(), str(path)) for function in functions]
+
+
+def build(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> Path | None:
+    """The path of the cached library of ``functions`` compiled with ``flags`` (compiled now if it is
+    not there yet), or None without a working compiler (with a warning that says why)."""
     source, path = library(functions, flags)
-    if not path.exists():
-        cc = compiler()
-        if cc is None:
-            warnings.warn(f"no C compiler ({os.environ.get('CC', 'cc')}): the stage functions stay "
-                          "interpreted (slower, same results)", RuntimeWarning, stacklevel=2)
+    if path.exists():
+        return path
+    cc = compiler()
+    if cc is None:
+        warnings.warn(f"no C compiler ({os.environ.get('CC', 'cc')}): the stage functions stay "
+                      "interpreted (slower, same results)", RuntimeWarning, stacklevel=2)
+        return None
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        warnings.warn(f"cannot create the cache {path.parent} ({error}): the stage functions stay "
+                      "interpreted", RuntimeWarning, stacklevel=2)
+        return None
+    with tempfile.TemporaryDirectory(dir=path.parent, prefix=".compiling-") as work:
+        so_file = Path(work) / path.name
+        if not _cc(cc, source, Path(work) / "stages.c", [*flags, "-o", str(so_file)]):
             return None
-        try:
-            path.parent.mkdir(parents=True, exist_ok=True)
-        except OSError as error:
-            warnings.warn(f"cannot create the cache {path.parent} ({error}): the stage functions stay "
-                          "interpreted", RuntimeWarning, stacklevel=2)
+        os.replace(so_file, path)  # atomic: a reader sees no library or a whole one
+    return path
+
+
+def linked(functions: list[ca.Function], stages: Path, name: str) -> ca.Function | None:
+    """Function ``name`` of ``functions`` compiled now into a library of their own that calls the
+    compiled stage functions of the library ``stages`` (:func:`build`); the other functions are in the
+    same library, where CasADi finds them by name (``External.factory``: an NLP solver asks its
+    oracle for ``nlp_jac_g``, ``nlp_hess_l``, ...). Compiled at ``-O0`` into a temporary folder that is
+    removed once the library is loaded: these functions only assemble the stages' blocks and are
+    compiled again for each problem. None, with a warning, where compiling fails."""
+    generator = ca.CodeGenerator("assembly.c", {"with_header": False})
+    for function in functions:
+        generator.add(function)
+    with tempfile.TemporaryDirectory(prefix="desdemona-") as work:
+        so_file = Path(work) / "assembly.so"
+        flags = [*FLAGS, "-o", str(so_file), str(stages), f"-Wl,-rpath,{stages.parent}"]
+        if not _cc(compiler(), generator.dump(), Path(work) / "assembly.c", flags):
             return None
-        with tempfile.TemporaryDirectory(dir=path.parent, prefix=".compiling-") as work:
-            c_file, so_file = Path(work) / "stages.c", Path(work) / path.name
-            c_file.write_text(source)
-            try:
-                subprocess.run([cc, *flags, str(c_file), "-o", str(so_file), "-lm"], check=True,
-                               capture_output=True, text=True, timeout=TIMEOUT)
-            except (OSError, subprocess.SubprocessError) as error:
-                detail = getattr(error, "stderr", "") or str(error)
-                warnings.warn(f"compiling the stage functions failed ({detail.strip()[:300]}): they stay "
-                              "interpreted", RuntimeWarning, stacklevel=2)
-                return None
-            os.replace(so_file, path)  # atomic: a reader sees no library or a whole one
-    return [ca.external(function.name(), str(path)) for function in functions]
+        return ca.external(name, str(so_file))  # loaded: the file may go
+
+
+def oracle(nlp: dict, derivatives: dict[str, ca.Function]) -> list[ca.Function]:
+    """An NLP as an NLP solver asks its oracle for it, by name (``nlp_f``, ``nlp_g``, ``nlp_grad_f``,
+    ``nlp_jac_g``, ``nlp_hess_l``, ``nlp_grad``), with the given derivatives (``grad_f``, ``jac_g`` and
+    ``hess_lag`` as IPOPT takes them: the Hessian's upper triangle) for :func:`linked`.
+
+    The Hessian is whole (fatrop copies its stage blocks). fatrop asks for the Lagrangian's gradient
+    beside it and does not read it (CasADi 3.8: the same iterates with it zero, measured): it is left
+    at zero, which saves an evaluation of the Jacobian per iteration. ``nlp_grad`` gives the final
+    multipliers.
+    """
+    w, p = nlp["x"], ca.MX.sym("p", 0, 1)
+    lam_f, lam_g = ca.MX.sym("lam_f"), ca.MX.sym("lam_g", nlp["g"].numel())
+    f, g = nlp["f"], nlp["g"]
+    grad, jac = derivatives["grad_f"](w, p)[1], derivatives["jac_g"](w, p)[1]
+    hess = ca.triu2symm(derivatives["hess_lag"](w, p, lam_f, lam_g))
+    gamma = lam_f * grad + ca.mtimes(jac.T, lam_g)
+    xp, xpl = ["x", "p"], ["x", "p", "lam_f", "lam_g"]
+    return [ca.Function("nlp", [w, p], [f, g], xp, ["f", "g"]),
+            ca.Function("nlp_f", [w, p], [f], xp, ["f"]), ca.Function("nlp_g", [w, p], [g], xp, ["g"]),
+            ca.Function("nlp_grad_f", [w, p], [grad], xp, ["grad_f_x"]),
+            ca.Function("nlp_jac_g", [w, p], [g, jac], xp, ["g", "jac_g_x"]),
+            ca.Function("nlp_hess_l", [w, p, lam_f, lam_g], [ca.MX.zeros(w.numel()), hess], xpl,
+                        ["grad_gamma_x", "hess_gamma_x_x"]),
+            ca.Function("nlp_grad", [w, p, lam_f, lam_g], [f, g, gamma, ca.MX(0, 1)], xpl,
+                        ["f", "g", "grad_gamma_x", "grad_gamma_p"])]
+
+
+def _cc(cc: str | None, source: str, c_file: Path, flags: list[str]) -> bool:
+    """Compile ``source`` (written to ``c_file``) with ``flags``; False, with a warning, where it fails."""
+    c_file.write_text(source)
+    try:
+        subprocess.run([cc, str(c_file), *flags, "-lm"], check=True, capture_output=True, text=True,
+                       timeout=TIMEOUT)
+    except (OSError, TypeError, subprocess.SubprocessError) as error:
+        detail = getattr(error, "stderr", "") or str(error)
+        warnings.warn(f"compiling the stage functions failed ({detail.strip()[:300]}): they stay "
+                      "interpreted", RuntimeWarning, stacklevel=3)
+        return False
+    return True

@@ -107,8 +107,9 @@ class ProblemOptions:
         flat when the problem will be solved EXPAND_SOLVES times or more and is below EXPAND_LIMIT.
     limit_curvature : put the second derivatives of the torque and power limits into IPOPT's Hessian.
         They are almost all of the Hessian's operations on ``full`` and change neither the optimum nor,
-        measured, the iteration count: None leaves them out on configurations of more than three
-        joints ("Limit curvature"). Every other term (cost, gaps, positions, braking) stays exact.
+        measured, the iteration count: None leaves them out of IPOPT's on more than three joints
+        ("Limit curvature"); fatrop keeps them (without, it takes up to twice the iterations on
+        ``full``). Every other term (cost, gaps, positions, braking) stays exact.
     jerk_weight : the rho of the jerk, against j_max (with jerk limits): a plan that used the whole
         jerk limit all the time would pay as much as sqrt(rho) m/s^2 of RMS error. It keeps the joints
         from reversing their accelerations where the cue gains little from it. None:
@@ -122,7 +123,7 @@ class ProblemOptions:
     compile : evaluate the stages' functions compiled to machine code, kept in a cache on disk
         (:mod:`desdemona.compiled`; the results are the same, about six times faster to evaluate).
         None: where the interpreted evaluation would take long (``COMPILE_WORK``) or the library is
-        already cached. Only with IPOPT and without ``expand``; on-line problems are never compiled.
+        already cached; with fatrop always, the NLP's functions too. Never with ``expand``, nor on-line.
     gauss_newton_first : IPOPT starts with the cost's Gauss-Newton Hessian (2 J_r^T J_r, positive
         semi-definite; the constraints keep their curvature) and, at a rough tolerance, finishes with
         the exact Hessian from where it got (its multipliers kept). Far from the optimum the exact
@@ -283,7 +284,8 @@ class Formulation:
         floor = options.unweighted if options.unweighted is not None else (
             (0.01 if parametric else 0.003) if large else 0.0)
         self.cost_weights = np.where(self.weights > 0, self.weights, floor)
-        self.limit_curvature = options.limit_curvature if options.limit_curvature is not None else not large
+        self.limit_curvature = options.limit_curvature if options.limit_curvature is not None else not (
+            large and options.solver == "ipopt")
         self.jerk_weight = options.jerk_weight if options.jerk_weight is not None else default_jerk_weight(
             model.config, online=parametric)
         self.null_weight = options.null_weight if options.null_weight is not None else (

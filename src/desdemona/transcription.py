@@ -39,13 +39,16 @@ EXPAND_LIMIT = 400_000
 EXPAND_SOLVES = 5
 # The stages' Jacobians and Hessians are independent: evaluate them on two threads.
 MAP_MODE, MAP_THREADS = "thread", 2
-# The mapped stage functions that are compiled (desdemona.compiled), and the work (stages times the
-# instructions of a stage's Jacobian) from which compiling pays by itself: on `full` the Jacobian of
-# a stage has about 36,000 instructions; the catapult's 160 stages of it took 27 ms per iteration
-# interpreted and 5 ms compiled (1.3 s to compile all three). The stage itself stays interpreted: IPOPT's interface
-# differentiates the NLP's f and g once (for the final multipliers), which compiled code cannot be.
+# The mapped stage functions compiled for IPOPT (desdemona.compiled), and the work (stages times the
+# instructions of a stage's Jacobian) from which compiling pays by itself: on `full` a stage's Jacobian
+# has about 36,000 instructions; the catapult's 160 stages of it took 27 ms per iteration interpreted
+# and 5 ms compiled. The stage itself stays interpreted: IPOPT's interface differentiates f and g.
 COMPILED = ("hess", "jac", "grad")
 COMPILE_WORK = 2_000_000
+# With fatrop every stage function is compiled, at -O1: its own step is cheap (16 ms an iteration on
+# the C172 doublet on `full`, 338 intervals), the Hessian with the limits' curvature took 17 ms at -O0.
+FATROP_COMPILED = ("stage", "jac", "jac0", "grad", "hess", "hess0")
+FATROP_FLAGS = ("-O1", "-fPIC", "-shared")
 # MUMPS' fill-reducing ordering: approximate minimum degree with quasi-dense rows (QAMD). IPOPT's
 # own time per iteration, measured against MUMPS' automatic choice: catapult on full 24 against 36 ms,
 # double pulse 23 against 31, triple pulse 34 against 45, car lap on yaw-track-cabin 39 against 41;
@@ -192,17 +195,18 @@ class CueingProblem(Formulation):
         """Replace the mapped stage functions by compiled ones where ``ProblemOptions.compile`` asks
         for it (:mod:`desdemona.compiled`); whether they were."""
         wanted = self.options.compile
-        if self.expanded or self.parametric or self.options.solver != "ipopt" or wanted is False:
+        if self.expanded or self.parametric or wanted is False:
             return False  # a flat graph cannot hold compiled code; on-line problems are flattened too
-        keys = [k for k in (*COMPILED, "hess_gn") if k in stage]
+        fatrop = self.options.solver == "fatrop"  # it differentiates nothing: every stage function compiled
+        keys = FATROP_COMPILED if fatrop else [k for k in (*COMPILED, "hess_gn") if k in stage]
         functions = [stage[k] for k in keys]
-        if wanted is None and self.N * stage["jac"].n_instructions() < COMPILE_WORK \
+        if wanted is None and not fatrop and self.N * stage["jac"].n_instructions() < COMPILE_WORK \
                 and not compiled.is_cached(functions):
             return False
-        functions = compiled.compiled(functions)
-        if functions is None:
+        self.stage_library = compiled.build(functions, FATROP_FLAGS if fatrop else compiled.FLAGS)
+        if self.stage_library is None:
             return False
-        stage.update(zip(keys, functions))
+        stage.update((k, ca.external(stage[k].name(), str(self.stage_library))) for k in keys)
         return True
 
     def _stage_derivatives(self) -> dict[str, ca.Function]:
@@ -466,7 +470,13 @@ class CueingProblem(Formulation):
         opts = {"structure_detection": "auto", "equality": self.equality, "print_time": False,
                 "expand": self.expanded,
                 "fatrop": {"print_level": 0, "max_iter": o.max_iter, "tol": o.tol}}
-        return ca.nlpsol("cueing", "fatrop", self.nlp, opts)
+        oracle = self.nlp
+        if self.compiled:  # the NLP with the derivatives assembled here, for fatrop to find by name
+            oracle = compiled.linked(compiled.oracle(self.nlp, self.derivatives), self.stage_library, "nlp")
+            if oracle is None:
+                raise RuntimeError("the NLP's functions for fatrop did not compile (the warning says why); "
+                                   "solve with IPOPT, or with ProblemOptions(compile=False)")
+        return ca.nlpsol("cueing", "fatrop", oracle, opts)
 
     def _ipopt(self, settings: dict, **derivatives) -> ca.Function:
         """An IPOPT solver of the NLP with the stage-assembled derivatives (``derivatives`` replacing
