@@ -10,6 +10,8 @@ import sys
 import time
 from pathlib import Path
 
+import pytest
+
 import desdemona
 from desdemona import cli, guard, problem, profiles, report
 from desdemona.cli import commands, main
@@ -68,13 +70,16 @@ def test_result_folder_respects_the_umask_and_names_its_columns(tmp_path):
     assert (report.load(tmp_path / "run")[0].q == traj.q).all()
 
 
-def test_sigint_inside_ipopt_stops_the_run(tmp_path):
-    """Acceptance: SIGINT 2 s into the car lap on full ends the process within 5 s, exit 130, nothing written."""
+@pytest.mark.parametrize("method", ["ipopt", "fatrop"])
+def test_sigint_inside_the_solver_stops_the_run(tmp_path, method):
+    """Acceptance: SIGINT 2 s into the car lap on full ends the process within 5 s, exit 130, nothing
+    written: inside IPOPT, and with fatrop (its default there) wherever it is, compiling or solving."""
     env = dict(os.environ, PYTHONPATH=str(Path(desdemona.__file__).resolve().parent.parent))
     out = tmp_path / "lap"
     start = time.perf_counter()
     proc = subprocess.Popen([sys.executable, "-m", "desdemona", "optimize", "car-lap", "--config", "full",
-                             "--starts", "2", "--out", str(out)], env=env, stderr=subprocess.PIPE, text=True)
+                             "--method", method, "--starts", "2", "--out", str(out)], env=env,
+                            stderr=subprocess.PIPE, text=True)
     # its first line says the command has started (on a loaded machine Python's imports alone may take 2 s)
     assert "700 control intervals" in proc.stderr.readline()
     time.sleep(max(0.0, 2.0 - (time.perf_counter() - start)))

@@ -123,3 +123,17 @@ def test_the_wall_reaches_the_off_and_on_line_problems_and_is_checked(catapult):
         assert Choices.of(build_parser().parse_args([*command, "--wall", "0"])).wall == 0.0
     with pytest.raises(ChoiceError, match="drop --wall"):
         session.thesis(catapult, model, Choices(wall=1.0))
+
+
+def test_the_offline_solver_is_fatrop_on_full_up_to_its_length(catapult):
+    """auto: fatrop on more than three joints for a solve of at most FATROP_UP_TO intervals (the path,
+    or each window of it), IPOPT elsewhere; an asked solver is kept."""
+    full, ytc = Model(config="full"), Model(config="yaw-track-cabin")
+    assert session.offline(catapult, full).options.solver == "fatrop"
+    assert session.offline(catapult, ytc).options.solver == "ipopt"
+    assert session.offline(catapult, full, solver="ipopt").options.solver == "ipopt"
+    step = Choices().h_u
+    longer = profiles.cosine(amplitude=3.0, omega=0.4, duration=(session.FATROP_UP_TO + 20) * step, dt=0.05)
+    assert session.offline(longer, full).options.solver == "ipopt"
+    assert session.offline(longer, full, Choices(window=60.0)).options.solver == "fatrop"
+    assert session.offline(longer, full, Choices(h_u=2 * step)).options.solver == "fatrop"

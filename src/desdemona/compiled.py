@@ -30,6 +30,9 @@ from pathlib import Path
 import casadi as ca
 
 FLAGS = ("-O0", "-fPIC", "-shared")
+#: Told one line before compiling into the cache, where that takes long (with optimisation: fatrop's
+#: stage functions on ``full`` take about a minute at ``-O1``); the command line prints it.
+notice = None
 # Where compiling takes longer than this, something is wrong with the toolchain: keep the virtual machine.
 TIMEOUT = 300.0
 
@@ -87,6 +90,8 @@ def build(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> Path 
         warnings.warn(f"cannot create the cache {path.parent} ({error}): the stage functions stay "
                       "interpreted", RuntimeWarning, stacklevel=2)
         return None
+    if notice is not None and "-O0" not in flags:
+        notice(f"compiling the stage functions for this machine and these options, once, into {path.parent}")
     with tempfile.TemporaryDirectory(dir=path.parent, prefix=".compiling-") as work:
         so_file = Path(work) / path.name
         if not _cc(cc, source, Path(work) / "stages.c", [*flags, "-o", str(so_file)]):

@@ -117,9 +117,8 @@ class ProblemOptions:
     unweighted : weight of the channels of S that Q leaves at zero, in the cost only (RMS figures keep
         Q). With it, joints that move only unweighted channels (on ``full``, the gimbals turning the
         cabin about the felt force) stop being flat directions of the cost. None: 0.003 on
-        configurations of more than three joints, 0 otherwise; on-line (``parametric``) 0.01, since one
-        QP per cycle, linearised at the last plan, suffers more from flat directions ("Unweighted
-        channels").
+        configurations of more than three joints, 0 otherwise; on-line (``parametric``) 0.01: one QP
+        per cycle, linearised at the last plan, suffers more from flat directions ("Unweighted channels").
     compile : evaluate the stages' functions compiled to machine code, kept in a cache on disk
         (:mod:`desdemona.compiled`; the results are the same, about six times faster to evaluate).
         None: where the interpreted evaluation would take long (``COMPILE_WORK``) or the library is

@@ -35,6 +35,12 @@ class ChoiceError(ValueError):
 MIN_H_U = 1e-3
 #: How each command may start a session (the first is its default).
 OFFLINE_STARTS = ("rest", "free", "given")
+#: ``optimize``'s default solver on ``full``: fatrop, up to this many intervals per solve (90 s at
+#: 0.05 s). fatrop on the compiled stages takes a third of IPOPT's time there (its iterations are half
+#: as dear, and fewer); beyond, CasADi's fatrop interface takes a time that grows with the square of the
+#: intervals to set up (12 s for 1,140, 40 s for 1,880, 87 s for 2,400), and the two corpus cases
+#: beyond stopped at its iteration cap ("fatrop on the compiled stages" in docs/benchmarks.md).
+FATROP_UP_TO = 1800
 ONLINE_STARTS = ("rest", "home", "steady", "given")
 #: An on-line session's felt-rotation band [perception thresholds] (:attr:`MPCOptions.rotation_band`)
 #: with a perception model ("Felt rotation band").
@@ -127,10 +133,12 @@ def start(model: Model, choices: Choices, allowed: tuple[str, ...]) -> tuple[str
     return initial, state
 
 
-def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solver: str = "ipopt",
+def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solver: str = "auto",
             perception=None, workers: int = 1) -> Session:
     """The session of ``optimize`` and of each job of ``batch``: the cued path and its
-    :class:`~desdemona.problem.ProblemOptions`, checked to fit in memory with ``workers`` at once."""
+    :class:`~desdemona.problem.ProblemOptions`, checked to fit in memory with ``workers`` at once.
+    solver "auto": fatrop on more than three joints where a solve (the path, or its window) has at
+    most :data:`FATROP_UP_TO` intervals, IPOPT elsewhere."""
     from desdemona import windows
     from desdemona.problem import ProblemOptions
 
@@ -140,10 +148,14 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
     wall = _wall(choices)
     path = cued(path, model, choices)
     initial, state = start(model, choices, OFFLINE_STARTS)
-    problem = ProblemOptions(h_u=choices.h_u, solver=solver, perception=perception, initial=initial,
-                             final=choices.final, initial_state=state, wall=wall, **cost(path, model, choices))
+    problem = ProblemOptions(h_u=choices.h_u, solver="ipopt" if solver == "auto" else solver, perception=perception,
+                             initial=initial, final=choices.final, initial_state=state, wall=wall,
+                             **cost(path, model, choices))
     window = _window(path, model, problem, choices.window, workers)
     part = path if window is None else windows.part(path, 0.0, window)
+    if solver == "auto":
+        few = part.duration / choices.h_u <= FATROP_UP_TO
+        problem = dataclasses.replace(problem, solver="fatrop" if model.n > 3 and few else "ipopt")
     size = sizing.check_fits(part, model.config, problem, workers, model.limits.smooth)
     return Session(path, model, problem, size, window)
 

@@ -82,7 +82,7 @@ def _result_folder(args) -> Path:
 
 
 def run_optimize(args) -> int:
-    from desdemona import report
+    from desdemona import compiled, report
     from desdemona.thesis import ThesisOptions
     from desdemona.offline import OptimizeOptions, optimize, thesis_result
     from desdemona.windows import optimize_windowed
@@ -100,6 +100,7 @@ def run_optimize(args) -> int:
     path, problem, size = resolved.path, resolved.options, resolved.size
     unreachable = sizing.unreachable(path, model)
     progress = None if args.quiet else _Progress(args.starts, size, path, model.config)
+    compiled.notice = None if progress is None else progress.say
     with guard.reporting(None if progress is None else progress.solving, PROGRESS_EVERY):
         if args.method == "thesis":
             result = thesis_result(path, model, ThesisOptions(h_u=problem.h_u, starts=args.starts, seed=args.seed))
@@ -152,10 +153,10 @@ class _Progress:
         self.begin = time.perf_counter()
         self.tty = sys.stderr.isatty()
         if not self.tty:
-            self._say(f"{path.name} on {config.name}: {size.intervals:,} control intervals, {size.variables:,} "
-                      f"variables, {starts} start{'s' if starts > 1 else ''}")
+            self.say(f"{path.name} on {config.name}: {size.intervals:,} control intervals, {size.variables:,} "
+                     f"variables, {starts} start{'s' if starts > 1 else ''}")
 
-    def _say(self, text: str) -> None:
+    def say(self, text: str) -> None:
         print(f"desdemona: {text}", file=sys.stderr, flush=True)
 
     def start_done(self, done: int, total: int, best: float) -> None:
@@ -164,14 +165,14 @@ class _Progress:
             print(f"\r  starts [{bar}] {done}/{total}", end="" if done < total else "\n", file=sys.stderr,
                   flush=True)
         else:
-            self._say(f"start {done}/{total} done, {time.perf_counter() - self.begin:.1f} s, best cost so far {best:.6g}")
+            self.say(f"start {done}/{total} done, {time.perf_counter() - self.begin:.1f} s, best cost so far {best:.6g}")
 
     def window(self, index: int, count: int, start: float, end: float) -> None:
-        self._say(f"window {index}/{count}: {start:g}-{end:g} s")
+        self.say(f"window {index}/{count}: {start:g}-{end:g} s")
 
     def solving(self, iteration: int, cost: float, seconds: float) -> None:
         if not self.tty:
-            self._say(f"  solving: iteration {iteration}, cost {cost:.6g}, {seconds:.0f} s in this start, "
+            self.say(f"  solving: iteration {iteration}, cost {cost:.6g}, {seconds:.0f} s in this start, "
                       f"{time.perf_counter() - self.begin:.1f} s in all")
 
 

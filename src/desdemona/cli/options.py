@@ -39,9 +39,10 @@ def build_parser() -> argparse.ArgumentParser:
                           "t,wx,wy,wz,fx,fy,fz (SI units) or t,M")
     _add_machine_options(opt, default_config="yaw-track-cabin")
     opt.add_argument("--out", required=True, metavar="DIR", help="result folder to create")
-    opt.add_argument("--method", choices=("ipopt", "fatrop", "thesis"), default="ipopt",
-                     help="ipopt or fatrop: our exact-derivative solver; thesis: the thesis' own "
-                          "least-squares method, for comparison (default: ipopt)")
+    opt.add_argument("--method", choices=("auto", "ipopt", "fatrop", "thesis"), default="auto",
+                     help="ipopt or fatrop: our exact-derivative solver; auto: fatrop on full where a "
+                          "solve has at most 1800 intervals (90 s at the default step), ipopt elsewhere; "
+                          "thesis: the thesis' own least-squares method, for comparison (default: auto)")
     opt.add_argument("--perception", choices=tuple(perception_models.MODELS), default=None,
                      help="minimise the perceived difference through this vestibular model")
     _add_start_options(opt, starts=4)
