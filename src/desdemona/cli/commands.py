@@ -173,7 +173,7 @@ class _Progress:
     def solving(self, iteration: int, cost: float, seconds: float) -> None:
         if not self.tty:
             self.say(f"  solving: iteration {iteration}, cost {cost:.6g}, {seconds:.0f} s in this start, "
-                      f"{time.perf_counter() - self.begin:.1f} s in all")
+                     f"{time.perf_counter() - self.begin:.1f} s in all")
 
 
 def run_batch(args) -> int:
