@@ -137,8 +137,8 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
             perception=None, workers: int = 1) -> Session:
     """The session of ``optimize`` and of each job of ``batch``: the cued path and its
     :class:`~desdemona.problem.ProblemOptions`, checked to fit in memory with ``workers`` at once.
-    solver "auto": fatrop on more than three joints where a solve (the path, or its window) has at
-    most :data:`FATROP_UP_TO` intervals, IPOPT elsewhere."""
+    solver "auto": fatrop on more than three joints that cue all of S (``full``) where a solve (the
+    path, or its window) has at most :data:`FATROP_UP_TO` intervals, IPOPT elsewhere."""
     from desdemona import windows
     from desdemona.problem import ProblemOptions
 
@@ -155,7 +155,8 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
     part = path if window is None else windows.part(path, 0.0, window)
     if solver == "auto":
         few = part.duration / choices.h_u <= FATROP_UP_TO
-        problem = dataclasses.replace(problem, solver="fatrop" if model.n > 3 and few else "ipopt")
+        six = model.n > 3 and not model.config.takes_modulus  # `full`; not `dfs` (Gauss-Newton first on IPOPT)
+        problem = dataclasses.replace(problem, solver="fatrop" if six and few else "ipopt")
     size = sizing.check_fits(part, model.config, problem, workers, model.limits.smooth)
     return Session(path, model, problem, size, window)
 
