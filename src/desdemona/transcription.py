@@ -37,22 +37,19 @@ if TYPE_CHECKING:
 # cosine): it pays from about five solves of the same problem on, and only while it stays this small.
 EXPAND_LIMIT = 400_000
 EXPAND_SOLVES = 5
-# The stages' Jacobians and Hessians are independent: evaluate them on two threads.
-MAP_MODE, MAP_THREADS = "thread", 2
+MAP_MODE, MAP_THREADS = "thread", 2  # the stages' derivatives are independent: two threads
 # The mapped stage functions compiled for IPOPT (desdemona.compiled), and the work (stages times the
 # instructions of a stage's Jacobian) from which compiling pays by itself: on `full` a stage's Jacobian
 # has about 36,000 instructions; the catapult's 160 stages of it took 27 ms per iteration interpreted
 # and 5 ms compiled. The stage itself stays interpreted: IPOPT's interface differentiates f and g.
 COMPILED = ("hess", "jac", "grad")
 COMPILE_WORK = 2_000_000
-# With fatrop every stage function is compiled, at -O1: its own step is cheap (16 ms an iteration on
-# the C172 doublet on `full`, 338 intervals), the Hessian with the limits' curvature took 17 ms at -O0.
+# With fatrop every stage function is compiled, at -O1: its own step takes 16 ms an iteration on the
+# C172 doublet on `full`, its Hessian with the limits' curvature 7 ms (17 at -O0); docs/benchmarks.md.
 FATROP_COMPILED = ("stage", "jac", "jac0", "grad", "hess", "hess0")
 FATROP_FLAGS = ("-O1", "-fPIC", "-shared")
-# MUMPS' fill-reducing ordering: approximate minimum degree with quasi-dense rows (QAMD). IPOPT's
-# own time per iteration, measured against MUMPS' automatic choice: catapult on full 24 against 36 ms,
-# double pulse 23 against 31, triple pulse 34 against 45, car lap on yaw-track-cabin 39 against 41;
-# the cosine on full 17 against 16.
+# MUMPS' fill-reducing ordering: approximate minimum degree with quasi-dense rows (QAMD); IPOPT's time
+# per iteration against MUMPS' own choice: 24 against 36 ms on the catapult on full ("MUMPS ordering").
 MUMPS_ORDERING = 6
 
 #: With ``ProblemOptions.gauss_newton_first``: the Gauss-Newton phase stops at this tolerance or after
@@ -468,14 +465,12 @@ class CueingProblem(Formulation):
                 return self._ipopt(WARM_START)
             return self._ipopt({})
         opts = {"structure_detection": "auto", "equality": self.equality, "print_time": False,
-                "expand": self.expanded,
-                "fatrop": {"print_level": 0, "max_iter": o.max_iter, "tol": o.tol}}
-        oracle = self.nlp
-        if self.compiled:  # the NLP with the derivatives assembled here, for fatrop to find by name
-            oracle = compiled.linked(compiled.oracle(self.nlp, self.derivatives), self.stage_library, "nlp")
-            if oracle is None:
-                raise RuntimeError("the NLP's functions for fatrop did not compile (the warning says why); "
-                                   "solve with IPOPT, or with ProblemOptions(compile=False)")
+                "expand": self.expanded, "fatrop": {"print_level": 0, "max_iter": o.max_iter, "tol": o.tol}}
+        oracle = self.nlp  # or the NLP with the derivatives assembled here, for fatrop to find by name:
+        if self.compiled and (oracle := compiled.linked(compiled.oracle(self.nlp, self.derivatives),
+                                                        self.stage_library, "nlp")) is None:
+            raise RuntimeError("the NLP's functions for fatrop did not compile (the warning says why); "
+                               "solve with IPOPT, or with ProblemOptions(compile=False)")
         return ca.nlpsol("cueing", "fatrop", oracle, opts)
 
     def _ipopt(self, settings: dict, **derivatives) -> ca.Function:
