@@ -6,8 +6,9 @@ import dataclasses
 import numpy as np
 import pytest
 
-from desdemona import Model, profiles, session
+from desdemona import Model, profiles, session, windows
 from desdemona.cli.options import build_parser
+from desdemona.perception import canals_model
 from desdemona.problem import WALL, ProblemOptions
 from desdemona.session import ChoiceError, Choices
 
@@ -127,7 +128,8 @@ def test_the_wall_reaches_the_off_and_on_line_problems_and_is_checked(catapult):
 
 def test_the_offline_solver_is_fatrop_on_full_up_to_its_length(catapult):
     """auto: fatrop on full (more than three joints, all of S cued) for a solve of at most FATROP_UP_TO
-    intervals (the path, or each window of it), IPOPT elsewhere (dfs too); an asked solver is kept."""
+    intervals, a longer path there in windows unless the user asks otherwise; IPOPT elsewhere (dfs
+    too); an asked solver is kept."""
     full, ytc = Model(config="full"), Model(config="yaw-track-cabin")
     assert session.offline(catapult, full).options.solver == "fatrop"
     assert session.offline(catapult, ytc).options.solver == "ipopt"
@@ -135,6 +137,11 @@ def test_the_offline_solver_is_fatrop_on_full_up_to_its_length(catapult):
     assert session.offline(catapult, full, solver="ipopt").options.solver == "ipopt"
     step = Choices().h_u
     longer = profiles.cosine(amplitude=3.0, omega=0.4, duration=(session.FATROP_UP_TO + 20) * step, dt=0.05)
-    assert session.offline(longer, full).options.solver == "ipopt"
-    assert session.offline(longer, full, Choices(window=60.0)).options.solver == "fatrop"
+    windowed = session.offline(longer, full)  # fatrop in windows, not IPOPT on the whole
+    assert windowed.options.solver == "fatrop" and windowed.window == windows.DEFAULT_WINDOW
+    assert session.offline(longer, full, Choices(window=0)).options.solver == "ipopt"
+    assert session.offline(longer, full, solver="ipopt").window is None
+    assert session.offline(longer, ytc).window is None
+    perceived = session.offline(longer, full, perception=canals_model())  # its filters need the whole path
+    assert perceived.window is None and perceived.options.solver == "ipopt"
     assert session.offline(longer, full, Choices(h_u=2 * step)).options.solver == "fatrop"

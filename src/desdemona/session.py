@@ -16,6 +16,7 @@ controller minimised, off-line and on-line alike (thesis eq. 3.6's Q).
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import math
 from dataclasses import dataclass
@@ -36,10 +37,11 @@ MIN_H_U = 1e-3
 #: How each command may start a session (the first is its default).
 OFFLINE_STARTS = ("rest", "free", "given")
 #: ``optimize``'s default solver on ``full``: fatrop, up to this many intervals per solve (90 s at
-#: 0.05 s). fatrop on the compiled stages takes a third of IPOPT's time there (its iterations are half
-#: as dear, and fewer); beyond, CasADi's fatrop interface takes a time that grows with the square of the
-#: intervals to set up (12 s for 1,140, 40 s for 1,880, 87 s for 2,400), and the two corpus cases
-#: beyond stopped at its iteration cap ("fatrop on the compiled stages" in docs/benchmarks.md).
+#: 0.05 s); a longer path there is solved in windows. fatrop on the compiled stages takes a third of
+#: IPOPT's time there (its iterations are half as dear, and fewer); beyond, CasADi's fatrop interface
+#: takes a time that grows with the square of the intervals to set up (12 s for 1,140, 40 s for 1,880,
+#: 87 s for 2,400), and the two corpus cases beyond stopped at its iteration cap, where in windows of
+#: 60 s the 747 take-off converged in 151 s ("fatrop on the compiled stages" in docs/benchmarks.md).
 FATROP_UP_TO = 1800
 ONLINE_STARTS = ("rest", "home", "steady", "given")
 #: An on-line session's felt-rotation band [perception thresholds] (:attr:`MPCOptions.rotation_band`)
@@ -138,7 +140,8 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
     """The session of ``optimize`` and of each job of ``batch``: the cued path and its
     :class:`~desdemona.problem.ProblemOptions`, checked to fit in memory with ``workers`` at once.
     solver "auto": fatrop on more than three joints that cue all of S (``full``) where a solve (the
-    path, or its window) has at most :data:`FATROP_UP_TO` intervals, IPOPT elsewhere."""
+    path, or its window) has at most :data:`FATROP_UP_TO` intervals, and on a longer path there in
+    windows of :data:`~desdemona.windows.DEFAULT_WINDOW` unless a window is asked for; IPOPT elsewhere."""
     from desdemona import windows
     from desdemona.problem import ProblemOptions
 
@@ -152,10 +155,15 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
                              initial=initial, final=choices.final, initial_state=state, wall=wall,
                              **cost(path, model, choices))
     window = _window(path, model, problem, choices.window, workers)
+    six = model.n > 3 and not model.config.takes_modulus  # `full`; not `dfs` (Gauss-Newton first on IPOPT)
+    if solver == "auto" and six and window is None and choices.window is None and perception is None \
+            and path.duration / choices.h_u > FATROP_UP_TO:  # fatrop in windows, not IPOPT on the whole
+        with contextlib.suppress(windows.WindowError):  # else whole, as asked for
+            window = windows.choose(path, model, problem, max(windows.DEFAULT_WINDOW, 2 * windows.overlap(model)),
+                                    workers)
     part = path if window is None else windows.part(path, 0.0, window)
     if solver == "auto":
         few = part.duration / choices.h_u <= FATROP_UP_TO
-        six = model.n > 3 and not model.config.takes_modulus  # `full`; not `dfs` (Gauss-Newton first on IPOPT)
         problem = dataclasses.replace(problem, solver="fatrop" if six and few else "ipopt")
     size = sizing.check_fits(part, model.config, problem, workers, model.limits.smooth)
     return Session(path, model, problem, size, window)
