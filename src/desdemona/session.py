@@ -16,7 +16,6 @@ controller minimised, off-line and on-line alike (thesis eq. 3.6's Q).
 
 from __future__ import annotations
 
-import contextlib
 import dataclasses
 import math
 from dataclasses import dataclass
@@ -154,13 +153,11 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
     problem = ProblemOptions(h_u=choices.h_u, solver="ipopt" if solver == "auto" else solver, perception=perception,
                              initial=initial, final=choices.final, initial_state=state, wall=wall,
                              **cost(path, model, choices))
-    window = _window(path, model, problem, choices.window, workers)
     six = model.n > 3 and not model.config.takes_modulus  # `full`; not `dfs` (Gauss-Newton first on IPOPT)
-    if solver == "auto" and six and window is None and choices.window is None and perception is None \
-            and path.duration / choices.h_u > FATROP_UP_TO:  # fatrop in windows, not IPOPT on the whole
-        with contextlib.suppress(windows.WindowError):  # else whole, as asked for
-            window = windows.choose(path, model, problem, max(windows.DEFAULT_WINDOW, 2 * windows.overlap(model)),
-                                    workers)
+    whole_up_to = windows.WHOLE_UP_TO  # on `full`, fatrop in windows beyond its length, not IPOPT on the whole
+    if solver == "auto" and six:
+        whole_up_to = min(whole_up_to, FATROP_UP_TO * choices.h_u)
+    window = _window(path, model, problem, choices.window, workers, whole_up_to)
     part = path if window is None else windows.part(path, 0.0, window)
     if solver == "auto":
         few = part.duration / choices.h_u <= FATROP_UP_TO
@@ -169,12 +166,13 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
     return Session(path, model, problem, size, window)
 
 
-def _window(path: DesiredPath, model: Model, problem, asked: float | None, workers: int) -> float | None:
+def _window(path: DesiredPath, model: Model, problem, asked: float | None, workers: int,
+            whole_up_to: float) -> float | None:
     """The off-line window (:func:`desdemona.windows.choose`), its errors as the user's."""
     from desdemona import windows
 
     try:
-        return windows.choose(path, model, problem, asked, workers)
+        return windows.choose(path, model, problem, asked, workers, whole_up_to)
     except windows.WindowError as error:
         raise ChoiceError(str(error)) from None
 

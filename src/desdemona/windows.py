@@ -64,10 +64,11 @@ def overlap(model: Model) -> float:
     return max(MIN_OVERLAP, math.ceil(2.0 * stopping_time(model)))
 
 
-def choose(path: DesiredPath, model: Model, options, asked: float | None, workers: int = 1) -> float | None:
+def choose(path: DesiredPath, model: Model, options, asked: float | None, workers: int = 1,
+           whole_up_to: float = WHOLE_UP_TO) -> float | None:
     """The window [s] for ``path`` (None: solve it whole). ``asked``: the user's ``--window`` (0: whole,
-    None: the default; with a perception model the default is whole). Raises :class:`WindowError` for a
-    window that cannot work."""
+    None: the default, windows above ``whole_up_to`` seconds; with a perception model the default is
+    whole). Raises :class:`WindowError` for a window that cannot work."""
     if asked is not None and asked <= 0:
         return None
     if options.perception is not None:
@@ -76,7 +77,7 @@ def choose(path: DesiredPath, model: Model, options, asked: float | None, worker
         _refuse_perception()
     shortest = 2 * overlap(model)
     if asked is None:
-        if path.duration <= WHOLE_UP_TO:
+        if path.duration <= whole_up_to:
             return None
         asked = max(DEFAULT_WINDOW, shortest)
     if asked >= path.duration:
