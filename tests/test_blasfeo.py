@@ -1,6 +1,7 @@
-"""HPIPM on BLASFEO built for this processor (desdemona.blasfeo): the controller's commands equal those
-of CasADi's own build to round-off, the library is the one the process runs on, the build is cached,
-and every reason not to use it falls back to CasADi's build, leaving nothing behind."""
+"""HPIPM and fatrop on BLASFEO built for this processor (desdemona.blasfeo): the controller's commands
+and fatrop's off-line solution equal those of CasADi's own build to round-off, the library is the one
+the process runs on, the build is cached, and every reason not to use it falls back to CasADi's build,
+leaving nothing behind."""
 
 import json
 import os
@@ -33,9 +34,23 @@ for k in range(5):
 print(json.dumps({"status": blasfeo.status(), "jerks": out}))
 """
 
+# fatrop off-line from one guess on a short catapult on `full` (CasADi's own derivatives: nothing compiled)
+FATROP = """
+import json
+from desdemona import Model, blasfeo, profiles
+from desdemona.offline import initial_guesses
+from desdemona.problem import ProblemOptions
+from desdemona.transcription import CueingProblem
+path = profiles.catapult(level=15.0, push=0.5, quiet=0.2, duration=1.5)
+problem = CueingProblem(Model(None, "full"), path, ProblemOptions(h_u=0.1, solver="fatrop", compile=False))
+solution = problem.solve(*initial_guesses(problem, 1, 0)[0][1:])
+print(json.dumps({"status": blasfeo.status(), "success": solution.success, "iterations": solution.iterations,
+                  "x": solution.x.tolist()}))
+"""
 
-def commands(env: dict) -> dict:
-    done = subprocess.run([sys.executable, "-c", COMMANDS], capture_output=True, text=True, timeout=300,
+
+def commands(env: dict, script: str = COMMANDS) -> dict:
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300,
                           env={**os.environ, **env})
     assert done.returncode == 0, done.stderr
     return json.loads(done.stdout.strip().splitlines()[-1])
@@ -52,12 +67,23 @@ def test_the_controller_commands_the_same_on_either_build():
 
 
 @needs_build
+def test_fatrop_solves_the_same_on_either_build():
+    ours, casadi = commands({}, FATROP), commands({"DESDEMONA_BLASFEO": "generic"}, FATROP)
+    assert ours["status"].startswith(f"BLASFEO {blasfeo.VERSION} for AVX2")
+    assert casadi["status"] == "CasADi's generic BLASFEO (DESDEMONA_BLASFEO=generic)"
+    assert ours["success"] and casadi["success"] and ours["iterations"] == casadi["iterations"]
+    a, b = np.array(ours["x"]), np.array(casadi["x"])
+    np.testing.assert_allclose(a, b, rtol=0, atol=1e-6 * np.abs(b).max())
+
+
+@needs_build
 def test_the_process_runs_on_the_library_it_built():
     status = blasfeo.load()
     assert status == blasfeo.status()
     folder = blasfeo.build()
     assert status == f"BLASFEO {blasfeo.VERSION} for AVX2 ({folder})"
     assert [Path(p).parent for p in blasfeo._mapped("libblasfeo")] == [folder]
+    assert blasfeo._mapped("libfatrop")  # fatrop loaded with it, bound to it
     assert blasfeo.load() is status  # once per process
 
 
@@ -84,10 +110,10 @@ def test_the_reasons_to_keep_casadis_build(monkeypatch):
     monkeypatch.setenv("DESDEMONA_BLASFEO", "generic")
     assert blasfeo.unavailable() == "DESDEMONA_BLASFEO=generic"
     monkeypatch.delenv("DESDEMONA_BLASFEO")
-    monkeypatch.setattr(blasfeo, "_cpu_flags", lambda: {"sse2", "avx"})
+    monkeypatch.setattr(compiled, "cpu_flags", lambda: {"sse2", "avx"})
     if sys.platform.startswith("linux") and blasfeo.platform.machine() == "x86_64":
         assert blasfeo.unavailable() == "the processor lacks AVX2 or FMA"
-    monkeypatch.setattr(blasfeo, "_cpu_flags", lambda: {"avx2", "fma"})
+    monkeypatch.setattr(compiled, "cpu_flags", lambda: {"avx2", "fma"})
     monkeypatch.setattr(blasfeo, "VERSION", "0.0.0")
     if sys.platform.startswith("linux") and blasfeo.platform.machine() == "x86_64":
         assert "linked against another BLASFEO than 0.0.0" in blasfeo.unavailable()

@@ -163,13 +163,16 @@ def test_exit_codes_are_documented(capsys):
         assert f"\n  {code}" in out
 
 
-def test_fatrop_status_in_words():
-    from desdemona import Model
+def test_fatrop_status_in_words(tmp_path):
+    """fatrop's return code in IPOPT's words, and its linear algebra (desdemona.blasfeo) in the summary."""
+    from desdemona import Model, blasfeo
     from desdemona.offline import OptimizeOptions, optimize
 
     result = optimize(profiles.cosine(duration=1.0), Model(config="yaw-track"),
                       options=OptimizeOptions(problem.ProblemOptions(h_u=0.1, solver="fatrop"), starts=1))
     assert result.solution.status == "Solve_Succeeded" and result.converged
+    summary = json.loads((report.write(result, tmp_path / "run", view=False) / "summary.json").read_text())
+    assert summary["solver"]["linear_algebra"] == blasfeo.status() is not None
 
 
 def _guarded(tmp_path, body: str) -> subprocess.Popen:

@@ -1,25 +1,29 @@
-"""HPIPM on linear algebra built for this processor (the real-time iteration's QP, thesis chapter 7).
+"""HPIPM and fatrop on linear algebra built for this processor (the real-time iteration's QP, thesis
+chapter 7, and the off-line NLP on ``full``, chapter 4).
 
-CasADi's wheel ships HPIPM, the structure-exploiting QP solver of :mod:`desdemona.realtime`, linked
+CasADi's wheel ships HPIPM, the structure-exploiting QP solver of :mod:`desdemona.realtime`, and
+fatrop, the structure-exploiting NLP solver of :mod:`desdemona.transcription` on ``full``, both linked
 against BLASFEO built for a generic x86-64 target: its matrix kernels are 4x4 blocks of plain C.
 Measured on 2026-12-03 (600 QPs of the F-16 turn on ``full``, `hold`, 46 intervals of 18 states and 6
 controls, each solved three times): two thirds of the QP's time is in those kernels. BLASFEO built for
 processors with AVX2 and FMA (its ``X64_INTEL_HASWELL`` target: every x86-64 server processor since
 2013) solves the same QPs in the same iterations 2.2-2.8x faster: median 6.7-6.9 -> 2.4-3.2 ms, p99
 11.2-11.5 -> 3.9-4.4 ms; the `dfs` QPs at 100 Hz (56 intervals of 12 states) 2.39 -> 1.18 ms median.
-See "QP linear algebra" in docs/benchmarks.md.
+See "QP linear algebra" in docs/benchmarks.md; for fatrop, "fatrop on BLASFEO for the processor".
 
 So, where it can, :func:`load` compiles the BLASFEO sources kept in ``data/blasfeo`` (version
-:data:`VERSION`, the one CasADi's HPIPM is linked against; BSD 2-clause, ``LICENSE.txt`` there) once
-into the cache (:func:`desdemona.compiled.cache_dir`), beside copies of CasADi's own HPIPM plugin and
-library, and has CasADi load its ``hpipm`` plugin from there. HPIPM is the same code; only the
-kernels under it change, and with them the rounding of the QP's solution (tested against CasADi's
-build in a separate process). The panel size of the double-precision matrices, which HPIPM's own code
-depends on, is 4 in both builds (``blasfeo_block_size.h``).
+:data:`VERSION`, the one CasADi's HPIPM and fatrop are linked against; BSD 2-clause, ``LICENSE.txt``
+there) once into the cache (:func:`desdemona.compiled.cache_dir`), beside copies of CasADi's own HPIPM
+plugin and library, has CasADi load its ``hpipm`` plugin from there, and then its ``fatrop`` plugin
+from CasADi's own folder: the dynamic linker binds fatrop's ``libblasfeo.so.0`` to the one already
+loaded. HPIPM and fatrop are the same code; only the kernels under them change, and with them the
+rounding of their solutions (tested against CasADi's build in a separate process). The panel size of
+the double-precision matrices, which their own code depends on, is 4 in both builds
+(``blasfeo_block_size.h``).
 
 Everywhere else CasADi's build is used, as before, and :func:`status` says why: another processor
-or system, another BLASFEO in CasADi, no C compiler, a failed build (with a warning), HPIPM loaded
-before :func:`load` ran, or ``DESDEMONA_BLASFEO=generic`` in the environment (to compare the two).
+or system, another BLASFEO in CasADi, no C compiler, a failed build (with a warning), HPIPM or fatrop
+loaded before :func:`load` ran, or ``DESDEMONA_BLASFEO=generic`` in the environment (to compare the two).
 """
 
 from __future__ import annotations
@@ -57,7 +61,7 @@ _status: str | None = None
 
 
 def status() -> str | None:
-    """What the ``hpipm`` plugin runs on, as :func:`load` left it (None before it ran)."""
+    """What the ``hpipm`` and ``fatrop`` plugins run on, as :func:`load` left it (None before it ran)."""
     return _status
 
 
@@ -67,7 +71,7 @@ def unavailable() -> str | None:
         return "DESDEMONA_BLASFEO=generic"
     if not sys.platform.startswith("linux") or platform.machine() not in ("x86_64", "AMD64"):
         return f"built only for x86-64 Linux, this is {sys.platform} on {platform.machine()}"
-    flags = _cpu_flags()
+    flags = compiled.cpu_flags()
     if not {"avx2", "fma"} <= flags:
         return "the processor lacks AVX2 or FMA"
     casadi_dir = Path(ca.__file__).parent
@@ -82,9 +86,9 @@ def unavailable() -> str | None:
 
 
 def load() -> str:
-    """Have CasADi's ``hpipm`` plugin run on BLASFEO built for this processor, building it into the
-    cache the first time (about 15 s on two cores), where it can; once per process (a plugin, once
-    loaded, stays). Returns :func:`status`."""
+    """Have CasADi's ``hpipm`` and ``fatrop`` plugins run on BLASFEO built for this processor, building
+    it into the cache the first time (about 15 s on two cores), where it can; once per process (a
+    plugin, once loaded, stays). Returns :func:`status`."""
     global _status
     with _lock:
         if _status is None:
@@ -94,16 +98,16 @@ def load() -> str:
 
 def _load() -> str:
     generic = "CasADi's generic BLASFEO"
-    if _mapped("libcasadi_conic_hpipm"):
-        return f"{generic} (HPIPM was loaded before)"
+    if _mapped("libcasadi_conic_hpipm") or _mapped("libfatrop"):
+        return f"{generic} (HPIPM or fatrop was loaded before)"
     reason = unavailable()
     if reason:
         return f"{generic} ({reason})"
     try:
         folder = build()
     except (OSError, subprocess.SubprocessError) as error:
-        warnings.warn(f"building BLASFEO {VERSION} for this processor failed ({error}); HPIPM runs on "
-                      "CasADi's generic build (slower, same results)", RuntimeWarning, stacklevel=3)
+        warnings.warn(f"building BLASFEO {VERSION} for this processor failed ({error}); HPIPM and fatrop run "
+                      "on CasADi's generic build (slower, same results)", RuntimeWarning, stacklevel=3)
         return f"{generic} (the build failed: {error})"
     before = ca.GlobalOptions.getCasadiPath()
     try:
@@ -113,6 +117,10 @@ def _load() -> str:
         return f"{generic} (the plugin in {folder} did not load: {error})"
     finally:
         ca.GlobalOptions.setCasadiPath(before)
+    try:  # from CasADi's folder; its libblasfeo.so.0 is the one loaded now
+        ca.load_nlpsol("fatrop")
+    except RuntimeError:
+        pass  # a CasADi without fatrop: HPIPM alone
     mapped = _mapped("libblasfeo")
     if mapped and all(Path(m).parent == folder for m in mapped):
         return f"BLASFEO {VERSION} for AVX2 ({folder})"
@@ -177,17 +185,6 @@ def _run(command: list[str]) -> None:
     if done.returncode != 0:
         raise subprocess.SubprocessError(f"{Path(command[0]).name} exited {done.returncode}: "
                                          f"{done.stderr.strip()[-500:]}")
-
-
-def _cpu_flags() -> set[str]:
-    try:
-        with open("/proc/cpuinfo") as fh:
-            for line in fh:
-                if line.startswith("flags"):
-                    return set(line.split(":", 1)[1].split())
-    except OSError:
-        pass
-    return set()
 
 
 def _mapped(name: str) -> list[str]:

@@ -22,7 +22,7 @@ from typing import TYPE_CHECKING, NamedTuple
 import casadi as ca
 import numpy as np
 
-from desdemona import compiled, guard
+from desdemona import blasfeo, compiled, guard
 from desdemona.model import Model
 from desdemona.plan import Plan, node_states, ramp, start_acceleration, start_state
 from desdemona.problem import Formulation, ProblemOptions
@@ -44,10 +44,10 @@ MAP_MODE, MAP_THREADS = "thread", 2  # the stages' derivatives are independent: 
 # and 5 ms compiled. The stage itself stays interpreted: IPOPT's interface differentiates f and g.
 COMPILED = ("hess", "jac", "grad")
 COMPILE_WORK = 2_000_000
-# With fatrop every stage function is compiled, at -O1: its own step takes 16 ms an iteration on the
-# C172 doublet on `full`, its Hessian with the limits' curvature 7 ms (17 at -O0); docs/benchmarks.md.
+# With fatrop every stage function is compiled, at -O1 with fused multiply-adds where the processor has
+# them: the F-16 turn's 1,100 stage Hessians on `full` take 25 ms (28 without them); docs/benchmarks.md.
 FATROP_COMPILED = ("stage", "jac", "jac0", "grad", "hess", "hess0")
-FATROP_FLAGS = ("-O1", "-fPIC", "-shared")
+FATROP_FLAGS = ("-O1", "-fPIC", "-shared", *compiled.processor_flags())
 # MUMPS' fill-reducing ordering: approximate minimum degree with quasi-dense rows (QAMD); IPOPT's time
 # per iteration against MUMPS' own choice: 24 against 36 ms on the catapult on full ("MUMPS ordering").
 MUMPS_ORDERING = 6
@@ -59,8 +59,7 @@ GAUSS_NEWTON_TOL, GAUSS_NEWTON_ITER = 1e-3, 30
 WARM_START = {"warm_start_init_point": "yes", "mu_init": 1e-6, "warm_start_bound_push": 1e-9,
               "warm_start_bound_frac": 1e-9, "warm_start_slack_bound_push": 1e-9,
               "warm_start_slack_bound_frac": 1e-9, "warm_start_mult_bound_push": 1e-9}
-# fatrop reports a number (its FatropAlg::optimize return code, CasADi 3.7); the words IPOPT uses for it.
-FATROP_STATUS = {0: "Solve_Succeeded", 1: "Maximum_Iterations_Exceeded"}
+FATROP_STATUS = {0: "Solve_Succeeded", 1: "Maximum_Iterations_Exceeded"}  # its return codes, in IPOPT's words
 
 
 @dataclass(frozen=True)
@@ -464,13 +463,14 @@ class CueingProblem(Formulation):
                                                 hess_lag=self.gauss_newton_hessian)
                 return self._ipopt(WARM_START)
             return self._ipopt({})
-        opts = {"structure_detection": "auto", "equality": self.equality, "print_time": False,
-                "expand": self.expanded, "fatrop": {"print_level": 0, "max_iter": o.max_iter, "tol": o.tol}}
+        opts = {"structure_detection": "auto", "equality": self.equality, "print_time": False, "expand": self.expanded,
+                "fatrop": {"print_level": 0, "max_iter": o.max_iter, "tol": o.tol}}
         oracle = self.nlp  # or the NLP with the derivatives assembled here, for fatrop to find by name:
         if self.compiled and (oracle := compiled.linked(compiled.oracle(self.nlp, self.derivatives),
                                                         self.stage_library, "nlp")) is None:
             raise RuntimeError("the NLP's functions for fatrop did not compile (the warning says why); "
                                "solve with IPOPT, or with ProblemOptions(compile=False)")
+        blasfeo.load()  # on linear algebra built for this processor, where it can be (desdemona.blasfeo)
         return ca.nlpsol("cueing", "fatrop", oracle, opts)
 
     def _ipopt(self, settings: dict, **derivatives) -> ca.Function:
