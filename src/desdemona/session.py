@@ -35,13 +35,14 @@ class ChoiceError(ValueError):
 MIN_H_U = 1e-3
 #: How each command may start a session (the first is its default).
 OFFLINE_STARTS = ("rest", "free", "given")
-#: ``optimize``'s default solver on ``full``: fatrop, up to this many intervals per solve (90 s at
+#: ``optimize``'s default solver on ``full``: fatrop, up to this many intervals per solve (60 s at
 #: 0.05 s); a longer path there is solved in windows. fatrop on the compiled stages takes a third of
 #: IPOPT's time there (its iterations are half as dear, and fewer); beyond, CasADi's fatrop interface
 #: takes a time that grows with the square of the intervals to set up (12 s for 1,140, 40 s for 1,880,
-#: 87 s for 2,400), and the two corpus cases beyond stopped at its iteration cap, where in windows of
-#: 60 s the 747 take-off converged in 151 s ("fatrop on the compiled stages" in docs/benchmarks.md).
-FATROP_UP_TO = 1800
+#: 87 s for 2,400): the runway (85 s) took 123 s in windows of 60 s against 142 s whole, RMS +0.4 %,
+#: and the two cases beyond 1,800 stopped at fatrop's iteration cap whole and converged in windows
+#: ("fatrop on the compiled stages", "fatrop on BLASFEO for the processor" in docs/benchmarks.md).
+FATROP_UP_TO = 1200
 ONLINE_STARTS = ("rest", "home", "steady", "given")
 #: An on-line session's felt-rotation band [perception thresholds] (:attr:`MPCOptions.rotation_band`)
 #: with a perception model ("Felt rotation band").
@@ -160,7 +161,7 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
     window = _window(path, model, problem, choices.window, workers, whole_up_to)
     part = path if window is None else windows.part(path, 0.0, window)
     if solver == "auto":
-        few = part.duration / choices.h_u <= FATROP_UP_TO
+        few = round(part.duration / choices.h_u) <= FATROP_UP_TO
         problem = dataclasses.replace(problem, solver="fatrop" if six and few else "ipopt")
     size = sizing.check_fits(part, model.config, problem, workers, model.limits.smooth)
     return Session(path, model, problem, size, window)
