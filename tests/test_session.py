@@ -127,13 +127,14 @@ def test_the_wall_reaches_the_off_and_on_line_problems_and_is_checked(catapult):
 
 
 def test_the_offline_solver_is_fatrop_on_full_up_to_its_length(catapult):
-    """auto: fatrop on full (more than three joints, all of S cued) for a solve of at most FATROP_UP_TO
-    intervals, a longer path there in windows unless the user asks otherwise; IPOPT elsewhere (dfs
-    too); an asked solver is kept."""
+    """auto: fatrop on full and dfs (more than three joints) for a solve of at most FATROP_UP_TO
+    intervals, a longer path there in windows unless the user asks otherwise; IPOPT elsewhere; an
+    asked solver is kept."""
     full, ytc = Model(config="full"), Model(config="yaw-track-cabin")
     assert session.offline(catapult, full).options.solver == "fatrop"
     assert session.offline(catapult, ytc).options.solver == "ipopt"
-    assert session.offline(profiles.get_profile("dfs-catapult"), Model(config="dfs")).options.solver == "ipopt"
+    assert session.offline(profiles.get_profile("dfs-catapult"), Model(config="dfs")).options.solver == "fatrop"
+    assert session.offline(profiles.get_profile("dfs-catapult"), Model(config="dfs-yaw")).options.solver == "ipopt"
     assert session.offline(catapult, full, solver="ipopt").options.solver == "ipopt"
     step = Choices().h_u
     longer = profiles.cosine(amplitude=3.0, omega=0.4, duration=(session.FATROP_UP_TO + 20) * step, dt=0.05)
