@@ -1,8 +1,8 @@
 """HPIPM and fatrop on linear algebra built for this processor (the real-time iteration's QP, thesis
-chapter 7, and the off-line NLP on ``full``, chapter 4).
+chapter 7, and the off-line NLP on ``full`` and ``dfs``, chapter 4).
 
 CasADi's wheel ships HPIPM, the structure-exploiting QP solver of :mod:`desdemona.realtime`, and
-fatrop, the structure-exploiting NLP solver of :mod:`desdemona.transcription` on ``full``, both linked
+fatrop, the structure-exploiting NLP solver of :mod:`desdemona.transcription` off-line, both linked
 against BLASFEO built for a generic x86-64 target: its matrix kernels are 4x4 blocks of plain C.
 Measured on 2026-12-03 (600 QPs of the F-16 turn on ``full``, `hold`, 46 intervals of 18 states and 6
 controls, each solved three times): two thirds of the QP's time is in those kernels. BLASFEO built for
