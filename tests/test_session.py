@@ -127,12 +127,13 @@ def test_the_wall_reaches_the_off_and_on_line_problems_and_is_checked(catapult):
 
 
 def test_the_offline_solver_is_fatrop_on_full_up_to_its_length(catapult):
-    """auto: fatrop on full and dfs (more than three joints) for a solve of at most FATROP_UP_TO
+    """auto: fatrop on yaw-track-cabin, full and dfs (three joints or more) for a solve of at most FATROP_UP_TO
     intervals, a longer path there in windows unless the user asks otherwise; IPOPT elsewhere; an
     asked solver is kept."""
-    full, ytc = Model(config="full"), Model(config="yaw-track-cabin")
+    full, ytc, two = Model(config="full"), Model(config="yaw-track-cabin"), Model(config="yaw-track")
     assert session.offline(catapult, full).options.solver == "fatrop"
-    assert session.offline(catapult, ytc).options.solver == "ipopt"
+    assert session.offline(catapult, ytc).options.solver == "fatrop"
+    assert session.offline(catapult, two).options.solver == "ipopt"
     assert session.offline(profiles.get_profile("dfs-catapult"), Model(config="dfs")).options.solver == "fatrop"
     assert session.offline(profiles.get_profile("dfs-catapult"), Model(config="dfs-yaw")).options.solver == "ipopt"
     assert session.offline(catapult, full, solver="ipopt").options.solver == "ipopt"
@@ -142,7 +143,8 @@ def test_the_offline_solver_is_fatrop_on_full_up_to_its_length(catapult):
     assert windowed.options.solver == "fatrop" and windowed.window == windows.DEFAULT_WINDOW
     assert session.offline(longer, full, Choices(window=0)).options.solver == "ipopt"
     assert session.offline(longer, full, solver="ipopt").window is None
-    assert session.offline(longer, ytc).window is None
+    assert session.offline(longer, ytc).window == windows.DEFAULT_WINDOW
+    assert session.offline(longer, two).window is None
     perceived = session.offline(longer, full, perception=canals_model())  # its filters need the whole path
     assert perceived.window is None and perceived.options.solver == "ipopt"
     assert session.offline(longer, full, Choices(h_u=2 * step)).options.solver == "fatrop"

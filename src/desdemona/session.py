@@ -35,7 +35,7 @@ class ChoiceError(ValueError):
 MIN_H_U = 1e-3
 #: How each command may start a session (the first is its default).
 OFFLINE_STARTS = ("rest", "free", "given")
-#: ``optimize``'s default solver on ``full`` and ``dfs``: fatrop, up to this many intervals per solve
+#: ``optimize``'s default solver on ``yaw-track-cabin``, ``full`` and ``dfs``: fatrop, up to this many intervals per solve
 #: (60 s at 0.05 s); a longer path there is solved in windows. fatrop on the compiled stages takes a
 #: third of IPOPT's time on ``full`` (its iterations are half as dear, and fewer), 0.5-0.9 of it on
 #: ``dfs``; beyond, CasADi's fatrop interface takes a time that grows with the square of the intervals
@@ -140,7 +140,7 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
             perception=None, workers: int = 1) -> Session:
     """The session of ``optimize`` and of each job of ``batch``: the cued path and its
     :class:`~desdemona.problem.ProblemOptions`, checked to fit in memory with ``workers`` at once.
-    solver "auto": fatrop on more than three joints (``full``, ``dfs``) where a solve (the path, or
+    solver "auto": fatrop on three joints or more (``yaw-track-cabin``, ``full``, ``dfs``) where a solve (the path, or
     its window) has at most :data:`FATROP_UP_TO` intervals, and on a longer path there in windows of
     :data:`~desdemona.windows.DEFAULT_WINDOW` unless a window is asked for; IPOPT elsewhere."""
     from desdemona import windows
@@ -155,7 +155,7 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
     problem = ProblemOptions(h_u=choices.h_u, solver="ipopt" if solver == "auto" else solver, perception=perception,
                              initial=initial, final=choices.final, initial_state=state, wall=wall,
                              **cost(path, model, choices))
-    large = model.n > 3  # `full` and `dfs`
+    large = model.n >= 3  # `yaw-track-cabin`, `full` and `dfs`
     whole_up_to = windows.WHOLE_UP_TO  # there, fatrop in windows beyond its length, not IPOPT on the whole
     if solver == "auto" and large:
         whole_up_to = min(whole_up_to, FATROP_UP_TO * choices.h_u)

@@ -40,7 +40,7 @@ def build_parser() -> argparse.ArgumentParser:
     _add_machine_options(opt, default_config="yaw-track-cabin")
     opt.add_argument("--out", required=True, metavar="DIR", help="result folder to create")
     opt.add_argument("--method", choices=("auto", "ipopt", "fatrop", "thesis"), default="auto",
-                     help="ipopt or fatrop: our exact-derivative solver; auto: fatrop on full and dfs (a "
+                     help="ipopt or fatrop: our exact-derivative solver; auto: fatrop on yaw-track-cabin, full and dfs (a "
                           "path of more than 1200 intervals, 60 s at the default step, in windows), ipopt elsewhere; "
                           "thesis: the thesis' own least-squares method, for comparison (default: auto)")
     opt.add_argument("--perception", choices=tuple(perception_models.MODELS), default=None,
