@@ -71,8 +71,7 @@ def unavailable() -> str | None:
         return "DESDEMONA_BLASFEO=generic"
     if not sys.platform.startswith("linux") or platform.machine() not in ("x86_64", "AMD64"):
         return f"built only for x86-64 Linux, this is {sys.platform} on {platform.machine()}"
-    flags = compiled.cpu_flags()
-    if not {"avx2", "fma"} <= flags:
+    if not compiled.processor_flags():
         return "the processor lacks AVX2 or FMA"
     casadi_dir = Path(ca.__file__).parent
     if not (casadi_dir / f"libblasfeo.so.{VERSION}").exists():

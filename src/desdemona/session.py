@@ -35,14 +35,15 @@ class ChoiceError(ValueError):
 MIN_H_U = 1e-3
 #: How each command may start a session (the first is its default).
 OFFLINE_STARTS = ("rest", "free", "given")
-#: ``optimize``'s default solver on ``yaw-track-cabin``, ``full`` and ``dfs``: fatrop, up to this many intervals per solve
-#: (60 s at 0.05 s); a longer path there is solved in windows. fatrop on the compiled stages takes a
-#: third of IPOPT's time on ``full`` (its iterations are half as dear, and fewer), 0.5-0.9 of it on
-#: ``dfs``; beyond, CasADi's fatrop interface takes a time that grows with the square of the intervals
-#: to set up (12 s for 1,140, 40 s for 1,880, 87 s for 2,400): the runway (85 s) on ``full`` took 123 s
-#: in windows of 60 s against 142 s whole, RMS +0.4 %, and the two cases beyond 1,800 stopped at
-#: fatrop's iteration cap whole and converged in windows ("fatrop on the compiled stages", "fatrop on
-#: BLASFEO for the processor" in docs/benchmarks.md).
+#: ``optimize``'s default solver on three joints or more (``yaw-track-cabin``, ``full``, ``dfs``):
+#: fatrop, up to this many intervals per solve (60 s at 0.05 s); a longer path there is solved in
+#: windows. fatrop on the compiled stages takes a third of IPOPT's time on ``full`` (its iterations are
+#: half as dear, and fewer), 0.5-0.9 of it on ``dfs`` and ``yaw-track-cabin``; beyond, CasADi's fatrop
+#: interface takes a time that grows with the square of the intervals to set up (12 s for 1,140, 40 s
+#: for 1,880, 87 s for 2,400): the runway (85 s) on ``full`` took 123 s in windows of 60 s against 142 s
+#: whole, RMS +0.4 %, and the two cases beyond 1,800 stopped at fatrop's iteration cap whole and
+#: converged in windows ("fatrop on the compiled stages", "fatrop on BLASFEO for the processor",
+#: "fatrop on `dfs`", "fatrop on `yaw-track-cabin`" in docs/benchmarks.md).
 FATROP_UP_TO = 1200
 ONLINE_STARTS = ("rest", "home", "steady", "given")
 #: An on-line session's felt-rotation band [perception thresholds] (:attr:`MPCOptions.rotation_band`)
@@ -140,9 +141,10 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
             perception=None, workers: int = 1) -> Session:
     """The session of ``optimize`` and of each job of ``batch``: the cued path and its
     :class:`~desdemona.problem.ProblemOptions`, checked to fit in memory with ``workers`` at once.
-    solver "auto": fatrop on three joints or more (``yaw-track-cabin``, ``full``, ``dfs``) where a solve (the path, or
-    its window) has at most :data:`FATROP_UP_TO` intervals, and on a longer path there in windows of
-    :data:`~desdemona.windows.DEFAULT_WINDOW` unless a window is asked for; IPOPT elsewhere."""
+    solver "auto": fatrop on three joints or more (``yaw-track-cabin``, ``full``, ``dfs``) where a
+    solve (the path, or its window) has at most :data:`FATROP_UP_TO` intervals, and on a longer path
+    there in windows of :data:`~desdemona.windows.DEFAULT_WINDOW` unless a window is asked for; IPOPT
+    elsewhere."""
     from desdemona import windows
     from desdemona.problem import ProblemOptions
 
@@ -155,15 +157,15 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
     problem = ProblemOptions(h_u=choices.h_u, solver="ipopt" if solver == "auto" else solver, perception=perception,
                              initial=initial, final=choices.final, initial_state=state, wall=wall,
                              **cost(path, model, choices))
-    large = model.n >= 3  # `yaw-track-cabin`, `full` and `dfs`
+    staged = model.n >= 3  # `yaw-track-cabin`, `full` and `dfs`: fatrop's (FATROP_UP_TO)
     whole_up_to = windows.WHOLE_UP_TO  # there, fatrop in windows beyond its length, not IPOPT on the whole
-    if solver == "auto" and large:
+    if solver == "auto" and staged:
         whole_up_to = min(whole_up_to, FATROP_UP_TO * choices.h_u)
     window = _window(path, model, problem, choices.window, workers, whole_up_to)
     part = path if window is None else windows.part(path, 0.0, window)
     if solver == "auto":
         few = round(part.duration / choices.h_u) <= FATROP_UP_TO
-        problem = dataclasses.replace(problem, solver="fatrop" if large and few else "ipopt")
+        problem = dataclasses.replace(problem, solver="fatrop" if staged and few else "ipopt")
     size = sizing.check_fits(part, model.config, problem, workers, model.limits.smooth)
     return Session(path, model, problem, size, window)
 

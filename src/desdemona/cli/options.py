@@ -40,8 +40,9 @@ def build_parser() -> argparse.ArgumentParser:
     _add_machine_options(opt, default_config="yaw-track-cabin")
     opt.add_argument("--out", required=True, metavar="DIR", help="result folder to create")
     opt.add_argument("--method", choices=("auto", "ipopt", "fatrop", "thesis"), default="auto",
-                     help="ipopt or fatrop: our exact-derivative solver; auto: fatrop on yaw-track-cabin, full and dfs (a "
-                          "path of more than 1200 intervals, 60 s at the default step, in windows), ipopt elsewhere; "
+                     help="ipopt or fatrop: our exact-derivative solver; auto: fatrop on yaw-track-cabin, "
+                          "full and dfs (a path of more than 1200 intervals, 60 s at the default step, in "
+                          "windows), ipopt elsewhere; "
                           "thesis: the thesis' own least-squares method, for comparison (default: auto)")
     opt.add_argument("--perception", choices=tuple(perception_models.MODELS), default=None,
                      help="minimise the perceived difference through this vestibular model")
@@ -310,8 +311,8 @@ def _add_start_options(parser: argparse.ArgumentParser, starts: int) -> None:
     parser.add_argument("--window", type=float, default=None, metavar="SECONDS",
                         help="solve in overlapping windows this long, each starting from the state the one "
                              "before reached, the whole re-checked; memory is bounded by the window. 0: the "
-                             "whole path at once (default: windows of 60 s for paths over 150 s, over 90 s on full "
-                             "with --method auto)")
+                             "whole path at once (default: windows of 60 s for paths over 150 s, over 60 s on "
+                             "yaw-track-cabin, full and dfs with --method auto)")
 
 
 def _add_session_options(parser: argparse.ArgumentParser, given: bool = True) -> None:
