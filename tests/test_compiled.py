@@ -10,7 +10,7 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from desdemona import Model, compiled, profiles
+from desdemona import Model, assembly, compiled, profiles, transcription
 from desdemona.offline import initial_guesses
 from desdemona.plan import Plan
 from desdemona.problem import ProblemOptions
@@ -62,7 +62,7 @@ def test_one_library_serves_every_path_and_later_runs(params, cache):
     other = short(duration=1.5)
     other = profiles.DesiredPath("other", other.t, other.S_d, weights=(0, 0, 0, 1, 2, 1))
     second = CueingProblem(model, other, ProblemOptions(h_u=0.1))
-    assert second.N * second._stage_derivatives()["jac"].n_instructions() < 2_000_000
+    assert second.N * assembly.stage_functions(second)["jac"].n_instructions() < 2_000_000
     assert second.compiled
     assert list(cache.glob("stages-*.so")) == libraries
     assert libraries[0].stat().st_mtime_ns == stamp
@@ -99,6 +99,28 @@ def test_fatrop_takes_the_stage_assembled_derivatives_compiled(params, cache, mo
     assert not list(tmp_path.glob("desdemona-*"))  # the NLP's library, loaded, is gone
     # on more than three joints IPOPT leaves the limits' curvature out, fatrop keeps it
     assert not CueingProblem(Model(params, "full"), short(), ProblemOptions(h_u=0.1, compile=False)).limit_curvature
+
+
+@needs_compiler
+def test_paths_of_as_many_intervals_share_one_fatrop_solver(params, cache):
+    """With fatrop the path is the compiled NLP's parameter: another path of as many intervals takes the
+    solver already built (no library compiled, no set-up again, as the windows of a long recording
+    do), and solves its own path, as a solver of its own does; another length gets its own."""
+    model, options = Model(params, "yaw-track-cabin"), ProblemOptions(h_u=0.1, solver="fatrop", expand=False)
+    path = short(duration=1.5)
+    other = profiles.DesiredPath("other", path.t, 0.5 * path.S_d, weights=path.weights)
+    transcription.FATROP_SOLVERS.clear()
+    first, second = CueingProblem(model, path, options), CueingProblem(model, other, options)
+    assert second.solver is first.solver and len(transcription.FATROP_SOLVERS) == 1
+    x, u = initial_guesses(second, 1, 0)[0][1:]
+    shared, mine = second.solve(x, u), first.solve(x, u)
+    transcription.FATROP_SOLVERS.clear()
+    own = CueingProblem(model, other, options).solve(x, u)
+    assert shared.success and own.success and shared.iterations == own.iterations
+    np.testing.assert_allclose(shared.x, own.x, atol=1e-9 * max(1.0, np.abs(own.x).max()))
+    assert abs(mine.cost - shared.cost) > 1e-3 * shared.cost  # the first path's optimum is another
+    assert CueingProblem(model, short(duration=2.0), options).solver is not first.solver
+    assert len(transcription.FATROP_SOLVERS) == 2
 
 
 def test_small_problems_are_not_compiled(params, cache):

@@ -15,7 +15,7 @@ LAYERS = (
     ("desired paths", {"profiles"}),
     ("the machine", {"kinematics", "dynamics", "configs", "model", "compiled", "blasfeo"}),
     ("the cueing problem, its baselines and its check",
-     {"problem", "transcription", "realtime", "sizing", "classical", "washout", "thesis", "predictors", "simulate", "metrics"}),
+     {"problem", "assembly", "transcription", "realtime", "sizing", "classical", "washout", "thesis", "predictors", "simulate", "metrics"}),
     ("solvers and sessions", {"offline", "windows", "mpc", "online", "session"}),
     ("results", {"figures", "report", "view", "compare"}),
     ("commands and the real-time service", {"batch", "cli", "service", "__main__", "__init__"}),

@@ -123,20 +123,25 @@ def build(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> Path 
     return path
 
 
-def linked(functions: list[ca.Function], stages: Path, name: str) -> ca.Function | None:
-    """Function ``name`` of ``functions`` compiled now into a library of their own that calls the
-    compiled stage functions of the library ``stages`` (:func:`build`); the other functions are in the
-    same library, where CasADi finds them by name (``External.factory``: an NLP solver asks its
-    oracle for ``nlp_jac_g``, ``nlp_hess_l``, ...). Compiled at ``-O0`` into a temporary folder that is
-    removed once the library is loaded: these functions only assemble the stages' blocks and are
-    compiled again for each problem. None, with a warning, where compiling fails."""
+def assembly(functions: list[ca.Function]) -> str:
+    """The C source of ``functions`` for :func:`linked`."""
     generator = ca.CodeGenerator("assembly.c", {"with_header": False})
     for function in functions:
         generator.add(function)
+    return generator.dump()
+
+
+def linked(source: str, stages: Path, name: str) -> ca.Function | None:
+    """Function ``name`` of the functions whose C ``source`` is :func:`assembly`'s, compiled now into
+    a library of their own that calls the compiled stage functions of the library ``stages``
+    (:func:`build`); the other functions are in the same library, where CasADi finds them by name
+    (``External.factory``: an NLP solver asks its oracle for ``nlp_jac_g``, ``nlp_hess_l``, ...).
+    Compiled at ``-O0`` into a temporary folder that is removed once the library is loaded: these
+    functions only assemble the stages' blocks. None, with a warning, where compiling fails."""
     with tempfile.TemporaryDirectory(prefix="desdemona-") as work:
         so_file = Path(work) / "assembly.so"
         flags = [*FLAGS, "-o", str(so_file), str(stages), f"-Wl,-rpath,{stages.parent}"]
-        if not _cc(compiler(), generator.dump(), Path(work) / "assembly.c", flags):
+        if not _cc(compiler(), source, Path(work) / "assembly.c", flags):
             return None
         return ca.external(name, str(so_file))  # loaded: the file may go
 
@@ -144,19 +149,19 @@ def linked(functions: list[ca.Function], stages: Path, name: str) -> ca.Function
 def oracle(nlp: dict, derivatives: dict[str, ca.Function]) -> list[ca.Function]:
     """An NLP as an NLP solver asks its oracle for it, by name (``nlp_f``, ``nlp_g``, ``nlp_grad_f``,
     ``nlp_jac_g``, ``nlp_hess_l``, ``nlp_grad``), with the given derivatives (``grad_f``, ``jac_g`` and
-    ``hess_lag`` as IPOPT takes them: the Hessian's upper triangle) for :func:`linked`.
+    ``hess_lag``, the Hessian whole: fatrop copies its stage blocks) for :func:`linked`.
 
-    The Hessian is whole (fatrop copies its stage blocks). fatrop asks for the Lagrangian's gradient
-    beside it and does not read it (CasADi 3.8: the same iterates with it zero, measured): it is left
-    at zero, which saves an evaluation of the Jacobian per iteration. ``nlp_grad`` gives the final
-    multipliers.
+    fatrop asks for the Lagrangian's gradient beside the Hessian and does not read it (CasADi 3.8: the
+    same iterates with it zero, measured): it is left at zero, which saves an evaluation of the
+    Jacobian per iteration. After a solve CasADi reads f and g from ``nlp_grad``; the multipliers are
+    fatrop's own (the solver's options ``calc_lam_x`` and ``calc_lam_p`` off), so its gradients are left
+    at zero too, and the NLP's C source without the transposed Jacobian's pattern (a third of it).
     """
-    w, p = nlp["x"], ca.MX.sym("p", 0, 1)
+    w, p = nlp["x"], nlp.get("p", ca.MX.sym("p", 0, 1))
     lam_f, lam_g = ca.MX.sym("lam_f"), ca.MX.sym("lam_g", nlp["g"].numel())
     f, g = nlp["f"], nlp["g"]
     grad, jac = derivatives["grad_f"](w, p)[1], derivatives["jac_g"](w, p)[1]
-    hess = ca.triu2symm(derivatives["hess_lag"](w, p, lam_f, lam_g))
-    gamma = lam_f * grad + ca.mtimes(jac.T, lam_g)
+    hess = derivatives["hess_lag"](w, p, lam_f, lam_g)
     xp, xpl = ["x", "p"], ["x", "p", "lam_f", "lam_g"]
     return [ca.Function("nlp", [w, p], [f, g], xp, ["f", "g"]),
             ca.Function("nlp_f", [w, p], [f], xp, ["f"]), ca.Function("nlp_g", [w, p], [g], xp, ["g"]),
@@ -164,7 +169,7 @@ def oracle(nlp: dict, derivatives: dict[str, ca.Function]) -> list[ca.Function]:
             ca.Function("nlp_jac_g", [w, p], [g, jac], xp, ["g", "jac_g_x"]),
             ca.Function("nlp_hess_l", [w, p, lam_f, lam_g], [ca.MX.zeros(w.numel()), hess], xpl,
                         ["grad_gamma_x", "hess_gamma_x_x"]),
-            ca.Function("nlp_grad", [w, p, lam_f, lam_g], [f, g, gamma, ca.MX(0, 1)], xpl,
+            ca.Function("nlp_grad", [w, p, lam_f, lam_g], [f, g, ca.MX(w.numel(), 1), ca.MX(p.numel(), 1)], xpl,
                         ["f", "g", "grad_gamma_x", "grad_gamma_p"])]
 
 

@@ -9,18 +9,18 @@ desired S_d::
 or, for the ``dfs`` configuration, the modulus error (M - M_d)^2 of eq. 7.3; with a perception model
 (chapter 6) the error is taken between the *perceived* S and S_d.
 
-Transcription (:mod:`desdemona.transcription`): direct multiple shooting on a control grid h_u (thesis 4.2, 5.3). On a machine with
-jerk limits (every built-in one but the thesis' toy set) the states are (q, qd, qdd) of the free joints
-and the controls their jerks j, held constant per interval: the accelerations are continuous and
-piecewise linear, and |j| <= j_max holds everywhere. Without jerk limits (the thesis' setting) the
-states are (q, qd) and the controls qdd, held constant per interval. Either way the state equation is
-a chain of integrators, whose solution over an interval is exact in closed form,
-q(t) = q_k + qd_k t + qdd_k t^2 / 2 + j_k t^3 / 6. The gap constraints are therefore *linear* and exact: no
-integration error at all, the nonlinearity sits where it belongs, in S and in the torque and power
-limits (tau from inverse dynamics, eq. A.26). We chose multiple shooting over collocation because of
-this: collocation would add variables to approximate a trajectory that is known exactly. With a
-perception model the filter states join (q, qd) and advance by the exact zero-order-hold
-discretisation of :mod:`desdemona.perception` on each sub-step.
+Transcription (:mod:`desdemona.transcription`, :mod:`desdemona.assembly`): direct multiple shooting on a
+control grid h_u (thesis 4.2, 5.3). On a machine with jerk limits (every built-in one but the thesis' toy
+set) the states are (q, qd, qdd) of the free joints and the controls their jerks j, held constant per
+interval: the accelerations are continuous and piecewise linear, and |j| <= j_max holds everywhere. Without
+jerk limits (the thesis' setting) the states are (q, qd) and the controls qdd, held constant per interval.
+Either way the state equation is a chain of integrators, whose solution over an interval is exact in closed
+form, q(t) = q_k + qd_k t + qdd_k t^2 / 2 + j_k t^3 / 6. The gap constraints are therefore *linear* and
+exact: no integration error at all, the nonlinearity sits where it belongs, in S and in the torque and power
+limits (tau from inverse dynamics, eq. A.26). We chose multiple shooting over collocation because of this:
+collocation would add variables to approximate a trajectory that is known exactly. With a perception model
+the filter states join (q, qd) and advance by the exact zero-order-hold discretisation of
+:mod:`desdemona.perception` on each sub-step.
 
 Each control interval is divided into ``substeps`` sub-steps (by default the sample step of S_d). The
 cost is integrated on them (trapezoid rule on the one-sided values inside the interval, so the jump of
@@ -437,23 +437,23 @@ class Formulation:
 
     def _terminal_function(self) -> ca.Function | None:
         """The last node of an off-line problem whose stages leave their ends out (:attr:`fractions`):
-        ``terminal(x) -> (L, g)``, its share h / (2 m) of the trapezoid rule and its torques and powers
-        within their limits. With a perception model the zero-order hold ends with the last interval,
-        and the node is only limited. None where the stages keep their ends."""
+        ``terminal(x, d) -> (L, g)``, its share h / (2 m) of the trapezoid rule and its torques and powers
+        within their limits, ``d`` from :meth:`terminal_data`. With a perception model the zero-order hold
+        ends with the last interval, and the node is only limited. None where the stages keep their ends."""
         if not self.terminal_stage:
             return None
-        n = self.model.n
-        x = ca.SX.sym("x", self.nx)
+        n, x, d = self.model.n, ca.SX.sym("x", self.nx), ca.SX.sym("d", self.terminal_data().size)
         value, effort, power = self._at_point(x[:n], x[n:2 * n], x[2 * n:3 * n])
-        share = math.sqrt(0.5 * self.steps[-1] / (self.m * self.path.duration))
-        end = self.t_nodes[-1:]
-        if self.modulus:
-            residual = share * (value - float(self.path.sample_modulus(end)[0]))
-        elif self.vestibular is None:
-            residual = share * ca.DM(np.sqrt(self.cost_weights)) * (value - ca.DM(self.path.sample(end)[0]))
-        else:
-            residual = ca.SX(0, 1)
-        return ca.Function("terminal", [x], [ca.sumsqr(residual), ca.vertcat(effort, power)], ["x"], ["L", "g"])
+        weight = 1.0 if self.modulus else ca.DM(np.sqrt(self.cost_weights))
+        residual = ca.SX(0, 1) if self.vestibular is not None else d[0] * weight * (value - d[1:])
+        return ca.Function("terminal", [x, d], [ca.sumsqr(residual), ca.vertcat(effort, power)], ["x", "d"], ["L", "g"])
+
+    def terminal_data(self) -> np.ndarray:
+        """What the terminal stage takes of the path: its share of the trapezoid rule, then the desired
+        value at the end (the modulus, or S; nothing with a perception model)."""
+        share, end = math.sqrt(0.5 * self.steps[-1] / (self.m * self.path.duration)), self.t_nodes[-1:]
+        desired = [] if self.vestibular is not None else (self.path.sample_modulus if self.modulus else self.path.sample)(end)[0]
+        return np.r_[share, desired]
 
     def _at_point(self, q, qd, a) -> tuple[ca.SX, ca.SX, ca.SX]:
         """At one point of the motion: the cue (S, or the modulus M), and the torques and powers

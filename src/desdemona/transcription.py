@@ -15,6 +15,7 @@ know of the layout.
 
 from __future__ import annotations
 
+import hashlib
 import time
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, NamedTuple
@@ -22,7 +23,7 @@ from typing import TYPE_CHECKING, NamedTuple
 import casadi as ca
 import numpy as np
 
-from desdemona import blasfeo, compiled, guard
+from desdemona import assembly, blasfeo, compiled, guard
 from desdemona.model import Model
 from desdemona.plan import Plan, node_states, ramp, start_acceleration, start_state
 from desdemona.problem import Formulation, ProblemOptions
@@ -37,7 +38,7 @@ if TYPE_CHECKING:
 # cosine): it pays from about five solves of the same problem on, and only while it stays this small.
 EXPAND_LIMIT = 400_000
 EXPAND_SOLVES = 5
-MAP_MODE, MAP_THREADS = "thread", 2  # the stages' derivatives are independent: two threads
+MAP_MODE, MAP_THREADS = assembly.MAP_MODE, assembly.MAP_THREADS
 # The mapped stage functions compiled for IPOPT (desdemona.compiled), and the work (stages times the
 # instructions of a stage's Jacobian) from which compiling pays by itself: on `full` a stage's Jacobian
 # has about 36,000 instructions; the catapult's 160 stages of it took 27 ms per iteration interpreted
@@ -46,8 +47,13 @@ COMPILED = ("hess", "jac", "grad")
 COMPILE_WORK = 2_000_000
 # With fatrop every stage function is compiled, at -O1 with fused multiply-adds where the processor has
 # them: the F-16 turn's 1,100 stage Hessians on `full` take 25 ms (28 without them); docs/benchmarks.md.
-FATROP_COMPILED = ("stage", "jac", "jac0", "grad", "hess", "hess0")
+FATROP_COMPILED = ("stage", "jac", "jac0", "grad", "hess", "hess0", "terminal", "terminal_jac", "terminal_grad",
+                   "terminal_hess")
 FATROP_FLAGS = ("-O1", "-fPIC", "-shared", *compiled.processor_flags())
+# fatrop solvers built in this process, by their compiled NLP and options: the windows of a long path
+# share one (CasADi's fatrop set-up takes 15 s at 1,140 intervals on `full`, growing with their square).
+FATROP_SOLVERS: dict[str, ca.Function] = {}
+FATROP_KEPT = 2
 # MUMPS' fill-reducing ordering: approximate minimum degree with quasi-dense rows (QAMD); IPOPT's time
 # per iteration against MUMPS' own choice: 24 against 36 ms on the catapult on full ("MUMPS ordering").
 MUMPS_ORDERING = 6
@@ -137,19 +143,29 @@ class CueingProblem(Formulation):
         XU = ca.reshape(w[: N * nw], nw, N)
         X, U = XU[:nx, :], XU[nx:, :]
         X_next = ca.horzcat(X[:, 1:], w[N * nw:])
-        # The desired values are constants, or a parameter p (columns per stage) for an MPC.
-        nd = self.stage.size1_in(2)
-        data = ca.MX.sym("p", nd, N) if self.parametric else ca.DM(self.stage_data())
+        # The desired values are a parameter p (columns per stage) for an MPC, and for fatrop off-line,
+        # whose compiled NLP is then the same for every path of as many intervals (FATROP_SOLVERS);
+        # constants for IPOPT off-line.
+        nd, n_end = self.stage.size1_in(2), 0 if self.terminal is None else self.terminal.size1_in(1)
+        self.path_parameter = self.parametric or self.options.solver == "fatrop"
+        if self.path_parameter:
+            p = ca.MX.sym("p", nd * N + n_end)
+            data, data_end = ca.reshape(p[:nd * N], nd, N), p[nd * N:]
+        else:
+            p, data = ca.MX(0, 1), ca.DM(self.stage_data())
+            data_end = None if self.terminal is None else ca.DM(self.terminal_data())
+        self.p = None if self.parametric or not self.path_parameter else np.r_[
+            self.stage_data().ravel(order="F"), [] if self.terminal is None else self.terminal_data()]
         # With perception, the filters start in the steady state of the first S: the person has sat
         # still before the run, and the optimiser may not choose what they felt before t = 0.
-        initial = self._initial_constraint()(X[:, 0], U[:, 0])
+        initial = self.initial_constraint()(X[:, 0], U[:, 0])
         self.n_initial = initial.numel()
         self.expanded = self._expand()
         o = self.options  # Gauss-Newton first: IPOPT off-line, on the derivatives assembled here
         self.gauss_newton_first = ((o.gauss_newton_first if o.gauss_newton_first is not None
                                     else self.model.config.takes_modulus)
                                    and o.solver == "ipopt" and not self.parametric and not self.expanded)
-        stage = self._stage_derivatives()
+        stage = assembly.stage_functions(self)
         self.compiled = self._compile(stage)
         # f and g on two threads too, unless the graph is flattened (on-line and small problems)
         serial = self.parametric or self.expanded
@@ -159,20 +175,22 @@ class CueingProblem(Formulation):
         f = ca.sum2(L)
         self.n_terminal = 0
         if self.terminal is not None:
-            L_end, g_end = self.terminal(w[N * nw:])
+            L_end, g_end = stage["terminal"](w[N * nw:], data_end)
             f, g_all = f + L_end, ca.vertcat(g_all, g_end)
             self.n_terminal = g_end.numel()
         self.nlp = {"x": w, "f": f, "g": g_all}
-        if self.parametric:
-            self.nlp["p"] = ca.vec(data)
+        if self.path_parameter:
+            self.nlp["p"] = p
         stage_eq = [True] * nx + [False] * self.n_path
         self.equality = (stage_eq[:nx] + [True] * self.n_initial + stage_eq[nx:] + stage_eq * (N - 1)
                          + [False] * self.n_terminal)
-        self.derivatives = self._derivative_functions(w, XU, data, stage)
+        self.derivatives = assembly.derivatives(self, w, p, XU, data, data_end, stage)
+        self.gauss_newton_hessian = self.derivatives.pop("hess_gn", None)
         self._bounds()
         self.solver = self._solver()
 
-    def _initial_constraint(self) -> ca.Function:
+    def initial_constraint(self) -> ca.Function:
+        """``initial(x0, u0) -> residual``: with perception, the filters in the steady state of the first S."""
         x, u = ca.SX.sym("x", self.nx), ca.SX.sym("u", self.nu)
         residual = ca.SX(0, 1)
         if self.nz and self.options.initial_filter == "steady":
@@ -194,7 +212,7 @@ class CueingProblem(Formulation):
         if self.expanded or self.parametric or wanted is False:
             return False  # a flat graph cannot hold compiled code; on-line problems are flattened too
         fatrop = self.options.solver == "fatrop"  # it differentiates nothing: every stage function compiled
-        keys = FATROP_COMPILED if fatrop else [k for k in (*COMPILED, "hess_gn") if k in stage]
+        keys = [k for k in (FATROP_COMPILED if fatrop else (*COMPILED, "hess_gn")) if k in stage]
         functions = [stage[k] for k in keys]
         if wanted is None and not fatrop and self.N * stage["jac"].n_instructions() < COMPILE_WORK \
                 and not compiled.is_cached(functions):
@@ -204,110 +222,6 @@ class CueingProblem(Formulation):
             return False
         stage.update((k, ca.external(stage[k].name(), str(self.stage_library))) for k in keys)
         return True
-
-    def _stage_derivatives(self) -> dict[str, ca.Function]:
-        """One stage's functions: ``stage`` itself, the upper triangle of its Lagrangian's Hessian
-        ``hess`` and the Jacobian ``jac`` of its gaps and path constraints, the cost and its gradient
-        ``grad``; ``hess0`` and ``jac0`` for the first stage, which also carries the initial constraint."""
-        nx, nu, ni = self.nx, self.nu, self.n_initial
-        x, u = ca.SX.sym("x", nx), ca.SX.sym("u", nu)
-        d = ca.SX.sym("d", self.stage.size1_in(2))
-        x_next, L, g = self.stage(x, u, d)
-        init = self._initial_constraint()(x, u)
-        xu = ca.vertcat(x, u)
-        sigma, l_gap, l_init, l_path = (ca.SX.sym(k, m) for k, m in
-                                        (("sigma", 1), ("l_gap", nx), ("l_init", ni), ("l_path", g.numel())))
-        # the position families lead each stage's g, the torque and power limits follow
-        curved = g.numel() if self.limit_curvature else sum(
-            f.expression.numel() for f in self.families if f.name in ("position", "stopping", "rate"))
-        gaps, limits = -ca.dot(l_gap, x_next), ca.dot(l_path[:curved], g[:curved])
-        J = ca.jacobian(ca.vertcat(-x_next, g), xu)
-        J0 = ca.jacobian(ca.vertcat(-x_next, init, g), xu)
-        functions = {"stage": self.stage, "jac": ca.Function("stage_jac", [x, u, d], [J]),
-                     "jac0": ca.Function("stage_jac0", [x, u, d], [J0]),
-                     "grad": ca.Function("stage_grad", [x, u, d], [L, ca.gradient(L, xu)])}
-        # per Hessian: (a term given as a matrix, the rest of the Lagrangian, differentiated)
-        hessians = {"hess": (None, sigma * L + gaps + limits)}
-        if self.gauss_newton_first:  # the cost is sum(r^2): 2 J_r^T J_r, without the residuals' curvature
-            J_r = ca.jacobian(self.residual(x, u, d), xu)
-            hessians["hess_gn"] = (2 * sigma * ca.mtimes(J_r.T, J_r), gaps + limits)
-        for key, (given, rest) in hessians.items():
-            H, H0 = (ca.hessian(e, xu)[0] for e in (rest, rest + ca.dot(l_init, init)))
-            H, H0 = (ca.triu(M if given is None else given + M) for M in (H, H0))
-            functions[key] = ca.Function(f"stage_{key}", [x, u, d, sigma, l_gap, l_path], [H])
-            functions[key + "0"] = ca.Function(f"stage_{key}0", [x, u, d, sigma, l_gap, l_init, l_path], [H0])
-        return functions
-
-    def _derivative_functions(self, w, XU, data, stage: dict[str, ca.Function]) -> dict[str, ca.Function]:
-        """Exact Jacobian of the constraints and Hessian of the Lagrangian, assembled from stages.
-
-        The gap constraints x_{k+1} - F(x_k, u_k) are linear in x_{k+1}, so in stage order the Hessian
-        is block diagonal and the Jacobian block bidiagonal. Differentiating one stage symbolically and
-        mapping the result over the horizon is three to four times faster to evaluate than
-        differentiating through the mapped stage (measured on the full configuration).
-        """
-        N, nx, nw, ni, npath = self.N, self.nx, self.nx + self.nu, self.n_initial, self.n_path
-        jac, jac0, grad = (stage[k] for k in ("jac", "jac0", "grad"))
-        X, U = XU[:nx, :], XU[nx:, :]
-        j_blocks = [jac0(X[:, 0], U[:, 0], data[:, 0])]
-        if N > 1:
-            jm = jac.map(N - 1, MAP_MODE, MAP_THREADS)(X[:, 1:], U[:, 1:], data[:, 1:])
-            j_blocks += [jm[:, k * nw:(k + 1) * nw] for k in range(N - 1)]
-        end = w[N * nw:]
-        terminal = self._terminal_derivatives()
-        # the +I of x_{k+1} in the gap rows of stage k
-        row0 = np.r_[0, nx + ni + npath + (nx + npath) * np.arange(N - 1)]
-        rows = (row0[:, None] + np.arange(nx)[None, :]).ravel()
-        cols = (nw * np.arange(1, N + 1)[:, None] + np.arange(nx)[None, :]).ravel()
-        n_g = self.nlp["g"].numel()
-        identity = ca.DM(ca.Sparsity.triplet(n_g, N * nw + nx, rows.tolist(), cols.tolist()), 1.0)
-        jacobian = ca.diagcat(*j_blocks, terminal["jac"](end) if terminal else ca.MX(0, nx)) + identity
-        p = ca.vec(data) if self.parametric else ca.MX(0, 1)
-        L_all, grad_all = grad.map(N, MAP_MODE, MAP_THREADS)(X, U, data)
-        f, grad_end = ca.sum2(L_all), ca.MX(nx, 1)
-        if terminal:
-            L_end, grad_end = terminal["grad"](end)
-            f += L_end
-        gradient = ca.densify(ca.vertcat(ca.vec(grad_all), grad_end))
-        if self.gauss_newton_first:
-            self.gauss_newton_hessian = self._lagrangian_hessian(w, XU, data, stage["hess_gn"], stage["hess_gn0"],
-                                                                 terminal)
-        return {
-            "grad_f": ca.Function("nlp_grad_f", [w, p], [f, gradient], ["x", "p"], ["f", "grad_f_x"]),
-            "hess_lag": self._lagrangian_hessian(w, XU, data, stage["hess"], stage["hess0"], terminal),
-            "jac_g": ca.Function("nlp_jac_g", [w, p], [self.nlp["g"], jacobian], ["x", "p"], ["g", "jac_g_x"]),
-        }
-
-    def _lagrangian_hessian(self, w, XU, data, hess, hess0, terminal) -> ca.Function:
-        """IPOPT's Hessian of the Lagrangian, block diagonal in stage order: the first stage's
-        ``hess0``, the others' ``hess`` mapped, the terminal stage's."""
-        N, nx, nw, ni, npath = self.N, self.nx, self.nx + self.nu, self.n_initial, self.n_path
-        lam_f, lam_g = ca.MX.sym("lam_f"), ca.MX.sym("lam_g", self.nlp["g"].numel())
-        X, U = XU[:nx, :], XU[nx:, :]
-        l0 = lam_g[: nx + ni + npath]
-        blocks = [hess0(X[:, 0], U[:, 0], data[:, 0], lam_f, l0[:nx], l0[nx:nx + ni], l0[nx + ni:])]
-        if N > 1:
-            rest = ca.reshape(lam_g[nx + ni + npath: lam_g.numel() - self.n_terminal], nx + npath, N - 1)
-            hm = hess.map(N - 1, MAP_MODE, MAP_THREADS)(X[:, 1:], U[:, 1:], data[:, 1:], ca.repmat(lam_f, 1, N - 1),
-                                           rest[:nx, :], rest[nx:, :])
-            blocks += [hm[:, k * nw:(k + 1) * nw] for k in range(N - 1)]
-        l_end = lam_g[lam_g.numel() - self.n_terminal:]
-        blocks.append(terminal["hess"](w[N * nw:], lam_f, l_end) if terminal else ca.MX(nx, nx))
-        p = ca.vec(data) if self.parametric else ca.MX(0, 1)
-        return ca.Function("nlp_hess_l", [w, p, lam_f, lam_g], [ca.diagcat(*blocks)],
-                           ["x", "p", "lam_f", "lam_g"], ["hess_gamma_x_x"])
-
-    def _terminal_derivatives(self) -> dict[str, ca.Function] | None:
-        """Hessian block (of the cost, and of the limits with ``limit_curvature``), Jacobian and
-        gradient of the terminal stage, or None without one."""
-        if self.terminal is None:
-            return None
-        x, sigma, l_end = ca.SX.sym("x", self.nx), ca.SX.sym("sigma"), ca.SX.sym("l", self.n_terminal)
-        L, g = self.terminal(x)
-        lagrangian = sigma * L + (ca.dot(l_end, g) if self.limit_curvature else 0)
-        return {"hess": ca.Function("terminal_hess", [x, sigma, l_end], [ca.triu(ca.hessian(lagrangian, x)[0])]),
-                "jac": ca.Function("terminal_jac", [x], [ca.jacobian(g, x)]),
-                "grad": ca.Function("terminal_grad", [x], [L, ca.gradient(L, x)])}
 
     def _bounds(self) -> None:
         n, N, nx, o = self.model.n, self.N, self.nx, self.options
@@ -464,14 +378,23 @@ class CueingProblem(Formulation):
                 return self._ipopt(WARM_START)
             return self._ipopt({})
         opts = {"structure_detection": "auto", "equality": self.equality, "print_time": False, "expand": self.expanded,
+                "calc_lam_x": False, "calc_lam_p": False,  # fatrop's own multipliers (compiled.oracle)
                 "fatrop": {"print_level": 0, "max_iter": o.max_iter, "tol": o.tol}}
-        oracle = self.nlp  # or the NLP with the derivatives assembled here, for fatrop to find by name:
-        if self.compiled and (oracle := compiled.linked(compiled.oracle(self.nlp, self.derivatives),
-                                                        self.stage_library, "nlp")) is None:
-            raise RuntimeError("the NLP's functions for fatrop did not compile (the warning says why); "
-                               "solve with IPOPT, or with ProblemOptions(compile=False)")
         blasfeo.load()  # on linear algebra built for this processor, where it can be (desdemona.blasfeo)
-        return ca.nlpsol("cueing", "fatrop", oracle, opts)
+        if not self.compiled:
+            return ca.nlpsol("cueing", "fatrop", self.nlp, opts)
+        # the NLP with the derivatives assembled here, compiled, for fatrop to find by name; one solver
+        # for every problem whose compiled NLP is the same (the path is its parameter)
+        source = compiled.assembly(compiled.oracle(self.nlp, self.derivatives))
+        key = hashlib.sha256(f"{source}{self.stage_library}{opts}".encode()).hexdigest()
+        if key not in FATROP_SOLVERS:
+            if (oracle := compiled.linked(source, self.stage_library, "nlp")) is None:
+                raise RuntimeError("the NLP's functions for fatrop did not compile (the warning says why); "
+                                   "solve with IPOPT, or with ProblemOptions(compile=False)")
+            while len(FATROP_SOLVERS) >= FATROP_KEPT:
+                FATROP_SOLVERS.pop(next(iter(FATROP_SOLVERS)))
+            FATROP_SOLVERS[key] = ca.nlpsol("cueing", "fatrop", oracle, opts)
+        return FATROP_SOLVERS[key]
 
     def _ipopt(self, settings: dict, **derivatives) -> ca.Function:
         """An IPOPT solver of the NLP with the stage-assembled derivatives (``derivatives`` replacing
@@ -527,6 +450,8 @@ class CueingProblem(Formulation):
         with the multipliers of an earlier solution of a problem of the same shape."""
         args = {"x0": self.pack(x_guess, u_guess), "lbx": self.lbx, "ubx": self.ubx,
                 "lbg": self.lbg, "ubg": self.ubg}
+        if self.p is not None:
+            args["p"] = self.p
         if warm is not None and warm.lam_g is not None and self.options.solver == "ipopt":
             args.update(lam_g0=warm.lam_g, lam_x0=warm.lam_x)
         start, iterations = time.perf_counter(), 0
