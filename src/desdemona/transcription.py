@@ -5,9 +5,11 @@ its solvers (thesis 4.2, 5.3; chapter 7 for the parametric, on-line form).
 becomes an NLP by direct multiple shooting: the decision vector in stage order x0, u0, x1, u1, ...,
 xN (what fatrop's structure detection expects), the gaps between intervals (linear and exact, the
 motion being a chain of integrators), the path constraints of each stage, the bounds of the
-variables, and the exact Jacobian and Hessian assembled stage by stage. :class:`CueingProblem`
-solves it off-line from a guess (IPOPT or fatrop); a parametric problem (the desired path as a
-parameter p) is solved from a fixed start by an on-line controller, either to convergence or by one
+variables, and the exact Jacobian and Hessian assembled stage by stage (:mod:`desdemona.assembly`).
+:class:`CueingProblem` solves it off-line from a guess: IPOPT with the desired path as constants,
+fatrop with the path as the NLP's parameter p, so that problems of as many intervals (the windows of
+a long recording) share one solver (:data:`FATROP_SOLVERS`). A parametric problem (the path as p,
+each cycle's preview) is solved from a fixed start by an on-line controller, either to convergence or by one
 real-time iteration (:class:`desdemona.realtime.RealTimeIteration`): :meth:`CueingProblem.start_bounds`,
 :meth:`CueingProblem.solve_from` and :meth:`CueingProblem.plan_of` are all a controller needs to
 know of the layout.
