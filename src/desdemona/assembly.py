@@ -20,7 +20,7 @@ import numpy as np
 if TYPE_CHECKING:
     from desdemona.transcription import CueingProblem
 
-# the stages' derivatives are independent: two threads (desdemona.transcription's MAP_MODE)
+# the stages' functions are independent: mapped on two threads (the stage itself too, in transcription)
 MAP_MODE, MAP_THREADS = "thread", 2
 
 
@@ -89,8 +89,7 @@ def derivatives(prob: CueingProblem, w, p, XU, data, data_end, stage: dict[str, 
     jac_end = stage["terminal_jac"](end, data_end) if terminal else ca.MX(0, nx)
     pieces = [stage["jac0"](X[:, 0], U[:, 0], data[:, 0])]
     if N > 1:
-        x, u, d = (ca.MX.sym(k, stage["jac"].size1_in(i)) for i, k in enumerate("xud"))
-        led = ca.Function("stage_jac_led", [x, u, d], [_gap_led(stage["jac"](x, u, d), nx)])
+        led = _composed(stage["jac"], lambda J: _gap_led(J, nx), "stage_jac_led")
         pieces.append(led.map(N - 1, MAP_MODE, MAP_THREADS)(X[:, 1:], U[:, 1:], data[:, 1:]))
     pieces.append(_gap_led(jac_end, nx))
     blocks = [stage["jac0"].sparsity_out(0), *[stage["jac"].sparsity_out(0)] * (N - 1), jac_end.sparsity()]
@@ -118,7 +117,8 @@ def lagrangian_hessian(prob: CueingProblem, w, p, XU, data, data_end, stage, key
     one block after the other."""
     N, nx, nw, ni, npath = prob.N, prob.nx, prob.nx + prob.nu, prob.n_initial, prob.n_path
     if prob.options.solver == "fatrop":
-        stage = {k: _whole(stage[k]) for k in (key, key + "0", "terminal_hess") if k in stage}
+        stage = {k: _composed(stage[k], ca.triu2symm, f"{stage[k].name()}_whole")
+                 for k in (key, key + "0", "terminal_hess") if k in stage}
     lam_f, lam_g = ca.MX.sym("lam_f"), ca.MX.sym("lam_g", prob.nlp["g"].numel())
     X, U = XU[:nx, :], XU[nx:, :]
     l0 = lam_g[: nx + ni + npath]
@@ -139,8 +139,8 @@ def lagrangian_hessian(prob: CueingProblem, w, p, XU, data, data_end, stage, key
 def concatenated(pieces: list[ca.MX], sparsity: ca.Sparsity) -> ca.MX:
     """The matrix of ``sparsity`` whose nonzeros are those of ``pieces``, one piece after the other,
     each in its own order. Slicing the mapped stage outputs block by block instead gave C source that
-    grows with the intervals (the NLP's for fatrop, with its outputs' sparsity: 7 s to compile at
-    1,200 intervals on `full`, against 3 s this way)."""
+    grows with the intervals (the NLP's for fatrop: 7 s to compile at 1,200 intervals on `full`,
+    against 2 s this way, most of it its outputs' sparsity)."""
     assert sum(piece.nnz() for piece in pieces) == sparsity.nnz(), "the pieces do not fill the sparsity"
     return ca.sparsity_cast(ca.vertcat(*[_nonzeros(piece) for piece in pieces]), sparsity)
 
@@ -160,10 +160,11 @@ def _gap_led(J: ca.MX, nx: int) -> ca.MX:
     return ca.vertcat(ca.DM.ones(nx), _nonzeros(J))[index]
 
 
-def _whole(function: ca.Function) -> ca.Function:
-    """``function``, whose one output is the upper triangle of a symmetric matrix, giving it whole."""
+def _composed(function: ca.Function, after, name: str) -> ca.Function:
+    """``function`` (of one output) with ``after`` applied to its output: a stage's Jacobian gap-led
+    (:func:`_gap_led`), its Hessian's upper triangle made whole, each in its stage, mapped."""
     inputs = [ca.MX.sym(function.name_in(i), function.sparsity_in(i)) for i in range(function.n_in())]
-    return ca.Function(f"{function.name()}_whole", inputs, [ca.triu2symm(function(*inputs))])
+    return ca.Function(name, inputs, [after(function(*inputs))])
 
 
 def _jacobian_sparsity(blocks: list[ca.Sparsity], nx: int, nw: int) -> ca.Sparsity:

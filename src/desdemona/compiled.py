@@ -76,10 +76,7 @@ def processor_flags() -> tuple[str, ...]:
 def library(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> tuple[str, Path]:
     """The C source of ``functions`` and the path its compiled library (compiled with ``flags``) has
     in the cache."""
-    generator = ca.CodeGenerator("stages.c", {"with_header": False})
-    for function in functions:
-        generator.add(function)
-    source = generator.dump()
+    source = c_source(functions, "stages.c")
     key = hashlib.sha256("\n".join([ca.__version__, str(compiler()), *flags, source]).encode()).hexdigest()
     return source, cache_dir() / f"stages-{key[:24]}.so"
 
@@ -123,16 +120,16 @@ def build(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> Path 
     return path
 
 
-def assembly(functions: list[ca.Function]) -> str:
-    """The C source of ``functions`` for :func:`linked`."""
-    generator = ca.CodeGenerator("assembly.c", {"with_header": False})
+def c_source(functions: list[ca.Function], file: str) -> str:
+    """The C source of ``functions``, generated as the file ``file`` (its name is in the source)."""
+    generator = ca.CodeGenerator(file, {"with_header": False})
     for function in functions:
         generator.add(function)
     return generator.dump()
 
 
 def linked(source: str, stages: Path, name: str) -> ca.Function | None:
-    """Function ``name`` of the functions whose C ``source`` is :func:`assembly`'s, compiled now into
+    """Function ``name`` of the functions whose C ``source`` is :func:`c_source`'s, compiled now into
     a library of their own that calls the compiled stage functions of the library ``stages``
     (:func:`build`); the other functions are in the same library, where CasADi finds them by name
     (``External.factory``: an NLP solver asks its oracle for ``nlp_jac_g``, ``nlp_hess_l``, ...).

@@ -387,7 +387,7 @@ class CueingProblem(Formulation):
             return ca.nlpsol("cueing", "fatrop", self.nlp, opts)
         # the NLP with the derivatives assembled here, compiled, for fatrop to find by name; one solver
         # for every problem whose compiled NLP is the same (the path is its parameter)
-        source = compiled.assembly(compiled.oracle(self.nlp, self.derivatives))
+        source = compiled.c_source(compiled.oracle(self.nlp, self.derivatives), "assembly.c")
         key = hashlib.sha256(f"{source}{self.stage_library}{opts}".encode()).hexdigest()
         if key not in FATROP_SOLVERS:
             if (oracle := compiled.linked(source, self.stage_library, "nlp")) is None:
