@@ -123,6 +123,35 @@ def test_paths_of_as_many_intervals_share_one_fatrop_solver(params, cache):
     assert len(transcription.FATROP_SOLVERS) == 2
 
 
+def test_a_stored_fatrop_solver_is_loaded_by_a_later_run(params, cache, monkeypatch):
+    """A window's fatrop solver is kept in the cache, serialized beside its NLP's library: a later run
+    (here this process, its solvers forgotten) loads it instead of setting fatrop up again, and solves
+    to the same iterates. A file that no longer loads is built again, with a warning; a problem not
+    stored leaves nothing in the cache."""
+    model, options = Model(params, "yaw-track-cabin"), ProblemOptions(h_u=0.1, solver="fatrop", expand=False)
+    path = short(duration=1.5)
+    transcription.FATROP_SOLVERS.clear()
+    built = CueingProblem(model, path, options, stored=True)
+    kept = sorted(file.name.split("-")[0] for file in cache.iterdir() if not file.name.startswith("stages-"))
+    assert kept == ["nlp", "solver"]
+    x, u = initial_guesses(built, 1, 0)[0][1:]
+    first = built.solve(x, u)
+    transcription.FATROP_SOLVERS.clear()
+    with monkeypatch.context() as patched:
+        patched.setattr(ca, "nlpsol", lambda *args, **kw: pytest.fail("fatrop was set up again"))
+        again = CueingProblem(model, path, options, stored=True).solve(x, u)
+    assert again.success and again.iterations == first.iterations
+    np.testing.assert_array_equal(again.x, first.x)
+    next(cache.glob("solver-*")).write_bytes(b"not a solver")
+    transcription.FATROP_SOLVERS.clear()
+    with pytest.warns(RuntimeWarning, match="did not load"):
+        rebuilt = CueingProblem(model, path, options, stored=True)
+    assert rebuilt.solve(x, u).iterations == first.iterations
+    before = sorted(cache.iterdir())
+    CueingProblem(model, short(duration=2.0), options)
+    assert sorted(cache.iterdir()) == before
+
+
 def test_small_problems_are_not_compiled(params, cache):
     problem = CueingProblem(Model(params, "yaw-track-cabin"), short(), ProblemOptions(h_u=0.1))
     assert not problem.compiled

@@ -69,3 +69,12 @@ def test_windows_stitch_into_one_checked_plan_close_to_the_whole_solve(params):
     assert again.passed and again.rms == pytest.approx(result.check.rms)
     whole = optimize(path, model, options)
     assert result.check.rms <= 1.05 * whole.check.rms + 1e-3, (result.check.rms, whole.check.rms)
+
+
+def test_windows_start_a_keep_apart_and_the_last_reaches_the_end():
+    """In intervals: windows of 1,200 that keep 900; the last is as long as what is left."""
+    assert windows._windows(1700, 1200, 900) == [0, 900]
+    assert windows._windows(1210, 1200, 900) == [0, 900]
+    assert windows._windows(2400, 1200, 900) == [0, 900, 1800]
+    assert windows._windows(12000, 1200, 900)[-2:] == [9900, 10800]
+    assert windows._windows(1200, 1200, 900) == [0]

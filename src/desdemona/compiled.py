@@ -13,12 +13,18 @@ SHA-256 of its C source (with the CasADi version and the compiler command), in :
 new library is written under a temporary name and renamed, so that two processes compiling the same
 source at once leave one whole file. Files there are only ever added: remove the folder to clear it.
 
+A fatrop solver of a problem that later runs pose again (the windows of a recording, the same for
+every recording: :mod:`desdemona.windows`) is kept there too, serialized with its NLP's library
+(:func:`store_solver`): CasADi's set-up of fatrop for a problem's structure takes 15 s at 1,200
+intervals, loading it back under a second.
+
 Without a C compiler (``$CC``, else ``cc``), or when compiling fails, :func:`compiled` returns None
 and the caller keeps the virtual machine: slower, same results.
 """
 
 from __future__ import annotations
 
+import gzip
 import hashlib
 import os
 import platform
@@ -26,6 +32,7 @@ import shutil
 import subprocess
 import tempfile
 import warnings
+import zlib
 from pathlib import Path
 
 import casadi as ca
@@ -128,19 +135,64 @@ def c_source(functions: list[ca.Function], file: str) -> str:
     return generator.dump()
 
 
-def linked(source: str, stages: Path, name: str) -> ca.Function | None:
+def linked(source: str, stages: Path, name: str, kept: Path | None = None) -> ca.Function | None:
     """Function ``name`` of the functions whose C ``source`` is :func:`c_source`'s, compiled now into
     a library of their own that calls the compiled stage functions of the library ``stages``
     (:func:`build`); the other functions are in the same library, where CasADi finds them by name
     (``External.factory``: an NLP solver asks its oracle for ``nlp_jac_g``, ``nlp_hess_l``, ...).
-    Compiled at ``-O0`` into a temporary folder that is removed once the library is loaded: these
-    functions only assemble the stages' blocks. None, with a warning, where compiling fails."""
-    with tempfile.TemporaryDirectory(prefix="desdemona-") as work:
+    Compiled at ``-O0`` (these functions only assemble the stages' blocks) into a temporary folder that
+    is removed once the library is loaded, or, given ``kept``, into that file of the cache (a stored
+    solver's, :func:`store_solver`). None, with a warning, where compiling fails."""
+    folder = Path(tempfile.gettempdir()) if kept is None else kept.parent
+    with tempfile.TemporaryDirectory(dir=folder, prefix=".compiling-") as work:
         so_file = Path(work) / "assembly.so"
         flags = [*FLAGS, "-o", str(so_file), str(stages), f"-Wl,-rpath,{stages.parent}"]
         if not _cc(compiler(), source, Path(work) / "assembly.c", flags):
             return None
-        return ca.external(name, str(so_file))  # loaded: the file may go
+        if kept is None:
+            return ca.external(name, str(so_file))  # loaded: the file may go
+        os.replace(so_file, kept)
+    return ca.external(name, str(kept))
+
+
+def solver_files(key: str) -> tuple[Path, Path]:
+    """Where a solver found by ``key`` (a SHA-256 of everything it depends on) is kept in the cache:
+    the solver serialized, and its NLP's library (:func:`linked`), whose path the solver holds."""
+    return cache_dir() / f"solver-{key[:24]}.casadi.gz", cache_dir() / f"nlp-{key[:24]}.so"
+
+
+def stored_solver(key: str) -> ca.Function | None:
+    """The solver :func:`store_solver` kept under ``key``, or None where there is none (or it no longer
+    loads: a warning says why, and the caller builds it again)."""
+    file, nlp = solver_files(key)
+    if not (file.exists() and nlp.exists()):
+        return None
+    try:
+        return ca.Function.deserialize(gzip.decompress(file.read_bytes()).decode())
+    except (OSError, RuntimeError, EOFError, zlib.error) as error:
+        warnings.warn(f"the solver kept in {file} did not load ({str(error).strip()[:200]}): building it "
+                      "again", RuntimeWarning, stacklevel=2)
+        return None
+
+
+def store_solver(key: str, solver: ca.Function) -> None:
+    """Keep ``solver`` (whose NLP is the library :func:`linked` compiled into ``solver_files(key)[1]``) in
+    the cache for later runs: CasADi sets fatrop up for a problem's structure in a time that grows with
+    the square of its intervals (15 s at 1,200), and loads it back in under a second. Written under a
+    temporary name and renamed, as the libraries are; where the cache cannot be written, a warning."""
+    file = solver_files(key)[0]
+    data = gzip.compress(solver.serialize().encode(), compresslevel=1)  # 62 -> 2 MB: mostly sparsity
+    written = None
+    try:
+        with tempfile.NamedTemporaryFile(dir=file.parent, prefix=".storing-", delete=False) as out:
+            written = Path(out.name)
+            out.write(data)
+        os.replace(written, file)
+    except OSError as error:
+        if written is not None:
+            written.unlink(missing_ok=True)
+        warnings.warn(f"cannot keep the solver in {file.parent} ({error}): it is built again next time",
+                      RuntimeWarning, stacklevel=2)
 
 
 def oracle(nlp: dict, derivatives: dict[str, ca.Function]) -> list[ca.Function]:

@@ -46,6 +46,8 @@ class OptimizeOptions:
     seed : seed of the random guesses (results are reproducible for a given seed).
     workers : parallel processes for the starts (1: in this process).
     refine : solve with the simplified dynamics first, then refine with the full dynamics (5.7).
+    stored : keep fatrop's solver in the cache for later runs (``CueingProblem(stored=True)``: the
+    windows of a recording, :mod:`desdemona.windows`).
     """
 
     problem: ProblemOptions = field(default_factory=ProblemOptions)
@@ -53,6 +55,7 @@ class OptimizeOptions:
     seed: int = 0
     workers: int = 1
     refine: bool = False
+    stored: bool = False
 
     def __post_init__(self):
         if self.starts < 1 or self.workers < 1:
@@ -250,9 +253,9 @@ def _guesses_from_start(problem: CueingProblem, rate: float) -> list[tuple[str, 
 
 
 def _problems(model: Model, path: DesiredPath, options: OptimizeOptions):
-    full = CueingProblem(model, path, options.problem, solves=options.starts)
+    full = CueingProblem(model, path, options.problem, solves=options.starts, stored=options.stored)
     rough = (CueingProblem(Model(model.params.simplified(), model.config), path, options.problem,
-                           solves=options.starts) if options.refine else None)
+                           solves=options.starts, stored=options.stored) if options.refine else None)
     return full, rough
 
 

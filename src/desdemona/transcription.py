@@ -128,13 +128,17 @@ class CueingProblem(Formulation):
 
     solves : how often it will be solved (a flat graph pays from :data:`EXPAND_SOLVES` on);
     parametric : the desired path is a parameter (an on-line controller's problem, solved each cycle
-    on a new preview), not a constant.
+    on a new preview), not a constant;
+    stored : with fatrop, keep its solver in the cache for later runs and take it from there
+    (:func:`desdemona.compiled.store_solver`: a window of a recording poses the same problem for
+    every recording).
     """
 
     def __init__(self, model: Model, path: DesiredPath, options: ProblemOptions = ProblemOptions(),
-                 solves: int = 1, parametric: bool = False):
+                 solves: int = 1, parametric: bool = False, stored: bool = False):
         super().__init__(model, path, options, parametric)
         self.solves = solves
+        self.stored = stored
         self.monitor = None  # the solver's guard.SolveMonitor, where it has one
         self._build_nlp()
 
@@ -388,15 +392,22 @@ class CueingProblem(Formulation):
         # the NLP with the derivatives assembled here, compiled, for fatrop to find by name; one solver
         # for every problem whose compiled NLP is the same (the path is its parameter)
         source = compiled.c_source(compiled.oracle(self.nlp, self.derivatives), "assembly.c")
-        key = hashlib.sha256(f"{source}{self.stage_library}{opts}".encode()).hexdigest()
-        if key not in FATROP_SOLVERS:
-            if (oracle := compiled.linked(source, self.stage_library, "nlp")) is None:
+        key = hashlib.sha256(f"{ca.__version__}{source}{self.stage_library}{opts}".encode()).hexdigest()
+        if key in FATROP_SOLVERS:
+            return FATROP_SOLVERS[key]
+        solver = compiled.stored_solver(key) if self.stored else None
+        if solver is None:
+            kept = compiled.solver_files(key)[1] if self.stored else None
+            if (oracle := compiled.linked(source, self.stage_library, "nlp", kept)) is None:
                 raise RuntimeError("the NLP's functions for fatrop did not compile (the warning says why); "
                                    "solve with IPOPT, or with ProblemOptions(compile=False)")
-            while len(FATROP_SOLVERS) >= FATROP_KEPT:
-                FATROP_SOLVERS.pop(next(iter(FATROP_SOLVERS)))
-            FATROP_SOLVERS[key] = ca.nlpsol("cueing", "fatrop", oracle, opts)
-        return FATROP_SOLVERS[key]
+            solver = ca.nlpsol("cueing", "fatrop", oracle, opts)
+            if self.stored:
+                compiled.store_solver(key, solver)
+        while len(FATROP_SOLVERS) >= FATROP_KEPT:
+            FATROP_SOLVERS.pop(next(iter(FATROP_SOLVERS)))
+        FATROP_SOLVERS[key] = solver
+        return solver
 
     def _ipopt(self, settings: dict, **derivatives) -> ca.Function:
         """An IPOPT solver of the NLP with the stage-assembled derivatives (``derivatives`` replacing

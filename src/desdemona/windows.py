@@ -10,6 +10,10 @@ the position limits, the on-line end condition of chapter 7), and memory is boun
 not the recording. The stitched plan is re-checked as a whole against every limit
 (:func:`desdemona.simulate.check`); a violation is an error, as for any result.
 
+Every window but the last poses, for every recording, the same problem with another path and another
+start: its fatrop solver is kept in the cache (``OptimizeOptions.stored``), so that only a machine's
+first windowed run pays its set-up. The last is as long as what is left, and builds its own.
+
 ``choose(duration, model, options, asked)`` decides: the window asked for (refused with the length
 that would do where it is shorter than the machine needs to stop twice over, or longer than the
 memory allows), else windows of :data:`DEFAULT_WINDOW` above :data:`WHOLE_UP_TO` seconds.
@@ -111,14 +115,11 @@ def part(path: DesiredPath, start: float, end: float) -> DesiredPath:
     return replace(path, t=t - start, S_d=S_d, modulus=modulus)
 
 
-def _windows(duration: float, window: float, keep: float) -> list[tuple[float, float]]:
-    """(start, end) of each window: each starts ``keep`` after the one before; the last reaches the end."""
-    spans, start = [], 0.0
-    while start + window < duration - 1e-9:
-        spans.append((start, start + window))
-        start += keep
-    spans.append((start, duration))
-    return spans
+def _windows(intervals: int, window: int, keep: int) -> list[int]:
+    """The first interval of each window of ``window`` intervals over ``intervals``: each starts ``keep``
+    after the one before; the last reaches the end (and is shorter where less is left)."""
+    firsts = [*range(0, intervals - window, keep)]
+    return [*firsts, firsts[-1] + keep if firsts else 0]
 
 
 def optimize_windowed(path: DesiredPath, model: Model, options: OptimizeOptions, window: float,
@@ -133,25 +134,28 @@ def optimize_windowed(path: DesiredPath, model: Model, options: OptimizeOptions,
         _refuse_perception()
     path = model.config.cue_path(path)
     h_u = problem.h_u
-    k = int(round((window - overlap(model)) / h_u))  # the node where the next window starts
-    spans = _windows(path.duration, h_u * round(window / h_u), k * h_u)
+    size = int(round(window / h_u))
+    firsts = _windows(int(round(path.duration / h_u)), size, int(round((window - overlap(model)) / h_u)))
     pieces, reports, state, guess = [], [], None, None
-    for index, (start, end) in enumerate(spans):
+    for index, first in enumerate(firsts):
+        last = index == len(firsts) - 1
+        start, end = first * h_u, path.duration if last else (first + size) * h_u
         if announce is not None:
-            announce(index + 1, len(spans), start, end)
-        last = index == len(spans) - 1
+            announce(index + 1, len(firsts), start, end)
         window_path = part(path, start, end)
         settings = problem if last else replace(problem, final="none", stoppable=True)
         if state is not None:
             settings = replace(settings, initial="given", initial_state=state)
         starts = options.starts if state is None else min(options.starts, LATER_STARTS)
-        result = optimize(window_path, model, replace(options, problem=settings, starts=starts),
+        stored = not last or int(round((end - start) / h_u)) == size  # a problem later runs pose again
+        result = optimize(window_path, model, replace(options, problem=settings, starts=starts, stored=stored),
                           progress=progress, first=guess)
-        reports += [replace(r, guess=f"window {index + 1}/{len(spans)}: {r.guess}") for r in result.starts]
+        reports += [replace(r, guess=f"window {index + 1}/{len(firsts)}: {r.guess}") for r in result.starts]
         sol = result.solution
         if last:
             pieces.append((start, sol, len(sol.u)))
             break
+        k = firsts[index + 1] - first  # the node where the next window starts
         pieces.append((start, sol, k))
         n = model.n
         x = sol.x[k]
