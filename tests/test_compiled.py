@@ -132,8 +132,8 @@ def test_a_stored_fatrop_solver_is_loaded_by_a_later_run(params, cache, monkeypa
     path = short(duration=1.5)
     transcription.FATROP_SOLVERS.clear()
     built = CueingProblem(model, path, options, stored=True)
-    kept = sorted(file.name.split("-")[0] for file in cache.iterdir() if not file.name.startswith("stages-"))
-    assert kept == ["nlp", "solver"]
+    kept = sorted(file.name.split("-")[0] for file in cache.iterdir() if file.name.startswith(("nlp-", "solver-")))
+    assert kept == ["nlp", "solver"] and not list(cache.glob(".*"))  # and no temporary file left
     x, u = initial_guesses(built, 1, 0)[0][1:]
     first = built.solve(x, u)
     transcription.FATROP_SOLVERS.clear()

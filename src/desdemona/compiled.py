@@ -187,6 +187,7 @@ def store_solver(key: str, solver: ca.Function) -> None:
         with tempfile.NamedTemporaryFile(dir=file.parent, prefix=".storing-", delete=False) as out:
             written = Path(out.name)
             out.write(data)
+        written.chmod(0o644)  # readable as the libraries beside it are
         os.replace(written, file)
     except OSError as error:
         if written is not None:
