@@ -143,8 +143,8 @@ def linked(source: str, stages: Path, name: str, kept: Path | None = None) -> ca
     Compiled at ``-O0`` (these functions only assemble the stages' blocks) into a temporary folder that
     is removed once the library is loaded, or, given ``kept``, into that file of the cache (a stored
     solver's, :func:`store_solver`). None, with a warning, where compiling fails."""
-    folder = Path(tempfile.gettempdir()) if kept is None else kept.parent
-    with tempfile.TemporaryDirectory(dir=folder, prefix=".compiling-") as work:
+    where = {"prefix": "desdemona-"} if kept is None else {"dir": kept.parent, "prefix": ".compiling-"}
+    with tempfile.TemporaryDirectory(**where) as work:
         so_file = Path(work) / "assembly.so"
         flags = [*FLAGS, "-o", str(so_file), str(stages), f"-Wl,-rpath,{stages.parent}"]
         if not _cc(compiler(), source, Path(work) / "assembly.c", flags):
