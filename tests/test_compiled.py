@@ -150,6 +150,11 @@ def test_a_stored_fatrop_solver_is_loaded_by_a_later_run(params, cache, monkeypa
     before = sorted(cache.iterdir())
     CueingProblem(model, short(duration=2.0), options)
     assert sorted(cache.iterdir()) == before
+    # a cache that takes no new files (shared, read-only): the solver is built, and nothing is kept
+    monkeypatch.setattr(compiled, "writable", lambda: False)
+    unkept = CueingProblem(model, short(duration=2.5), options, stored=True)
+    assert unkept.solve(*initial_guesses(unkept, 1, 0)[0][1:]).success
+    assert sorted(cache.iterdir()) == before
 
 
 def test_small_problems_are_not_compiled(params, cache):

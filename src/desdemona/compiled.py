@@ -155,6 +155,12 @@ def linked(source: str, stages: Path, name: str, kept: Path | None = None) -> ca
     return ca.external(name, str(kept))
 
 
+def writable() -> bool:
+    """Whether the cache can take new files (a shared, read-only one cannot: nothing is kept then)."""
+    folder = cache_dir()
+    return folder.is_dir() and os.access(folder, os.W_OK)
+
+
 def solver_files(key: str) -> tuple[Path, Path]:
     """Where a solver found by ``key`` (a SHA-256 of everything it depends on) is kept in the cache:
     the solver serialized, and its NLP's library (:func:`linked`), whose path the solver holds."""

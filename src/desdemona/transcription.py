@@ -397,12 +397,12 @@ class CueingProblem(Formulation):
             return FATROP_SOLVERS[key]
         solver = compiled.stored_solver(key) if self.stored else None
         if solver is None:
-            kept = compiled.solver_files(key)[1] if self.stored else None
+            kept = compiled.solver_files(key)[1] if self.stored and compiled.writable() else None
             if (oracle := compiled.linked(source, self.stage_library, "nlp", kept)) is None:
                 raise RuntimeError("the NLP's functions for fatrop did not compile (the warning says why); "
                                    "solve with IPOPT, or with ProblemOptions(compile=False)")
             solver = ca.nlpsol("cueing", "fatrop", oracle, opts)
-            if self.stored:
+            if kept is not None:
                 compiled.store_solver(key, solver)
         while len(FATROP_SOLVERS) >= FATROP_KEPT:
             FATROP_SOLVERS.pop(next(iter(FATROP_SOLVERS)))
