@@ -123,6 +123,7 @@ def test_paths_of_as_many_intervals_share_one_fatrop_solver(params, cache):
     assert len(transcription.FATROP_SOLVERS) == 2
 
 
+@needs_compiler
 def test_a_stored_fatrop_solver_is_loaded_by_a_later_run(params, cache, monkeypatch):
     """A window's fatrop solver is kept in the cache, serialized beside its NLP's library: a later run
     (here this process, its solvers forgotten) loads it instead of setting fatrop up again, and solves

@@ -119,12 +119,7 @@ def build(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> Path 
         return None
     if notice is not None and "-O0" not in flags:
         notice(f"compiling the stage functions for this machine and these options, once, into {path.parent}")
-    with tempfile.TemporaryDirectory(dir=path.parent, prefix=".compiling-") as work:
-        so_file = Path(work) / path.name
-        if not _cc(cc, source, Path(work) / "stages.c", [*flags, "-o", str(so_file)]):
-            return None
-        os.replace(so_file, path)  # atomic: a reader sees no library or a whole one
-    return path
+    return path if _compiled_into(path, source, "stages.c", list(flags)) else None
 
 
 def c_source(functions: list[ca.Function], file: str) -> str:
@@ -143,16 +138,14 @@ def linked(source: str, stages: Path, name: str, kept: Path | None = None) -> ca
     Compiled at ``-O0`` (these functions only assemble the stages' blocks) into a temporary folder that
     is removed once the library is loaded, or, given ``kept``, into that file of the cache (a stored
     solver's, :func:`store_solver`). None, with a warning, where compiling fails."""
-    where = {"prefix": "desdemona-"} if kept is None else {"dir": kept.parent, "prefix": ".compiling-"}
-    with tempfile.TemporaryDirectory(**where) as work:
+    flags = [*FLAGS, str(stages), f"-Wl,-rpath,{stages.parent}"]
+    if kept is not None:
+        return ca.external(name, str(kept)) if _compiled_into(kept, source, "assembly.c", flags) else None
+    with tempfile.TemporaryDirectory(prefix="desdemona-") as work:
         so_file = Path(work) / "assembly.so"
-        flags = [*FLAGS, "-o", str(so_file), str(stages), f"-Wl,-rpath,{stages.parent}"]
-        if not _cc(compiler(), source, Path(work) / "assembly.c", flags):
+        if not _cc(compiler(), source, Path(work) / "assembly.c", [*flags, "-o", str(so_file)]):
             return None
-        if kept is None:
-            return ca.external(name, str(so_file))  # loaded: the file may go
-        os.replace(so_file, kept)
-    return ca.external(name, str(kept))
+        return ca.external(name, str(so_file))  # loaded: the file may go
 
 
 def writable() -> bool:
@@ -227,6 +220,18 @@ def oracle(nlp: dict, derivatives: dict[str, ca.Function]) -> list[ca.Function]:
                         ["grad_gamma_x", "hess_gamma_x_x"]),
             ca.Function("nlp_grad", [w, p, lam_f, lam_g], [f, g, ca.MX(w.numel(), 1), ca.MX(p.numel(), 1)], xpl,
                         ["f", "g", "grad_gamma_x", "grad_gamma_p"])]
+
+
+def _compiled_into(target: Path, source: str, c_name: str, flags: list[str]) -> bool:
+    """Compile ``source`` with ``flags`` into the library ``target`` of the cache: in a temporary folder
+    beside it, then renamed (atomic: a reader sees no library or a whole one). False, with a warning,
+    where compiling fails."""
+    with tempfile.TemporaryDirectory(dir=target.parent, prefix=".compiling-") as work:
+        so_file = Path(work) / target.name
+        if not _cc(compiler(), source, Path(work) / c_name, [*flags, "-o", str(so_file)]):
+            return False
+        os.replace(so_file, target)
+    return True
 
 
 def _cc(cc: str | None, source: str, c_file: Path, flags: list[str]) -> bool:
