@@ -119,7 +119,7 @@ def build(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> Path 
         return None
     if notice is not None and "-O0" not in flags:
         notice(f"compiling the stage functions for this machine and these options, once, into {path.parent}")
-    return path if _compiled_into(path, source, "stages.c", list(flags)) else None
+    return path if _compiled_into(cc, path, source, "stages.c", list(flags)) else None
 
 
 def c_source(functions: list[ca.Function], file: str) -> str:
@@ -140,7 +140,7 @@ def linked(source: str, stages: Path, name: str, kept: Path | None = None) -> ca
     solver's, :func:`store_solver`). None, with a warning, where compiling fails."""
     flags = [*FLAGS, str(stages), f"-Wl,-rpath,{stages.parent}"]
     if kept is not None:
-        return ca.external(name, str(kept)) if _compiled_into(kept, source, "assembly.c", flags) else None
+        return ca.external(name, str(kept)) if _compiled_into(compiler(), kept, source, "assembly.c", flags) else None
     with tempfile.TemporaryDirectory(prefix="desdemona-") as work:
         so_file = Path(work) / "assembly.so"
         if not _cc(compiler(), source, Path(work) / "assembly.c", [*flags, "-o", str(so_file)]):
@@ -222,13 +222,13 @@ def oracle(nlp: dict, derivatives: dict[str, ca.Function]) -> list[ca.Function]:
                         ["f", "g", "grad_gamma_x", "grad_gamma_p"])]
 
 
-def _compiled_into(target: Path, source: str, c_name: str, flags: list[str]) -> bool:
-    """Compile ``source`` with ``flags`` into the library ``target`` of the cache: in a temporary folder
+def _compiled_into(cc: str | None, target: Path, source: str, c_name: str, flags: list[str]) -> bool:
+    """Compile ``source`` with ``cc`` and ``flags`` into the library ``target`` of the cache: in a temporary folder
     beside it, then renamed (atomic: a reader sees no library or a whole one). False, with a warning,
     where compiling fails."""
     with tempfile.TemporaryDirectory(dir=target.parent, prefix=".compiling-") as work:
         so_file = Path(work) / target.name
-        if not _cc(compiler(), source, Path(work) / c_name, [*flags, "-o", str(so_file)]):
+        if not _cc(cc, source, Path(work) / c_name, [*flags, "-o", str(so_file)]):
             return False
         os.replace(so_file, target)
     return True
