@@ -78,3 +78,32 @@ def test_windows_start_a_keep_apart_and_the_last_reaches_the_end():
     assert windows._windows(2400, 1200, 900) == [0, 900, 1800]
     assert windows._windows(12000, 1200, 900)[-2:] == [9900, 10800]
     assert windows._windows(1200, 1200, 900) == [0]
+
+
+def test_a_later_windows_guesses_bring_the_start_s_motion_to_rest_within_the_travel(params):
+    """A window after the first starts moving (the track at 1.2 m/s towards its end, the cabin turning):
+    its guesses bring the track, the joint with a travel, to rest at the plans' braking, so that no
+    position needs clipping (a clipped guess leaves its gaps open; held at zero acceleration, the track
+    ran past its end), and leave the joints that turn freely turning."""
+    from desdemona.offline import initial_guesses, settled
+    from desdemona.transcription import CueingProblem
+
+    model = Model(params, "yaw-track-cabin")
+    lim, n = model.limits, model.n
+    q0, qd0, a0 = np.array([0.3, 2.5, 0.1]), np.array([0.8, 1.2, -0.4]), np.array([0.1, 0.5, 0.0])
+    options = ProblemOptions(h_u=0.2, initial="given", initial_state=(q0, qd0, a0), final="none", stoppable=True,
+                             solver="ipopt", compile=False)
+    problem = CueingProblem(model, _long(10.0), options)
+    held = np.zeros((problem.N, n))
+    free, _ = problem.guess(q0, qd0, held, a0, clip=False)
+    assert free[:, 1].max() > lim.position_max[1]  # the motion carried on: the track past its end
+    u = settled(problem, qd0, a0, held)
+    clipped, _ = problem.guess(q0, qd0, u, a0)
+    unclipped, _ = problem.guess(q0, qd0, u, a0, clip=False)
+    assert np.allclose(clipped, unclipped)  # within the travel and the rates without clipping
+    assert abs(unclipped[-1, n + 1]) < 1e-4  # the track at rest (to a hair: whole steps)
+    assert np.all(u[:, [0, 2]] == 0.0)  # the yaw's and the cabin's accelerations left as they were
+    assert np.all(np.abs(u[:, 1]) <= max(abs(a0[1]), options.braking * lim.acceleration[1]) + 1e-9)
+    for name, x, _ in initial_guesses(problem, 2, seed=0):
+        assert abs(x[-1, n + 1]) < 1e-4, name
+        assert np.all(x[:, 1] < lim.position_max[1]), name

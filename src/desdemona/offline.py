@@ -22,7 +22,7 @@ import numpy as np
 from desdemona import guard, metrics, sizing, thesis
 from desdemona.classical import classical_dfs
 from desdemona.model import Model
-from desdemona.plan import Plan, start_acceleration, start_state
+from desdemona.plan import Plan, braked, start_acceleration, start_state
 from desdemona.problem import ProblemOptions
 from desdemona.transcription import CueingProblem, Solution
 from desdemona.profiles import DesiredPath
@@ -238,14 +238,33 @@ def _guesses_from_start(problem: CueingProblem, rate: float) -> list[tuple[str, 
         side = -1.0 if float(np.mean(problem.path.S_d[:, 4])) >= 0 else 1.0
         out = 0.5 if rate <= SPIN_SHARE else 1.0
         rows.insert(1, ("from rest: yaw spun up, track out", side * out * model.limits.position_max[track], 1.0))
+    a0 = start_acceleration(problem.options.initial_state, model.n)
     for name, track_position, direction in rows:
         start = q0.copy()
         if track is not None and track_position:
             start[track] = track_position
-        x, u = problem.guess(start, qd0, _spin_up(problem, direction, rate),
-                             start_acceleration(problem.options.initial_state, model.n))
+        x, u = problem.guess(start, qd0, settled(problem, qd0, a0, _spin_up(problem, direction, rate)), a0)
         guesses.append((name, x, u))
     return guesses
+
+
+def settled(problem: CueingProblem, qd, a, accelerations, first: int = 0) -> np.ndarray:
+    """``accelerations`` (N, n) of a guess with every joint that has a travel (finite position limits)
+    brought to rest from node ``first`` on, from rates ``qd`` and accelerations ``a`` there, braking
+    at the plans' ``braking`` share of the acceleration limit (:func:`desdemona.plan.braked`). A guess
+    from a moving start (a window after the first) would otherwise carry the start's rates on at zero
+    acceleration into the end of the travel, where :meth:`CueingProblem.guess` clips its positions and
+    leaves its gaps open; a joint that turns freely (the yaw, the gimbals of ``full`` and ``dfs``)
+    keeps its rate, which a steady turn needs ("Later windows' guesses brought to rest" in
+    docs/benchmarks.md)."""
+    lim, u = problem.model.limits, np.array(accelerations, dtype=float)
+    joints = np.isfinite(lim.position_min) | np.isfinite(lim.position_max)
+    if not joints.any():
+        return u
+    A = problem.options.braking * lim.acceleration[joints]
+    jerk = lim.jerk[joints] if lim.smooth else 1e3 * A / float(np.min(problem.steps))  # without: a step at once
+    u[first:, joints] = braked(np.asarray(qd)[joints], np.asarray(a)[joints], problem.steps[first:], A, jerk)
+    return u
 
 
 # ----------------------------------------------------------------------------------------------

@@ -220,6 +220,21 @@ def stopping_jerk(qd, a, h: float, A, J) -> np.ndarray:
     return s * np.clip(k, -J, J)  # -J where even the strongest ramp leaves the rate along the motion
 
 
+def braked(qd, a, h, A, J) -> np.ndarray:
+    """(N, n) accelerations, one at the end of each interval of ``h`` (N,) [s], of joints brought to rest
+    from rates ``qd`` and accelerations ``a`` (n,) as quickly as the acceleration ``A`` and the jerk
+    ``J`` (n,) allow (:func:`stopping_jerk` each interval), then held at rest: a guess that does not
+    carry a start's motion on into the position limits."""
+    qd, a = np.array(qd, dtype=float), np.array(a, dtype=float)
+    out = np.empty((len(h), len(qd)))
+    for k, step in enumerate(np.asarray(h, dtype=float).reshape(-1)):
+        jerk = stopping_jerk(qd, a, step, A, J)
+        qd += a * step + 0.5 * jerk * step * step
+        a += jerk * step
+        out[k] = a
+    return out
+
+
 def braking_jerk(q, qd, a, h: float, limits, braking: float, rate=0.0) -> np.ndarray:
     """Per joint the jerk of one step of a brake towards the rate ``rate`` (default rest) [/s^3]: the
     acceleration turned from ``a`` at most at the jerk limit J towards (rate - qd) / T, at most

@@ -29,7 +29,7 @@ import numpy as np
 
 from desdemona import sizing
 from desdemona.model import Model
-from desdemona.offline import OptimizeOptions, Result, optimize
+from desdemona.offline import OptimizeOptions, Result, optimize, settled
 from desdemona.profiles import DesiredPath
 from desdemona.simulate import LimitViolation, check, evaluate_plan, fine_grid
 from desdemona.transcription import Solution
@@ -165,13 +165,20 @@ def optimize_windowed(path: DesiredPath, model: Model, options: OptimizeOptions,
 
 
 def _continued(sol: Solution, k: int):
-    """The next window's first guess: this window's accelerations after node k, then held at zero."""
+    """The next window's first guess: this window's accelerations after node k, then every joint with a
+    travel brought to rest from the state this window ends at (:func:`~desdemona.offline.settled`), the
+    others' accelerations held at zero."""
     n = sol.u.shape[1]
     rest = sol.accelerations[k:]
-    return lambda problem: [("the window before, continued",
-                             *problem.guess(sol.x[k, :n], sol.x[k, n:2 * n],
-                                            np.vstack([rest, np.zeros((max(0, problem.N - len(rest)), n))])[:problem.N],
-                                            sol.x[k, 2 * n:3 * n] if sol.smooth else None))]
+    end_rate, end_acceleration = sol.x[-1, n:2 * n], sol.x[-1, 2 * n:3 * n] if sol.smooth else np.zeros(n)
+
+    def guess(problem):
+        done = min(len(rest), problem.N)
+        u = settled(problem, end_rate, end_acceleration, np.zeros((problem.N, n)), done)
+        u[:done] = rest[:done]
+        return [("the window before, continued",
+                 *problem.guess(sol.x[k, :n], sol.x[k, n:2 * n], u, sol.x[k, 2 * n:3 * n] if sol.smooth else None))]
+    return guess
 
 
 def _stitched(path: DesiredPath, model: Model, options: OptimizeOptions, pieces, reports, wall: float) -> Result:
