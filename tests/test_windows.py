@@ -107,3 +107,24 @@ def test_a_later_windows_guesses_bring_the_start_s_motion_to_rest_within_the_tra
     for name, x, _ in initial_guesses(problem, 2, seed=0):
         assert abs(x[-1, n + 1]) < 1e-4, name
         assert np.all(x[:, 1] < lim.position_max[1]), name
+
+
+def test_braked_joints_come_to_rest_within_their_limits():
+    """plan.braked: with jerk limits the acceleration ramps (at most J a step) to at most A against the
+    motion and the rate ends at zero; without them the acceleration is held over each interval, at most
+    A, and the rate ends exactly at zero after |qd| / A."""
+    from desdemona.plan import braked, node_states, ramp
+
+    h, A, J = np.full(200, 0.05), np.array([0.5, 2.0]), np.array([1.0, 20.0])
+    qd0, a0 = np.array([1.2, -0.7]), np.array([0.4, 0.0])
+    u = braked(qd0, a0, h, A, J)
+    starts, jerks = ramp(u, h[:, None], a0, J)
+    assert np.all(np.abs(jerks) <= J + 1e-12)
+    assert np.all(np.abs(starts) <= np.maximum(np.abs(a0), A) + 1e-12)
+    _, qd = node_states(np.zeros(2), qd0, starts, h[:, None], jerks)
+    assert np.all(np.abs(qd[-1]) < 1e-6) and np.all(np.abs(u[-1]) < 1e-2)
+    held = braked(qd0, a0, h, A)
+    assert np.all(np.abs(held) <= A + 1e-12)
+    assert np.allclose(qd0 + np.cumsum(held * h[:, None], axis=0)[-1], 0.0, atol=1e-12)
+    assert np.count_nonzero(np.isclose(held[:, 0], -0.5)) == 48  # 1.2 m/s at 0.5 m/s^2: 2.4 s
+    assert np.all(np.abs(held[48:, 0]) < 1e-12)

@@ -261,9 +261,8 @@ def settled(problem: CueingProblem, qd, a, accelerations, first: int = 0) -> np.
     joints = np.isfinite(lim.position_min) | np.isfinite(lim.position_max)
     if not joints.any():
         return u
-    A = problem.options.braking * lim.acceleration[joints]
-    jerk = lim.jerk[joints] if lim.smooth else 1e3 * A / float(np.min(problem.steps))  # without: a step at once
-    u[first:, joints] = braked(np.asarray(qd)[joints], np.asarray(a)[joints], problem.steps[first:], A, jerk)
+    u[first:, joints] = braked(np.asarray(qd)[joints], np.asarray(a)[joints], problem.steps[first:],
+                               problem.options.braking * lim.acceleration[joints], lim.jerk[joints] if lim.smooth else None)
     return u
 
 

@@ -220,14 +220,19 @@ def stopping_jerk(qd, a, h: float, A, J) -> np.ndarray:
     return s * np.clip(k, -J, J)  # -J where even the strongest ramp leaves the rate along the motion
 
 
-def braked(qd, a, h, A, J) -> np.ndarray:
+def braked(qd, a, h, A, J=None) -> np.ndarray:
     """(N, n) accelerations, one at the end of each interval of ``h`` (N,) [s], of joints brought to rest
     from rates ``qd`` and accelerations ``a`` (n,) as quickly as the acceleration ``A`` and the jerk
     ``J`` (n,) allow (:func:`stopping_jerk` each interval), then held at rest: a guess that does not
-    carry a start's motion on into the position limits."""
+    carry a start's motion on into the position limits. Without ``J`` (no jerk limits) the
+    accelerations are held over each interval, as such a plan's are."""
     qd, a = np.array(qd, dtype=float), np.array(a, dtype=float)
     out = np.empty((len(h), len(qd)))
     for k, step in enumerate(np.asarray(h, dtype=float).reshape(-1)):
+        if J is None:
+            out[k] = -np.sign(qd) * np.minimum(A, np.abs(qd) / step)
+            qd += out[k] * step
+            continue
         jerk = stopping_jerk(qd, a, step, A, J)
         qd += a * step + 0.5 * jerk * step * step
         a += jerk * step
