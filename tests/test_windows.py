@@ -104,7 +104,9 @@ def test_a_later_windows_guesses_bring_the_start_s_motion_to_rest_within_the_tra
     assert abs(unclipped[-1, n + 1]) < 1e-4  # the track at rest (to a hair: whole steps)
     assert np.all(u[:, [0, 2]] == 0.0)  # the yaw's and the cabin's accelerations left as they were
     assert np.all(np.abs(u[:, 1]) <= max(abs(a0[1]), options.braking * lim.acceleration[1]) + 1e-9)
-    for name, x, _ in initial_guesses(problem, 2, seed=0):
+    guesses = initial_guesses(problem, 2, seed=0)
+    assert [name for name, _, _ in guesses] == ["from the start: yaw spun up", "from the start: yaw spun up the other way"]
+    for name, x, _ in guesses:
         assert abs(x[-1, n + 1]) < 1e-4, name
         assert np.all(x[:, 1] < lim.position_max[1]), name
 

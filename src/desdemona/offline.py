@@ -232,13 +232,14 @@ def _guesses_from_start(problem: CueingProblem, rate: float) -> list[tuple[str, 
     :func:`spin_share` takes)."""
     model, guesses = problem.model, []
     q0, qd0 = _start(problem)
+    a0 = start_acceleration(problem.options.initial_state, model.n)
     track = model.config.free.index(1) if 1 in model.config.free else None
-    rows = [("from rest: yaw spun up", 0.0, 1.0), ("from rest: yaw spun up the other way", 0.0, -1.0)]
+    origin = "from rest" if not (np.any(qd0) or np.any(a0)) else "from the start"  # a later window's moves
+    rows = [(f"{origin}: yaw spun up", 0.0, 1.0), (f"{origin}: yaw spun up the other way", 0.0, -1.0)]
     if track is not None and problem.options.initial == "rest" and problem.path.S_d is not None:
         side = -1.0 if float(np.mean(problem.path.S_d[:, 4])) >= 0 else 1.0
         out = 0.5 if rate <= SPIN_SHARE else 1.0
         rows.insert(1, ("from rest: yaw spun up, track out", side * out * model.limits.position_max[track], 1.0))
-    a0 = start_acceleration(problem.options.initial_state, model.n)
     for name, track_position, direction in rows:
         start = q0.copy()
         if track is not None and track_position:
