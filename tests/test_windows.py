@@ -130,3 +130,4 @@ def test_braked_joints_come_to_rest_within_their_limits():
     assert np.allclose(qd0 + np.cumsum(held * h[:, None], axis=0)[-1], 0.0, atol=1e-12)
     assert np.count_nonzero(np.isclose(held[:, 0], -0.5)) == 48  # 1.2 m/s at 0.5 m/s^2: 2.4 s
     assert np.all(np.abs(held[48:, 0]) < 1e-12)
+    assert not braked(np.zeros(2), np.zeros(2), h, A, J).any() and not braked(np.zeros(2), np.zeros(2), h, A).any()

@@ -229,6 +229,9 @@ def braked(qd, a, h, A, J=None) -> np.ndarray:
     qd, a = np.array(qd, dtype=float), np.array(a, dtype=float)
     out = np.empty((len(h), len(qd)))
     for k, step in enumerate(np.asarray(h, dtype=float).reshape(-1)):
+        if not (qd.any() or a.any()):  # at rest (a start at rest: every guess of a whole solve)
+            out[k:] = 0.0
+            break
         if J is None:
             out[k] = -np.sign(qd) * np.minimum(A, np.abs(qd) / step)
             qd += out[k] * step
