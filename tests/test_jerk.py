@@ -9,7 +9,8 @@ from desdemona import profiles
 from desdemona.model import Model
 from desdemona.mpc import MPC, MPCOptions
 from desdemona.params import ParameterError, load_params
-from desdemona.plan import STOP_LAG, Plan, State, advance, ramp, settled_rate, stopping_extent, stopping_jerk, stopping_reach
+from desdemona.plan import (STOP_LAG, Plan, State, advance, ramp, settled_rate, settled_rates, stopping_extent,
+                            stopping_jerk, stopping_reach)
 from desdemona.problem import ProblemOptions
 from desdemona.transcription import CueingProblem
 from desdemona.simulate import check
@@ -341,6 +342,27 @@ def test_a_state_the_controller_accepts_can_brake_within_the_velocity_limits(par
             for s in _braked(mpc, q, qd, a, 100):
                 assert abs(s.qd[1]) <= vmax * (1 + 1e-6), (qd0, a0, s.qd[1])
     assert 6 <= accepted < 18
+
+
+def test_the_off_line_rate_rows_are_convex_and_keep_the_same_states():
+    """settled_rates: within the velocity limits its two rows keep exactly the states that
+    |settled_rate| <= V keeps, never fewer by more than the smoothing; the highest is convex and the
+    lowest concave in (qd, a), where qd + a |a| / 2J is concave for a < 0."""
+    import casadi as ca
+    J, V = 3.0, 1.0
+    rng = np.random.default_rng(1)
+    qd, a = rng.uniform(-V, V, 200_000), rng.uniform(-4.0, 4.0, 200_000)
+    highest, lowest = settled_rates(qd, a, J)
+    assert np.array_equal((highest <= V) & (lowest >= -V), np.abs(settled_rate(qd, a, J)) <= V)
+    assert np.all(highest >= settled_rate(qd, a, J) - 1e-15) and np.all(lowest <= settled_rate(qd, a, J) + 1e-15)
+    x = ca.SX.sym("x", 2)
+    rows = settled_rates(x[0], x[1], J)
+    curvature = ca.Function("c", [x], [ca.hessian(rows[0], x)[0], ca.hessian(rows[1], x)[0]])
+    old = ca.Function("o", [x], [ca.hessian(settled_rate(x[0], x[1], J, eps=1e-8), x)[0]])
+    for point in ([0.9, -2.0], [0.9, -1e-5], [0.9, 0.0], [0.9, 1e-5], [-0.9, 2.0], [0.0, 3.0]):
+        up, down = (np.linalg.eigvalsh(np.array(h)) for h in curvature(point))
+        assert up.min() >= -1e-12 and down.max() <= 1e-12, point
+    assert np.linalg.eigvalsh(np.array(old([0.9, -2.0]))).min() < -0.1  # what the rows replace
 
 
 @pytest.mark.parametrize("method", ["rti", "nlp"])

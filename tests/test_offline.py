@@ -293,6 +293,31 @@ def test_the_spun_up_guesses_turn_as_fast_as_the_held_force_asks(params):
         assert np.median(middle) == pytest.approx(random_share * v, abs=0.3)
 
 
+def test_the_spun_up_guesses_follow_a_held_force_that_changes(params):
+    """Where the held force changes along the path (a fighter's turns between straight stretches),
+    the smart guesses' yaw rate follows it: at the rate the force asks by the time it asks it (sped up
+    and slowed down ahead of time), never changing by more than 0.8 of its acceleration limit,
+    from rest at the start and back to rest at the end."""
+    from desdemona.offline import SPIN_FLOOR, spin_following
+
+    model = Model(params, "yaw-track-cabin")
+    g, R, v, A = params.gravity, 4.0, model.limits.velocity[0], model.limits.acceleration[0]
+    t = np.linspace(0.0, 40.0, 401)
+    share = np.where((t >= 15.0) & (t < 25.0), 0.9, SPIN_FLOOR)
+    S = np.zeros((len(t), 6))
+    S[:, 5] = np.hypot(g, R * (share * v) ** 2)
+    problem = CueingProblem(model, DesiredPath("turn", t, S), ProblemOptions(h_u=0.1, initial="rest", final="centre"))
+    u = spin_following(problem, 1.0)
+    rate, nodes = np.r_[0.0, np.cumsum(u[:, 0] * problem.steps)], problem.t_nodes
+    assert abs(rate[-1]) < 1e-9 and np.all(u[:, 1:] == 0.0)
+    assert np.abs(np.diff(rate)).max() <= 0.8 * A * 0.1 + 1e-9
+    slowing = (0.9 - SPIN_FLOOR) * v / (0.8 * A)  # ahead of the turn's end, as ahead of its start
+    turn = (nodes >= 15.5) & (nodes <= 24.5 - slowing)  # the held force is a 1 s mean: its edges are soft
+    np.testing.assert_allclose(rate[turn], 0.9 * v, atol=1e-6)
+    np.testing.assert_allclose(rate[(nodes >= 5.0) & (nodes <= 10.0)], SPIN_FLOOR * v, atol=1e-6)
+    np.testing.assert_allclose(rate[(nodes >= 30.0) & (nodes <= 35.0)], SPIN_FLOOR * v, atol=1e-6)
+
+
 def test_a_start_at_the_end_of_a_joints_travel_is_planned_from(params):
     """The optimiser keeps positions a parabola's bulge inside their limits; a start in that band (the
     track at rest at its end) must still be planned from, off-line and on-line, not be infeasible."""

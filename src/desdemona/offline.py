@@ -205,23 +205,56 @@ def _spin_up(problem: CueingProblem, direction: float, rate: float = SPIN_SHARE,
 
 
 def spin_share(problem: CueingProblem, floor: float = SPIN_SHARE) -> float:
-    """The share of the yaw's rate limit that a spun-up guess turns at: the rate whose centripetal
-    force at the cabin's largest radius gives the median of the desired modulus held
+    """The share of the yaw's rate limit that a spun-up random guess turns at: the rate whose
+    centripetal force at the cabin's largest radius gives the median of the desired modulus held
     (:func:`desdemona.sizing.held_modulus`), within [``floor``, 1].
 
-    The smart guesses take it from :data:`SPIN_FLOOR` up, the random starts from :data:`SPIN_SHARE`
-    up. A guess that turns at another rate than the path's sustained force asks has to be brought
+    A guess that turns at another rate than the path's sustained force asks has to be brought
     to it by the solver over every interval of the path, one at a time: the arm's acceleration limit
     blocks each step, too slow a spin on the F-16 turn on ``full``, too fast a one on the 747
     take-off ("Spin of the guesses" in docs/benchmarks.md).
     """
-    model = problem.model
+    held = float(np.median(sizing.held_modulus(problem.path)))
+    return float(np.clip(_held_share(problem.model, held), floor, 1.0))
+
+
+def _held_share(model: Model, held):
+    """The share of the yaw's rate limit whose centripetal force at the cabin's largest radius gives
+    the specific force ``held`` [m/s^2] (g and a horizontal force): unclipped, per value; zero where the
+    configuration has no radius to turn the cabin at."""
     radius = max(abs(r) for r in sizing.radii(model))
     if radius <= 0.0:  # no centripetal force to give
-        return SPIN_SHARE
-    g, held = float(model.params.gravity), float(np.median(sizing.held_modulus(problem.path)))
-    horizontal = np.sqrt(max(held ** 2 - g ** 2, 0.0))
-    return float(np.clip(np.sqrt(horizontal / radius) / model.limits.velocity[0], floor, 1.0))
+        return np.zeros_like(np.asarray(held, dtype=float))
+    horizontal = np.sqrt(np.maximum(np.asarray(held, dtype=float) ** 2 - float(model.params.gravity) ** 2, 0.0))
+    return np.sqrt(horizontal / radius) / model.limits.velocity[0]
+
+
+def spin_following(problem: CueingProblem, direction: float, floor: float = SPIN_FLOOR, accel: float = 0.8,
+                   start: int = 0, rate0: float | None = None) -> np.ndarray:
+    """(N, n) accelerations that turn the yaw in ``direction`` at the rate :func:`spin_share`'s rule
+    gives the desired modulus held at each node (within [``floor``, 1] of the limit), as near as
+    ``accel`` times its acceleration limit lets it follow: changed ahead of time where the force
+    will ask (a pass backwards), from the start's rate (a pass forwards), and braked to rest at the
+    end when the problem ends at rest. A path whose sustained force changes (a sortie's turns and
+    straight stretches) is then not left to the solver to spin up and down node by node against the
+    arm's limits ("Spin of the guesses" in docs/benchmarks.md). From node ``start`` on, at the rate
+    ``rate0`` there (default: the problem's start), and zero before it."""
+    model, h, N = problem.model, problem.steps, problem.N
+    lim, u = model.limits, np.zeros((N, problem.model.n))
+    if model.config.free[:1] != (0,):  # no yaw to turn
+        return u
+    held = np.interp(problem.t_nodes, problem.path.t, sizing.held_modulus(problem.path))
+    rate = direction * lim.velocity[0] * np.clip(_held_share(model, held), floor, 1.0)
+    step = accel * lim.acceleration[0] * h
+    if problem.options.final != "none":
+        rate[-1] = 0.0
+    for k in range(N - 1, start - 1, -1):
+        rate[k] = np.clip(rate[k], rate[k + 1] - step[k], rate[k + 1] + step[k])
+    rate[start] = _start(problem)[1][0] if rate0 is None else rate0
+    for k in range(start + 1, N + 1):
+        rate[k] = np.clip(rate[k], rate[k - 1] - step[k - 1], rate[k - 1] + step[k - 1])
+    u[start:, 0] = np.diff(rate[start:]) / h[start:]
+    return u
 
 
 def _guesses_from_start(problem: CueingProblem, rate: float) -> list[tuple[str, np.ndarray, np.ndarray]]:
@@ -244,7 +277,7 @@ def _guesses_from_start(problem: CueingProblem, rate: float) -> list[tuple[str, 
         start = q0.copy()
         if track is not None and track_position:
             start[track] = track_position
-        x, u = problem.guess(start, qd0, settled(problem, qd0, a0, _spin_up(problem, direction, rate)), a0)
+        x, u = problem.guess(start, qd0, settled(problem, qd0, a0, spin_following(problem, direction)), a0)
         guesses.append((name, x, u))
     return guesses
 

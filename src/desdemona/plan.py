@@ -314,6 +314,20 @@ STOP_LAG = 0.5
 STOP_EPS = 1e-8
 
 
+def settled_rates(qd, a, J, eps: float = STOP_EPS):
+    """The highest and the lowest rate a joint can settle at (:func:`settled_rate`), as two convex
+    functions of (qd, a) for a solver that takes the limits' curvature: qd + a+^2 / 2J and
+    qd - a-^2 / 2J, a+ and a- the acceleration's positive and negative parts (smoothed as
+    (x + sqrt(x^2 + eps)) / 2, never below them). Within the velocity limits, ``highest <= V`` and
+    ``lowest >= -V`` keep the same states as ``|settled_rate| <= V``: where the acceleration falls,
+    the rate only falls. ``settled_rate``'s own a |a| is concave where a < 0: with it active (the
+    arm held at its rate limit for a sustained force) the Lagrangian took its negative curvature
+    ("The rate limit's curvature" in docs/benchmarks.md)."""
+    def plus(x):
+        return 0.5 * (x + (x * x + eps) ** 0.5)
+    return qd + plus(a) ** 2 / (2.0 * J), qd - plus(-a) ** 2 / (2.0 * J)
+
+
 def stopping_reach(qd, a, B, J, eps: float = STOP_EPS, lag=None):
     """Per joint how far up (towards its upper end) a jerk-limited stop from rate ``qd`` and
     acceleration ``a`` reaches, braking at ``B`` (floats, NumPy arrays or CasADi expressions); how far

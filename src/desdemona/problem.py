@@ -52,7 +52,7 @@ import casadi as ca
 import numpy as np
 
 from desdemona.perception import VestibularModel
-from desdemona.plan import STOP_EPS, STOP_LAG, advance, settled_rate, stopping_reach
+from desdemona.plan import STOP_EPS, STOP_LAG, advance, settled_rate, settled_rates, stopping_reach
 from desdemona.model import Model
 from desdemona.profiles import DesiredPath
 
@@ -529,8 +529,8 @@ class Formulation:
             with jerk limits how far up and down the stop reaches (:func:`stopping_reach`: the
             acceleration at the end and the ramps count);
         rate : with ``stoppable`` and jerk limits, the rate each joint ends at when its acceleration
-            is taken to zero at the jerk limit, qd + a |a| / 2J, within the velocity limits: the
-            brake can then keep them (its ramp raises the rate that much first);
+            is taken to zero at the jerk limit, qd + a |a| / 2J, within the velocity limits (the brake
+            can then keep them); off-line as two convex rows (:func:`~desdemona.plan.settled_rates`);
         effort, power : |tau| and |tau qd| over their limits (less ``margin``) at every sub-step point.
         Velocity and acceleration limits are bounds on the variables (linear and constant in t).
         """
@@ -554,9 +554,10 @@ class Formulation:
             else:
                 brake = ca.DM(2.0 * o.braking * lim.acceleration[bounded])
                 families.append(Family("stopping", q_end + qd_end * ca.sqrt(qd_end**2 + 1e-8) / brake, qmin, qmax))
-        if o.stoppable and self.smooth:  # the rate a ramp of the acceleration to zero ends at
-            families.append(Family("rate", settled_rate(qd_next, a_next, ca.DM(lim.jerk), eps=STOP_EPS),
-                                   -lim.velocity, lim.velocity))
+        if o.stoppable and self.smooth:  # the rate a ramp of the acceleration to zero ends at; on-line one
+            J, V = ca.DM(lim.jerk), lim.velocity  # row a joint (the QP's Hessian has no limit curvature)
+            families.append(Family("rate", settled_rate(qd_next, a_next, J, eps=STOP_EPS), -V, V) if self.parametric
+                            else Family("rate", ca.vertcat(*settled_rates(qd_next, a_next, J)), -np.r_[np.inf * V, V], np.r_[V, np.inf * V]))
         for name, rows in (("effort", efforts), ("power", powers)):
             expression = ca.vertcat(*rows)
             families.append(Family(name, expression, -np.ones(expression.numel()), np.ones(expression.numel())))

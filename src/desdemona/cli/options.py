@@ -311,7 +311,7 @@ def _add_start_options(parser: argparse.ArgumentParser, starts: int) -> None:
     parser.add_argument("--window", type=float, default=None, metavar="SECONDS",
                         help="solve in overlapping windows this long, each starting from the state the one "
                              "before reached, the whole re-checked; memory is bounded by the window. 0: the "
-                             "whole path at once (default: windows of 60 s for paths over 150 s, over 60 s on "
+                             "whole path at once (default: windows of 30 s for paths over 150 s, over 60 s on "
                              "yaw-track-cabin, full and dfs with --method auto)")
 
 
