@@ -554,10 +554,9 @@ class Formulation:
             else:
                 brake = ca.DM(2.0 * o.braking * lim.acceleration[bounded])
                 families.append(Family("stopping", q_end + qd_end * ca.sqrt(qd_end**2 + 1e-8) / brake, qmin, qmax))
-        if o.stoppable and self.smooth:  # the rate a ramp of the acceleration to zero ends at; on-line one
-            J, V = ca.DM(lim.jerk), lim.velocity  # row a joint (the QP's Hessian has no limit curvature)
-            families.append(Family("rate", settled_rate(qd_next, a_next, J, eps=STOP_EPS), -V, V) if self.parametric
-                            else Family("rate", ca.vertcat(*settled_rates(qd_next, a_next, J)), -np.r_[np.inf * V, V], np.r_[V, np.inf * V]))
+        if o.stoppable and self.smooth:  # on-line one row a joint: the QP's Hessian has no limit curvature
+            J, V = ca.DM(lim.jerk), lim.velocity
+            families.append(Family("rate", settled_rate(qd_next, a_next, J, eps=STOP_EPS), -V, V) if self.parametric else Family("rate", ca.vertcat(*settled_rates(qd_next, a_next, J)), -np.r_[np.inf * V, V], np.r_[V, np.inf * V]))
         for name, rows in (("effort", efforts), ("power", powers)):
             expression = ca.vertcat(*rows)
             families.append(Family(name, expression, -np.ones(expression.numel()), np.ones(expression.numel())))
