@@ -258,11 +258,11 @@ def spin_following(problem: CueingProblem, direction: float, floor: float = SPIN
 
 
 def _guesses_from_start(problem: CueingProblem, rate: float) -> list[tuple[str, np.ndarray, np.ndarray]]:
-    """Guesses for a fixed start (at rest, or given): the yaw spun up either way to ``rate`` times its
-    rate limit (:func:`spin_share`), and, where there is a track and the start's position is free,
-    with the track out on the side where the centripetal specific force points along the mean demanded
-    f_y: half its travel out, or at its end where the spin is faster than half (the radius
-    :func:`spin_share` takes)."""
+    """Guesses for a fixed start (at rest, or given): the yaw turning either way at the rate the held
+    force asks for node by node (:func:`spin_following`), and, where there is a track and the start's
+    position is free, with the track out on the side where the centripetal specific force points along
+    the mean demanded f_y: half its travel out, or at its end where the median held force asks for more
+    than half the yaw's rate limit (``rate``, :func:`spin_share`; the radius it takes)."""
     model, guesses = problem.model, []
     q0, qd0 = _start(problem)
     a0 = start_acceleration(problem.options.initial_state, model.n)

@@ -322,7 +322,8 @@ def settled_rates(qd, a, J, eps: float = STOP_EPS):
     ``lowest >= -V`` keep the same states as ``|settled_rate| <= V``: where the acceleration falls,
     the rate only falls. ``settled_rate``'s own a |a| is concave where a < 0: with it active (the
     arm held at its rate limit for a sustained force) the Lagrangian took its negative curvature
-    ("The rate limit's curvature" in docs/benchmarks.md)."""
+    ("Where the sortie's steps are cut, and the rate rows' curvature" in
+    docs/benchmarks.md)."""
     def plus(x):
         return 0.5 * (x + (x * x + eps) ** 0.5)
     return qd + plus(a) ** 2 / (2.0 * J), qd - plus(-a) ** 2 / (2.0 * J)

@@ -37,8 +37,7 @@ perception threshold) never trades a felt cue for effort, but removes the flat d
 cost (joints that do not change S in the weighted channels), which makes the Hessian regular and the
 optimum unique. With jerk limits the jerk has a weight of its own against its limit
 (``ProblemOptions.jerk_weight``), so that a plan does not swing its accelerations where the cue gains
-little from it. A session, off-line or on-line, adds a smooth wall before the position limits
-(``ProblemOptions.wall``), which keeps a plan from grazing them.
+little from it. A session adds a smooth wall before the position limits (``ProblemOptions.wall``).
 """
 
 from __future__ import annotations
@@ -556,7 +555,8 @@ class Formulation:
                 families.append(Family("stopping", q_end + qd_end * ca.sqrt(qd_end**2 + 1e-8) / brake, qmin, qmax))
         if o.stoppable and self.smooth:  # on-line one row a joint: the QP's Hessian has no limit curvature
             J, V = ca.DM(lim.jerk), lim.velocity
-            families.append(Family("rate", settled_rate(qd_next, a_next, J, eps=STOP_EPS), -V, V) if self.parametric else Family("rate", ca.vertcat(*settled_rates(qd_next, a_next, J)), -np.r_[np.inf * V, V], np.r_[V, np.inf * V]))
+            families.append(Family("rate", settled_rate(qd_next, a_next, J, eps=STOP_EPS), -V, V) if self.parametric else
+                            Family("rate", ca.vertcat(*settled_rates(qd_next, a_next, J)), np.r_[-np.inf * V, -V], np.r_[V, np.inf * V]))
         for name, rows in (("effort", efforts), ("power", powers)):
             expression = ca.vertcat(*rows)
             families.append(Family(name, expression, -np.ones(expression.numel()), np.ones(expression.numel())))

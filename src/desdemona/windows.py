@@ -168,17 +168,19 @@ def optimize_windowed(path: DesiredPath, model: Model, options: OptimizeOptions,
 
 
 def _continued(sol: Solution, k: int):
-    """The next window's first guess: this window's accelerations after node k, then every joint with a
-    travel brought to rest from the state this window ends at (:func:`~desdemona.offline.settled`), the
-    others' accelerations held at zero."""
+    """The next window's first guess: this window's accelerations after node k, then the yaw following
+    the held force from the rate this window ends at (:func:`~desdemona.offline.spin_following`, without
+    its floor: the arm may slow down where the force asks for no turn), every joint with a travel
+    brought to rest from the state this window ends at (:func:`~desdemona.offline.settled`), the other
+    joints' accelerations held at zero."""
     n = sol.u.shape[1]
     rest = sol.accelerations[k:]
     end_rate, end_acceleration = sol.x[-1, n:2 * n], sol.x[-1, 2 * n:3 * n] if sol.smooth else np.zeros(n)
 
     def guess(problem):
         done = min(len(rest), problem.N)
-        rate = sol.x[-1, n]
-        u = spin_following(problem, 1.0 if rate >= 0 else -1.0, floor=0.0, start=done, rate0=rate)
+        yaw = end_rate[0]
+        u = spin_following(problem, 1.0 if yaw >= 0 else -1.0, floor=0.0, start=done, rate0=yaw)
         u = settled(problem, end_rate, end_acceleration, u, done)
         u[:done] = rest[:done]
         return [("the window before, continued",
