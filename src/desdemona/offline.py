@@ -205,8 +205,9 @@ def _spin_up(problem: CueingProblem, direction: float, rate: float = SPIN_SHARE,
 
 
 def spin_share(problem: CueingProblem, floor: float = SPIN_SHARE) -> float:
-    """The share of the yaw's rate limit that a spun-up random guess turns at: the rate whose
-    centripetal force at the cabin's largest radius gives the median of the desired modulus held
+    """The share of the yaw's rate limit that a spun-up random guess turns at (and by which the smart
+    guesses from a fixed start put the track half out or at its end): the rate whose centripetal force
+    at the cabin's largest radius gives the median of the desired modulus held
     (:func:`desdemona.sizing.held_modulus`), within [``floor``, 1].
 
     A guess that turns at another rate than the path's sustained force asks has to be brought
