@@ -47,8 +47,9 @@ OFFLINE_STARTS = ("rest", "free", "given")
 FATROP_UP_TO = 1200
 ONLINE_STARTS = ("rest", "home", "steady", "given")
 #: An on-line session's felt-rotation band [perception thresholds] (:attr:`MPCOptions.rotation_band`)
-#: with a perception model ("Felt rotation band").
-ROTATION_BAND = 1.0
+#: with a perception model ("Felt rotation band"), and on a configuration whose cabin follows the force
+#: (``dfs``), whose arm must spin up to make any sustained force (:func:`default_rotation_band`).
+ROTATION_BAND, ALIGNED_ROTATION_BAND = 1.0, 5.0
 #: An on-line session's felt-rotation ceiling [perception thresholds] (:attr:`MPCOptions.rotation_ceiling`)
 #: with a perception model ("Felt rotation ceiling").
 ROTATION_CEILING = 20.0
@@ -201,6 +202,18 @@ def thesis(path: DesiredPath, model: Model, choices: Choices = Choices()) -> Ses
     return Session(path, model, problem, size)
 
 
+def default_rotation_band(config) -> float:
+    """The felt-rotation band of an on-line session with a perception model [perception thresholds]:
+    :data:`ROTATION_BAND`, and :data:`ALIGNED_ROTATION_BAND` on a configuration whose cabin follows the
+    force (``dfs``). There the arm must spin up to make any force above g, and the canals feel every
+    spin-up's onset: priced ten times beyond one threshold, the plan spun up late, seconds behind a
+    held modulus (the C172 take-off's correlation 0.46 against the classical loop's 0.87). With five
+    thresholds the felt force falls and the correlation rises on the corpus' `dfs` rows, the peak felt
+    rotation stays under the loop's ("Canals in the on-line cost", "Felt rotation band", "A wider band
+    on `dfs`" in docs/benchmarks.md)."""
+    return ALIGNED_ROTATION_BAND if config.aligned else ROTATION_BAND
+
+
 def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, horizon: float | None = None,
            reach: float | None = None, step: float = 0.02, predictor: str = "perfect",
            reference: DesiredPath | None = None, forecast=None, perception="auto", rotation_band="auto",
@@ -217,7 +230,7 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     :func:`~desdemona.perception.canals_model` wherever the cost is on S (all but ``dfs-yaw``, whose
     cost is the modulus alone); rotation_band :
     :attr:`MPCOptions.rotation_band` [thresholds], "auto": :data:`ROTATION_BAND` with a perception
-    model ("Canals in the on-line cost", "Felt rotation band"); rotation_ceiling : the same of
+    model (:func:`default_rotation_band`); rotation_ceiling : the same of
     :attr:`MPCOptions.rotation_ceiling`, "auto": :data:`ROTATION_CEILING` with a perception model ("Felt
     rotation ceiling"); ``timing``: the other
     :class:`MPCOptions` fields (replan, delay, deadline, method, tail_step).
@@ -230,7 +243,7 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     if model.config.modulus_cost and perception is not None:
         raise ChoiceError("--perception applies to the full path S, not to the dfs modulus")
     if rotation_band == "auto":
-        rotation_band = None if perception is None else ROTATION_BAND
+        rotation_band = None if perception is None else default_rotation_band(model.config)
     if rotation_ceiling == "auto":
         rotation_ceiling = None if perception is None else ROTATION_CEILING
     for option, value in (("band", rotation_band), ("ceiling", rotation_ceiling)):

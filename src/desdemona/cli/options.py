@@ -149,7 +149,8 @@ def build_parser() -> argparse.ArgumentParser:
     online.add_argument("--rotation-band", default=None, metavar="THRESHOLDS", dest="rotation_band",
                         help="with a perception model: a felt rotation beyond this many perception "
                              "thresholds weighs ten times its weight, so the plan uses rotation the "
-                             "occupant hardly feels; none: no band (default: 1)")
+                             "occupant hardly feels; none: no band (default: 1; 5 on dfs, whose arm "
+                             "must spin up for any force above g)")
     online.add_argument("--rotation-ceiling", default=None, metavar="THRESHOLDS", dest="rotation_ceiling",
                         help="with a perception model: the felt rotation's error beyond this many perception "
                              "thresholds weighs 110 times its weight (100 on top of the band's 10), a soft "
