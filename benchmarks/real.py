@@ -38,6 +38,9 @@ what the occupant feels, read from the result's ``summary.json`` ("quality"):
   closes: (hold - forecast) / (hold - perfect) of the felt force RMS ("-" where the gap is under
   :data:`GAP` of hold's, or a row is missing).
 
+Below the table, the on-line rows worse than the classical loop on any of those measures, or reversing a
+joint's acceleration more than once a second (point 1 of the on-line issue, :func:`against_loop`).
+
 The machine's load average is recorded before and after the run, and so is its own spread of time
 (:func:`jitter`): a fixed piece of work timed again and again, whose p99 over its median is what the
 machine adds to any p99 per cycle, whatever the code.
@@ -59,7 +62,7 @@ import corpus  # benchmarks/corpus.py: the script's own folder is on the path
 import tables
 import numpy as np
 
-from desdemona import batch, profiles
+from desdemona import batch, perception, profiles
 
 HERE = Path(__file__).resolve().parent
 CORPUS = HERE / "corpus"
@@ -155,6 +158,42 @@ def felt_figures(quality: dict | None, channel: str) -> dict:
             "direction_made": quality["felt_direction"].get("made_peak_deg"),
             "rotation_peak": max((r for r in rotation if r is not None), default=None),
             "reversals": max(reversals, default=None)}
+
+
+def shape_thresholds(path: profiles.DesiredPath, channel: str) -> float:
+    """How far the desired value of ``channel`` ranges over the path, in perception thresholds of that
+    force channel: under one, no shape of it can be felt, and its correlation says little."""
+    values = path.modulus if path.S_d is None else path.S_d[:, 3 + FORCE.index(channel)]
+    return float(np.ptp(values) / perception.THRESHOLDS[3 + FORCE.index(channel)])
+
+
+def against_loop(rows: list[dict]) -> str:
+    """Point 1 of the on-line issue, row by row: where an on-line row is worse than the classical loop
+    of the same run (felt force RMS or peak felt rotation above it, correlation below it, peak felt
+    direction above the larger of 30 deg and the loop's) or reverses a joint's acceleration more than
+    once a second. A correlation marked * is of a desired channel that ranges over less than one
+    perception threshold (:func:`shape_thresholds`)."""
+    judged = [r for r in rows if r["mode"] != "offline" and r.get("classical_force_rms") is not None]
+    if not judged:
+        return ""
+    loop = lambda key: lambda r: r.get("classical_" + key)  # noqa: E731
+    tests = (("felt force RMS above the loop's", "force_rms", ".3f", loop("force_rms"), 1),
+             ("peak felt rotation above the loop's", "rotation_peak", ".1f", loop("rotation_peak"), 1),
+             ("correlation below the loop's", "correlation", ".2f", loop("correlation"), -1),
+             ("peak felt direction above max(30 deg, the loop's)", "direction_peak", ".1f",
+              lambda r: max(30.0, r["classical_direction_peak"]), 1),
+             ("more than one reversal a second", "reversals", ".2f", lambda r: 1.0, 1))
+    lines, failing = [], set()
+    for name, key, fmt, bound, sign in tests:
+        hits = [r for r in judged if None not in (r.get(key), bound(r)) and sign * (r[key] - bound(r)) > 0]
+        failing |= {id(r) for r in hits}
+        cells = [f"{r['case']} on {r['config']} ({r['mode']}) {format(r[key], fmt)} against {format(bound(r), fmt)}"
+                 f"{'*' if key == 'correlation' and r.get('shape', 1.0) < 1.0 else ''}" for r in hits]
+        lines.append(f"- {name}: {len(hits)} row{'s' * (len(hits) != 1)}{': ' if hits else ''}{'; '.join(cells)}")
+    if any(r.get("shape", 1.0) < 1.0 for r in judged):
+        lines.append("- *: the desired channel ranges over less than one perception threshold")
+    head = f"Against the classical loop, {len(judged) - len(failing)} of {len(judged)} on-line rows worse on no measure:"
+    return "\n".join([head, "", *lines])
 
 
 def read_result(job: dict, channel: str) -> dict:
@@ -300,6 +339,9 @@ def main(argv=None) -> int:
     order = {(c["name"], config, mode): k for k, (c, config, mode) in enumerate(jobs)}
     rows = sorted((read_result(j, dominant_force(paths[(j["case"], j["form"])])) for j in done),
                   key=lambda r: order[(r["case"], r["config"], r["mode"])])
+    for r in rows:
+        if "channel" in r:
+            r["shape"] = shape_thresholds(paths[(r["case"], r["form"])], r["channel"])
     online = {(r["case"], r["config"]): r for r in rows if r["mode"] != "offline" and "classical_force_rms" in r}
     for r in rows:  # the off-line rows beside the same classical loop
         if r["mode"] == "offline" and (r["case"], r["config"]) in online:
@@ -312,6 +354,9 @@ def main(argv=None) -> int:
         writer.writerows(rows)
     load_after = os.getloadavg()
     text = table(rows)
+    verdict = against_loop(rows)
+    if verdict:
+        text += "\n\n" + verdict
     loads = [r["load"] for r in rows if "load" in r]
     during = f"; 1-minute load average at the jobs' ends {min(loads):.1f}-{max(loads):.1f}" if loads else ""
     dates = sorted({r.get("date", "") for r in rows} - {""})
