@@ -229,8 +229,8 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     minimises the perceived difference, as :func:`offline` takes it, None for none, "auto":
     :func:`~desdemona.perception.canals_model` wherever the cost is on S (all but ``dfs-yaw``, whose
     cost is the modulus alone); rotation_band :
-    :attr:`MPCOptions.rotation_band` [thresholds], "auto": :data:`ROTATION_BAND` with a perception
-    model (:func:`default_rotation_band`); rotation_ceiling : the same of
+    :attr:`MPCOptions.rotation_band` [thresholds], "auto": :func:`default_rotation_band` with a
+    perception model; rotation_ceiling : the same of
     :attr:`MPCOptions.rotation_ceiling`, "auto": :data:`ROTATION_CEILING` with a perception model ("Felt
     rotation ceiling"); ``timing``: the other
     :class:`MPCOptions` fields (replan, delay, deadline, method, tail_step).
