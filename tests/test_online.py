@@ -914,8 +914,9 @@ def test_the_felt_rotation_beyond_its_band_and_its_ceiling_is_priced_again(param
 
 def test_online_weighs_the_felt_rotation_by_default_where_the_path_is_s(tmp_path, capsys):
     """``online`` takes the canals model, a band of one threshold (five on dfs, whose arm spins up for any
-    force above g) and a ceiling of 20, but on dfs-yaw (the modulus alone); --perception none, --rotation-band none and --rotation-ceiling none switch them off; the felt figures are judged through
-    the thesis' model whatever the plan weighed."""
+    force above g) and a ceiling of 20, but on dfs-yaw (the modulus alone); --perception none,
+    --rotation-band none and --rotation-ceiling none switch them off; the felt figures are judged
+    through the thesis' model whatever the plan weighed."""
     from desdemona import session
     from desdemona.cli import main
 
@@ -985,7 +986,8 @@ def test_on_dfs_the_gimbals_do_not_spin_against_each_other_at_their_lock():
     from desdemona import session
 
     model = Model(config="dfs")
-    cued = session.online(profiles.load("dfs-catapult"), model, deadline=float("inf"), rotation_band=session.ROTATION_BAND)
+    cued = session.online(profiles.load("dfs-catapult"), model, deadline=float("inf"),
+                          rotation_band=session.ROTATION_BAND)
     assert cued.options.mpc.rotation_ceiling is not None
     peaks, rms = [], []
     for weight, ceiling in ((None, None), (0.0, None), (None, cued.options.mpc.rotation_ceiling)):
