@@ -163,8 +163,9 @@ def felt_figures(quality: dict | None, channel: str) -> dict:
 def shape_thresholds(path: profiles.DesiredPath, channel: str) -> float:
     """How far the desired value of ``channel`` ranges over the path, in perception thresholds of that
     force channel: under one, no shape of it can be felt, and its correlation says little."""
-    values = path.modulus if path.S_d is None else path.S_d[:, 3 + FORCE.index(channel)]
-    return float(np.ptp(values) / perception.THRESHOLDS[3 + FORCE.index(channel)])
+    column = 3 + FORCE.index(channel)  # in S
+    values = path.modulus if path.S_d is None else path.S_d[:, column]
+    return float(np.ptp(values) / perception.THRESHOLDS[column])
 
 
 def against_loop(rows: list[dict]) -> str:
