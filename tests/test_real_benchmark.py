@@ -18,27 +18,36 @@ def load_real(monkeypatch):
 
 def row(case, **figures):
     base = {"case": case, "config": "dfs", "mode": "hold", "force_rms": 1.0, "rotation_peak": 10.0,
-            "correlation": 0.9, "direction_peak": 5.0, "reversals": 0.5, "classical_force_rms": 2.0,
-            "classical_rotation_peak": 20.0, "classical_correlation": 0.5, "classical_direction_peak": 20.0}
+            "correlation": 0.9, "direction_peak": 5.0, "direction_made": 5.0, "reversals": 0.5,
+            "classical_force_rms": 2.0, "classical_rotation_peak": 20.0, "classical_correlation": 0.5,
+            "classical_direction_peak": 20.0, "classical_direction_made": 20.0}
     return {**base, **figures}
 
 
 def test_real_lists_the_rows_worse_than_the_loop_measure_by_measure(monkeypatch):
     real = load_real(monkeypatch)
     rows = [row("better"), row("forceful", force_rms=2.5), row("late", correlation=0.4, shape=0.5),
-            row("turned", direction_peak=31.0, rotation_peak=21.0), row("upright", direction_peak=29.0),
-            row("shaky", reversals=1.2), {**row("off-line"), "mode": "offline", "force_rms": 9.0}]
+            row("turned", direction_peak=31.0, direction_made=31.0, rotation_peak=21.0),
+            row("upright", direction_peak=29.0, direction_made=29.0),
+            row("push-over", direction_peak=179.0, direction_made=3.0, classical_direction_peak=170.0),
+            row("shaky", reversals=1.2), {**row("off-line"), "mode": "offline", "force_rms": 9.0},
+            # the future known: as forceful (the cost's trade, marked +), not as late (the prediction's)
+            {**row("forceful", force_rms=2.2), "mode": "perfect"}, {**row("late"), "mode": "perfect"}]
     text = real.against_loop(rows)
-    assert text.startswith("Against the classical loop, 2 of 6 on-line rows worse on no measure")
+    assert text.startswith("Against the classical loop, 4 of 9 on-line rows worse on no measure")
     lines = dict(line[2:].split(": ", 1) for line in text.splitlines()[2:])
-    assert lines["felt force RMS above the loop's"] == "1 row: forceful on dfs (hold) 2.500 against 2.000"
+    assert lines["felt force RMS above the loop's"] == ("2 rows: forceful on dfs (hold) 2.500 against 2.000+; "
+                                                        "forceful on dfs (perfect) 2.200 against 2.000")
+    assert "cost's own trade" in lines["+"]
     assert lines["peak felt rotation above the loop's"].startswith("1 row: turned")
     assert lines["correlation below the loop's"] == "1 row: late on dfs (hold) 0.40 against 0.50*"
-    # 30 deg or the loop's peak, the larger: 29 deg against a loop's 20 is not worse
-    assert lines["peak felt direction above max(30 deg, the loop's)"] == "1 row: turned on dfs (hold) 31.0 against 30.0"
+    # 30 deg or the loop's, the larger: 29 deg against a loop's 20 is not worse; nor is a push-over's
+    # 179 deg against the loop's 170, where a still cabin is as far off (the machine made 3 deg of it)
+    assert lines["felt direction made above max(30 deg, the loop's)"] == "1 row: turned on dfs (hold) 31.0 against 30.0"
     assert lines["more than one reversal a second"] == "1 row: shaky on dfs (hold) 1.20 against 1.00"
     assert "less than one perception threshold" in lines["*"]
-    assert real.against_loop([rows[-1]]) == ""  # off-line rows are not judged against the loop
+    assert real.against_loop([rows[7]]) == ""  # off-line rows are not judged against the loop
+    assert "+" not in real.against_loop(rows[:8])  # no perfect row, no mark
 
 
 def test_the_shape_of_a_desired_channel_is_counted_in_perception_thresholds(monkeypatch):
