@@ -36,7 +36,7 @@ class _Machine:
         self.address = self.sock.getsockname()
         self.setpoints = []
         self.seconds = seconds
-        self.end = time.monotonic() + seconds
+        self.from_now()
         self.thread = threading.Thread(target=self._run, daemon=True)
         self.thread.start()
 
