@@ -16,6 +16,9 @@ import desdemona
 from desdemona import cli, guard, problem, profiles, report
 from desdemona.cli import commands, main
 
+# These tests time what they watch (a real-time loop, a prompt stop): the README runs them alone.
+pytestmark = pytest.mark.realtime
+
 SHORT = ["cosine", "--config", "yaw-track", "--h-u", "0.1", "--starts", "1"]
 
 

@@ -68,3 +68,12 @@ def test_modules_and_functions_stay_short():
                     long.append(f"{path.relative_to(PACKAGE)}:{node.lineno} {node.name}: "
                                 f"{node.end_lineno - node.lineno + 1} lines")
     assert not long, "\n".join(long)
+
+
+def test_ci_runs_the_readme_s_test_command():
+    """``.ci/run`` runs the very command the README gives for the tests, so that what CI passes is
+    what a newcomer runs."""
+    root = Path(__file__).resolve().parents[1]
+    command = (root / "README.md").read_text().split("Install the test extras")[1].split("```")[1].strip()
+    assert command.startswith("pip install '.[test]' && pytest")
+    assert command in (root / ".ci" / "run").read_text().splitlines()

@@ -17,6 +17,9 @@ import pytest
 from desdemona import Model, profiles, session
 from desdemona.service import machine, protocol, serve
 
+# These tests time what they watch (a real-time loop, a prompt stop): the README runs them alone.
+pytestmark = pytest.mark.realtime
+
 LOOPBACK = "127.0.0.1"
 
 

@@ -17,6 +17,9 @@ from desdemona import profiles
 from desdemona.profiles.path import G, ProfileError
 from desdemona.service import hosts, protocol
 
+# These tests time what they watch (a real-time loop, a prompt stop): the README runs them alone.
+pytestmark = pytest.mark.realtime
+
 
 class Receiver:
     """A UDP socket on 127.0.0.1 that a thread reads while a host sends: (wall time, message) pairs."""

@@ -17,6 +17,9 @@ from desdemona.params import JOINT_NAMES
 from desdemona.plan import State
 from desdemona.service import machine, protocol
 
+# These tests time what they watch (a real-time loop, a prompt stop): the README runs them alone.
+pytestmark = pytest.mark.realtime
+
 STEP = 0.01
 IDLE = 0.3
 LIMIT = 5.0  # [s] no run in these tests lasts longer

@@ -18,6 +18,9 @@ import desdemona
 from desdemona import figures, online, profiles, report, sizing
 from desdemona.cli import main
 
+# These tests time what they watch (a real-time loop, a prompt stop): the README runs them alone.
+pytestmark = pytest.mark.realtime
+
 QUICK = ["cosine", "--config", "yaw-track", "--h-u", "0.1", "--starts", "1"]
 BATCH = ["--configs", "yaw-track", "--h-u", "0.5", "--starts", "1", "--processes", "1"]
 ENV = dict(os.environ, PYTHONPATH=str(Path(desdemona.__file__).resolve().parent.parent))
