@@ -176,7 +176,10 @@ def against_loop(rows: list[dict]) -> str:
     acceleration more than once a second. A correlation marked * is of a desired channel that ranges
     over less than one perception threshold (:func:`shape_thresholds`). A row marked + is one that the
     same controller with the future known (the run's ``perfect`` row of the case and configuration)
-    fails as well: the cost's own trade, which no prediction lifts, rather than the prediction's.
+    fails as well: the cost's own trade, which no prediction lifts, rather than the prediction's. A
+    row marked o is one whose off-line optimum (the run's ``offline`` row: the whole future, solved to
+    convergence) is worse than this row's loop on the same measure: there point 1 asks for more than
+    the optimum of the cost gives.
 
     The felt direction is judged by the part the machine made (``made``: beyond a still level cabin's,
     :func:`desdemona.metrics.direction_made`), as the issue defines it: the machine "never turns the
@@ -195,15 +198,19 @@ def against_loop(rows: list[dict]) -> str:
               lambda r: max(30.0, r.get("classical_direction_made") or 0.0), 1),
              ("more than one reversal a second", "reversals", ".2f", lambda r: 1.0, 1))
     perfect = {(r["case"], r["config"]): r for r in judged if r["mode"] == "perfect"}
-    lines, failing, traded = [], set(), False
+    offline = {(r["case"], r["config"]): r for r in rows if r["mode"] == "offline"}
+    lines, failing, traded, beyond = [], set(), False, False
     for name, key, fmt, bound, sign in tests:
-        worse = lambda r: None not in (r.get(key), bound(r)) and sign * (r[key] - bound(r)) > 0  # noqa: E731
+        worse = lambda r, by=None: (None not in (r.get(key), bound(by or r))  # noqa: E731
+                                    and sign * (r[key] - bound(by or r)) > 0)
         hits = [r for r in judged if worse(r)]
         failing |= {id(r) for r in hits}
         marks = {id(r): ("*" if key == "correlation" and r.get("shape", 1.0) < 1.0 else "")
                  + ("+" if r["mode"] != "perfect" and worse(perfect.get((r["case"], r["config"]), {})) else "")
+                 + ("o" if worse(offline.get((r["case"], r["config"]), {}), by=r) else "")  # against r's loop
                  for r in hits}
         traded |= any("+" in mark for mark in marks.values())
+        beyond |= any("o" in mark for mark in marks.values())
         cells = [f"{r['case']} on {r['config']} ({r['mode']}) {format(r[key], fmt)} against {format(bound(r), fmt)}"
                  f"{marks[id(r)]}" for r in hits]
         lines.append(f"- {name}: {len(hits)} row{'s' * (len(hits) != 1)}{': ' if hits else ''}{'; '.join(cells)}")
@@ -211,6 +218,8 @@ def against_loop(rows: list[dict]) -> str:
         lines.append("- *: the desired channel ranges over less than one perception threshold")
     if traded:
         lines.append("- +: so is the same controller with the future known (perfect): the cost's own trade")
+    if beyond:
+        lines.append("- o: so is the off-line optimum, against the same loop: more than the cost's optimum gives")
     head = f"Against the classical loop, {len(judged) - len(failing)} of {len(judged)} on-line rows worse on no measure:"
     return "\n".join([head, "", *lines])
 

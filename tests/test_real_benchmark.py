@@ -32,13 +32,15 @@ def test_real_lists_the_rows_worse_than_the_loop_measure_by_measure(monkeypatch)
             row("push-over", direction_peak=179.0, direction_made=3.0, classical_direction_peak=170.0),
             row("shaky", reversals=1.2), {**row("off-line"), "mode": "offline", "force_rms": 9.0},
             # the future known: as forceful (the cost's trade, marked +), not as late (the prediction's)
-            {**row("forceful", force_rms=2.2), "mode": "perfect"}, {**row("late"), "mode": "perfect"}]
+            {**row("forceful", force_rms=2.2), "mode": "perfect"}, {**row("late"), "mode": "perfect"},
+            # the whole future solved off-line: as forceful against the hold row's loop (marked o)
+            {**row("forceful", force_rms=2.1, classical_force_rms=None), "mode": "offline"}]
     text = real.against_loop(rows)
     assert text.startswith("Against the classical loop, 4 of 9 on-line rows worse on no measure")
     lines = dict(line[2:].split(": ", 1) for line in text.splitlines()[2:])
-    assert lines["felt force RMS above the loop's"] == ("2 rows: forceful on dfs (hold) 2.500 against 2.000+; "
-                                                        "forceful on dfs (perfect) 2.200 against 2.000")
-    assert "cost's own trade" in lines["+"]
+    assert lines["felt force RMS above the loop's"] == ("2 rows: forceful on dfs (hold) 2.500 against 2.000+o; "
+                                                        "forceful on dfs (perfect) 2.200 against 2.000o")
+    assert "cost's own trade" in lines["+"] and "off-line optimum" in lines["o"]
     assert lines["peak felt rotation above the loop's"].startswith("1 row: turned")
     assert lines["correlation below the loop's"] == "1 row: late on dfs (hold) 0.40 against 0.50*"
     # 30 deg or the loop's, the larger: 29 deg against a loop's 20 is not worse; nor is a push-over's
@@ -48,6 +50,7 @@ def test_real_lists_the_rows_worse_than_the_loop_measure_by_measure(monkeypatch)
     assert "less than one perception threshold" in lines["*"]
     assert real.against_loop([rows[7]]) == ""  # off-line rows are not judged against the loop
     assert "+" not in real.against_loop(rows[:8])  # no perfect row, no mark
+    assert "2.000+; " in real.against_loop(rows[:10])  # no off-line twin, no o
 
 
 def test_the_shape_of_a_desired_channel_is_counted_in_perception_thresholds(monkeypatch):
