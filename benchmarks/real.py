@@ -40,7 +40,8 @@ what the occupant feels, read from the result's ``summary.json`` ("quality"):
 
 Below the table, the on-line rows worse than the classical loop on any of those measures (the felt
 direction by the part the machine made), or reversing a joint's acceleration more than once a second,
-marked + where the run's ``perfect`` row is worse too (point 1 of the on-line issue, :func:`against_loop`).
+marked + where the run's ``perfect`` row is worse too and o where its ``offline`` row is (point 1 of the
+on-line issue, :func:`against_loop`).
 
 The machine's load average is recorded before and after the run, and so is its own spread of time
 (:func:`jitter`): a fixed piece of work timed again and again, whose p99 over its median is what the
@@ -199,7 +200,7 @@ def against_loop(rows: list[dict]) -> str:
              ("more than one reversal a second", "reversals", ".2f", lambda r: 1.0, 1))
     perfect = {(r["case"], r["config"]): r for r in judged if r["mode"] == "perfect"}
     offline = {(r["case"], r["config"]): r for r in rows if r["mode"] == "offline"}
-    lines, failing, traded, beyond = [], set(), False, False
+    lines, failing, used = [], set(), set()  # used: the marks given to any row
     for name, key, fmt, bound, sign in tests:
         worse = lambda r, by=None: (None not in (r.get(key), bound(by or r))  # noqa: E731
                                     and sign * (r[key] - bound(by or r)) > 0)
@@ -209,17 +210,15 @@ def against_loop(rows: list[dict]) -> str:
                  + ("+" if r["mode"] != "perfect" and worse(perfect.get((r["case"], r["config"]), {})) else "")
                  + ("o" if worse(offline.get((r["case"], r["config"]), {}), by=r) else "")  # against r's loop
                  for r in hits}
-        traded |= any("+" in mark for mark in marks.values())
-        beyond |= any("o" in mark for mark in marks.values())
+        used.update(*marks.values())
         cells = [f"{r['case']} on {r['config']} ({r['mode']}) {format(r[key], fmt)} against {format(bound(r), fmt)}"
                  f"{marks[id(r)]}" for r in hits]
         lines.append(f"- {name}: {len(hits)} row{'s' * (len(hits) != 1)}{': ' if hits else ''}{'; '.join(cells)}")
     if any(r.get("shape", 1.0) < 1.0 for r in judged):
         lines.append("- *: the desired channel ranges over less than one perception threshold")
-    if traded:
-        lines.append("- +: so is the same controller with the future known (perfect): the cost's own trade")
-    if beyond:
-        lines.append("- o: so is the off-line optimum, against the same loop: more than the cost's optimum gives")
+    legend = {"+": "so is the same controller with the future known (perfect): the cost's own trade",
+              "o": "so is the off-line optimum, against the same loop: more than the cost's optimum gives"}
+    lines += [f"- {mark}: {text}" for mark, text in legend.items() if mark in used]
     head = f"Against the classical loop, {len(judged) - len(failing)} of {len(judged)} on-line rows worse on no measure:"
     return "\n".join([head, "", *lines])
 
