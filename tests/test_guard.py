@@ -16,9 +16,6 @@ import desdemona
 from desdemona import cli, guard, problem, profiles, report
 from desdemona.cli import commands, main
 
-# These tests time what they watch (a real-time loop, a prompt stop): the README runs them alone.
-pytestmark = pytest.mark.realtime
-
 SHORT = ["cosine", "--config", "yaw-track", "--h-u", "0.1", "--starts", "1"]
 
 
@@ -73,6 +70,7 @@ def test_result_folder_respects_the_umask_and_names_its_columns(tmp_path):
     assert (report.load(tmp_path / "run")[0].q == traj.q).all()
 
 
+@pytest.mark.realtime
 @pytest.mark.parametrize("method", ["ipopt", "fatrop"])
 def test_sigint_inside_the_solver_stops_the_run(tmp_path, method):
     """Acceptance: SIGINT 2 s into the car lap on full ends the process within 5 s, exit 130, nothing
@@ -99,6 +97,7 @@ def test_sigint_inside_the_solver_stops_the_run(tmp_path, method):
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.realtime
 def test_millisecond_time_column_is_refused_at_once(tmp_path, capsys):
     path = tmp_path / "ms.csv"
     path.write_text("t,wx,wy,wz,fx,fy,fz\n" + "".join(f"{500 * k},0,0,0,0,1,9.81\n" for k in range(61)))
@@ -192,6 +191,7 @@ def _guarded(tmp_path, body: str) -> subprocess.Popen:
     return proc
 
 
+@pytest.mark.realtime
 def test_sigint_inside_compiled_code_that_never_returns_ends_the_process_within_two_seconds(tmp_path):
     """One long call into compiled code (an eigen-decomposition of 10 s or more here) keeps Python's
     handler from running; the watchdog ends the process GRACE seconds after the signal."""
@@ -205,6 +205,7 @@ def test_sigint_inside_compiled_code_that_never_returns_ends_the_process_within_
     assert err.strip() == "desdemona: interrupted (SIGINT): stopped, no partial result written"
 
 
+@pytest.mark.realtime
 def test_the_watchdog_waits_for_a_block_that_holds_signals_back(tmp_path):
     """A signal inside guard.deferred() (renaming a result into place) is delivered when it ends, by the
     main thread, however long the block takes: the watchdog does not cut it in two."""

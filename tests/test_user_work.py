@@ -18,9 +18,6 @@ import desdemona
 from desdemona import figures, online, profiles, report, sizing
 from desdemona.cli import main
 
-# These tests time what they watch (a real-time loop, a prompt stop): the README runs them alone.
-pytestmark = pytest.mark.realtime
-
 QUICK = ["cosine", "--config", "yaw-track", "--h-u", "0.1", "--starts", "1"]
 BATCH = ["--configs", "yaw-track", "--h-u", "0.5", "--starts", "1", "--processes", "1"]
 ENV = dict(os.environ, PYTHONPATH=str(Path(desdemona.__file__).resolve().parent.parent))
@@ -148,6 +145,7 @@ def test_batch_into_a_file_or_an_unwritable_folder_is_one_line(tmp_path, monkeyp
     assert list(locked.iterdir()) == []
 
 
+@pytest.mark.realtime
 def test_an_interrupted_batch_keeps_its_finished_jobs_and_says_so(tmp_path):
     out = tmp_path / "runs"
     proc = subprocess.Popen(_command("batch", "cosine", "car-lap", *BATCH[:-4], "--h-u", "0.05", "--starts", "1",
@@ -199,6 +197,7 @@ def test_compare_on_a_batch_folder_names_its_job_folders(batch_folder, capsys):
 
 # ---- rows 5, 6: runaway sizes ------------------------------------------------------------------------
 
+@pytest.mark.realtime
 def test_a_short_recording_in_milliseconds_is_refused_at_once(tmp_path, capsys):
     path = tmp_path / "ms.csv"  # 3 s at 100 Hz, its time in milliseconds
     path.write_text("t,wx,wy,wz,fx,fy,fz\n" + "".join(f"{10 * k},0,0,0,0,1,9.81\n" for k in range(301)))
@@ -215,6 +214,7 @@ def test_a_short_recording_in_milliseconds_is_refused_at_once(tmp_path, capsys):
     assert profiles.load(str(table)).duration == 6.0
 
 
+@pytest.mark.realtime
 def test_online_estimates_its_size_and_names_a_step_that_fits(tmp_path, monkeypatch, capsys):
     monkeypatch.setattr(sizing, "available_memory", lambda: 8e9)
 
@@ -232,6 +232,7 @@ def test_online_estimates_its_size_and_names_a_step_that_fits(tmp_path, monkeypa
 
 # ---- rows 8, 9: tracebacks -----------------------------------------------------------------------------
 
+@pytest.mark.realtime
 @pytest.mark.parametrize("delay", [0.2, 0.6])
 def test_ctrl_c_while_the_libraries_load_exits_130_quietly(tmp_path, delay):
     proc = subprocess.Popen(_command("optimize", *QUICK, "--out", str(tmp_path / "r")), env=ENV,
