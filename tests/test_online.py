@@ -524,7 +524,7 @@ def test_online_command_starts_at_rest_steady_or_a_given_state(tmp_path, capsys)
     short = tmp_path / "short.csv"
     path = profiles.dfs_catapult(duration=3.0)
     profiles.write_csv(short, path)
-    common = [str(short), "--config", "dfs", "--step", "0.05", "--horizon", "1"]
+    common = [str(short), "--config", "dfs", "--step", "0.05", "--horizon", "1", "--no-view"]
 
     def start(out):
         import csv
