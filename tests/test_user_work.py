@@ -337,19 +337,43 @@ def test_profiles_writes_a_builtin_path_to_csv(tmp_path, capsys):
     assert main(["profiles"]) == 0 and "catapult" in capsys.readouterr().out
 
 
-def test_a_stop_raised_while_a_class_is_created_is_still_a_stop(monkeypatch, capsys):
-    """A Ctrl-C that lands while a module defines a dataclass reaches the command as a RuntimeError
-    caused by the interrupt (Python wraps what a field's __set_name__ raises): it is reported as the
-    interrupt it is, exit 130 and one line, not a traceback."""
+@pytest.mark.parametrize("wrapper", [RuntimeError("Error calling __set_name__ on 'Field' instance"),
+                                     ImportError("initialization failed")])
+@pytest.mark.parametrize("interrupt", ["guard", "keyboard"])
+def test_a_stop_raised_while_a_class_is_created_is_still_a_stop(monkeypatch, capsys, wrapper, interrupt):
+    """A Ctrl-C that lands while a module defines a dataclass, or while an extension module
+    initialises, reaches the command as a RuntimeError or an ImportError caused by the interrupt
+    (Python wraps what a field's __set_name__ or the module's initialisation raises): it is reported
+    as the interrupt it is, exit 130 and one line, not a traceback."""
     from desdemona import guard
     from desdemona.cli import commands
 
     def loading(args):
         try:
-            raise guard.Interrupted(signal.SIGINT)
-        except guard.Interrupted as exc:
-            raise RuntimeError("Error calling __set_name__ on 'Field' instance") from exc
+            raise guard.Interrupted(signal.SIGINT) if interrupt == "guard" else KeyboardInterrupt
+        except (guard.Interrupted, KeyboardInterrupt) as exc:
+            raise wrapper from exc
 
     monkeypatch.setattr(commands, "run_model", loading)
     assert main(["model", "--config", "dfs"]) == 130
     assert "interrupted (SIGINT)" in capsys.readouterr().err
+
+
+def test_ctrl_c_inside_an_extension_module_s_initialisation_exits_130_quietly(tmp_path):
+    """SciPy's HiGHS module, cut short by a Ctrl-C while it initialises, raises an ImportError caused
+    by the interrupt: the command ends as for any Ctrl-C while the libraries load (exit 130, one
+    line). The interrupt is raised where that import happens, so that the test does not race it."""
+    script = ("import builtins, sys\n"
+              "real = builtins.__import__\n"
+              "def cut(name, *args, **kwargs):\n"
+              "    if name == 'scipy.signal':\n"
+              "        try:\n"
+              "            raise KeyboardInterrupt\n"
+              "        except KeyboardInterrupt as exc:\n"
+              "            raise ImportError('initialization failed') from exc\n"
+              "    return real(name, *args, **kwargs)\n"
+              "builtins.__import__ = cut\n"
+              "from desdemona.cli import main\n")
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 130, done.stderr
+    assert done.stderr == "desdemona: interrupted (SIGINT): stopped, nothing written\n"

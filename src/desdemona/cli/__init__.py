@@ -17,7 +17,11 @@ try:  # a Ctrl-C while the libraries load (a second or two) ends the command qui
     from desdemona.cli.exits import EXIT_NOT_CONVERGED, EXIT_UNSAFE, EXIT_USAGE, UserError
     from desdemona.cli.options import build_parser
     from desdemona.params import ParameterError
-except KeyboardInterrupt:
+except (KeyboardInterrupt, ImportError) as exc:
+    # an extension module whose initialisation a Ctrl-C cuts short (SciPy's HiGHS) reports it as an
+    # ImportError caused by the interrupt
+    if not isinstance(exc, KeyboardInterrupt) and not isinstance(exc.__cause__, KeyboardInterrupt):
+        raise
     print("desdemona: interrupted (SIGINT): stopped, nothing written", file=sys.stderr)
     raise SystemExit(128 + signal.SIGINT) from None
 
@@ -59,9 +63,10 @@ def main(argv: list[str] | None = None) -> int:
         end_bar = "\n" if sys.stderr.isatty() else ""  # a progress bar may be half drawn
         print(f"{end_bar}desdemona: {exc.message}", file=sys.stderr)
         return exc.code
-    except RuntimeError as exc:
+    except (RuntimeError, ImportError) as exc:
         # a stop that came while a module was being loaded: Python reports an exception raised inside
-        # a class's creation (a dataclass field's __set_name__) as a RuntimeError caused by it
+        # a class's creation (a dataclass field's __set_name__) as a RuntimeError caused by it, and
+        # one inside an extension module's initialisation as an ImportError caused by it
         stop = exc.__cause__
         if isinstance(stop, guard.Interrupted):
             print(f"desdemona: {stop.message}", file=sys.stderr)
