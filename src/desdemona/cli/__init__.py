@@ -12,15 +12,27 @@ import os
 import signal
 import sys
 
+
+def _interrupted(exc: BaseException | None) -> bool:
+    """Whether ``exc`` is a Ctrl-C or was raised by one: an extension module whose initialisation
+    it cuts short reports it as an ImportError caused by it (SciPy's HiGHS), a class being created
+    as a RuntimeError."""
+    seen = set()
+    while exc is not None and id(exc) not in seen:
+        if isinstance(exc, KeyboardInterrupt):
+            return True
+        seen.add(id(exc))
+        exc = exc.__cause__ or exc.__context__
+    return False
+
+
 try:  # a Ctrl-C while the libraries load (a second or two) ends the command quietly, as later
     from desdemona import allocator, guard, profiles, session, sizing
     from desdemona.cli.exits import EXIT_NOT_CONVERGED, EXIT_UNSAFE, EXIT_USAGE, UserError
     from desdemona.cli.options import build_parser
     from desdemona.params import ParameterError
-except (KeyboardInterrupt, ImportError) as exc:
-    # an extension module whose initialisation a Ctrl-C cuts short (SciPy's HiGHS) reports it as an
-    # ImportError caused by the interrupt
-    if not isinstance(exc, KeyboardInterrupt) and not isinstance(exc.__cause__, KeyboardInterrupt):
+except BaseException as exc:
+    if not _interrupted(exc):
         raise
     print("desdemona: interrupted (SIGINT): stopped, nothing written", file=sys.stderr)
     raise SystemExit(128 + signal.SIGINT) from None
