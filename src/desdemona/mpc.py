@@ -281,6 +281,8 @@ class MPC:
             jerk_weight=options.jerk_weight, rotation_band=options.rotation_band,
             rotation_ceiling=options.rotation_ceiling, null_weight=null_weight, wall=options.wall)
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
+        if self.problem.nz:  # the horizon's perception map is built now, not in the session's first cycle
+            self.problem.perceive(np.zeros((self.problem.N * self.problem.m, 6)))
         self.limits = model.limits
         self._limit_use = model.step_limit_use(options.step)
         # filter states of the felt and the desired path (with perception); the desired one step on
