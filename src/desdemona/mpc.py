@@ -283,10 +283,8 @@ class MPC:
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         if self.problem.nz:  # the horizon's perception map is built now, not in the session's first cycle
             self.problem.perceive(np.zeros((self.problem.N * self.problem.m, 6)))
-        self.limits = model.limits
-        self._limit_use = model.step_limit_use(options.step)
-        # filter states of the felt and the desired path (with perception); the desired one step on
-        self.z = self.z_d = self._z_d_next = None
+        self.limits, self._limit_use = model.limits, model.step_limit_use(options.step)
+        self.z = self.z_d = self._z_d_next = None  # filter states of the felt and the desired path, the desired one step on
         self._rti = RealTimeIteration(self.problem, options.qp_solver) if options.plan_method == "rti" else None
         self.smooth = self.problem.smooth
         self.plan: tuple[np.ndarray, np.ndarray] | None = None  # the last plan per step: accelerations, jerks
