@@ -13,17 +13,12 @@ import signal
 import sys
 
 
-def _interrupted(exc: BaseException | None) -> bool:
-    """Whether ``exc`` is a Ctrl-C or was raised by one: an extension module whose initialisation
-    it cuts short reports it as an ImportError caused by it (SciPy's HiGHS), a class being created
-    as a RuntimeError."""
-    seen = set()
-    while exc is not None and id(exc) not in seen:
-        if isinstance(exc, KeyboardInterrupt):
-            return True
-        seen.add(id(exc))
-        exc = exc.__cause__ or exc.__context__
-    return False
+def _stop_behind(exc: BaseException, kinds: tuple = (KeyboardInterrupt,)) -> BaseException | None:
+    """The stop (one of ``kinds``) that ``exc`` is or was caused by, None if neither. A stop that comes
+    while a module is being loaded reaches the command wrapped: Python reports one raised inside a
+    class's creation (a dataclass field's __set_name__) as a RuntimeError caused by it, and one inside
+    an extension module's initialisation (SciPy's HiGHS) as an ImportError caused by it."""
+    return next((e for e in (exc, exc.__cause__) if isinstance(e, kinds)), None)
 
 
 try:  # a Ctrl-C while the libraries load (a second or two) ends the command quietly, as later
@@ -31,8 +26,8 @@ try:  # a Ctrl-C while the libraries load (a second or two) ends the command qui
     from desdemona.cli.exits import EXIT_NOT_CONVERGED, EXIT_UNSAFE, EXIT_USAGE, UserError
     from desdemona.cli.options import build_parser
     from desdemona.params import ParameterError
-except BaseException as exc:
-    if not _interrupted(exc):
+except (KeyboardInterrupt, RuntimeError, ImportError) as exc:  # see _stop_behind
+    if _stop_behind(exc) is None:
         raise
     print("desdemona: interrupted (SIGINT): stopped, nothing written", file=sys.stderr)
     raise SystemExit(128 + signal.SIGINT) from None
@@ -75,11 +70,8 @@ def main(argv: list[str] | None = None) -> int:
         end_bar = "\n" if sys.stderr.isatty() else ""  # a progress bar may be half drawn
         print(f"{end_bar}desdemona: {exc.message}", file=sys.stderr)
         return exc.code
-    except (RuntimeError, ImportError) as exc:
-        # a stop that came while a module was being loaded: Python reports an exception raised inside
-        # a class's creation (a dataclass field's __set_name__) as a RuntimeError caused by it, and
-        # one inside an extension module's initialisation as an ImportError caused by it
-        stop = exc.__cause__
+    except (RuntimeError, ImportError) as exc:  # a stop that came while a module was being loaded
+        stop = _stop_behind(exc, (guard.Interrupted, KeyboardInterrupt))
         if isinstance(stop, guard.Interrupted):
             print(f"desdemona: {stop.message}", file=sys.stderr)
             return stop.code
