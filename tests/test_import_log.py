@@ -250,3 +250,72 @@ def test_one_g_reading_converts_with_standard_gravity(tmp_path):
     log.write_text("t,ax,ay,az,p,q,r\n" + "".join(f"{float(x)!r},0,0,-1,0,0,0\n" for x in t))
     path = from_log(log, LogFormat(accel_unit="g"))[0]
     np.testing.assert_allclose(path.S_d[:, 5], 9.80665, rtol=1e-12)
+
+
+def accelerometer_log(file, t, f, axes, scale=1.0):
+    """The force alone, as a phone or a ride's logger records it: time and three readings [g]."""
+    readings = f @ convert.axes_rotation(axes) * scale / STANDARD_GRAVITY
+    with open(file, "w") as out:
+        out.write(" ,time,x,y,z\n" + "".join(",".join(["", *(repr(float(v)) for v in (ti, *row))]) + "\n"
+                                            for ti, row in zip(t, readings)))
+    return file
+
+
+def test_an_accelerometer_alone_gives_the_modulus_in_any_axes(tmp_path):
+    """A log of readings without rates, its sensor in a pocket (no axis up): the modulus form, the same
+    whatever axes are declared, and the still check reads only |f|."""
+    t, _, f = motion()
+    log = accelerometer_log(tmp_path / "ride.txt", t, f, ("up", "left", "back"))  # lying on its side
+    paths = []
+    for k, axes in enumerate(("forward,right,down", "up,left,back")):
+        out = tmp_path / f"m{k}.csv"
+        assert main(["import", "log", str(log), "--time", "time", "--accel", "x,y,z", "--accel-unit", "g",
+                     "--rates", "none", "--axes", axes, "--modulus", "--out", str(out)]) == 0
+        paths.append(profiles.load(out))
+        assert "rates none" in out.read_text() and "convention check passed" in out.read_text()
+    np.testing.assert_allclose(paths[0].M_d, paths[1].M_d, rtol=1e-12)
+    k = np.searchsorted(t, paths[0].t)
+    np.testing.assert_allclose(paths[0].M_d, np.linalg.norm(f[k], axis=1), atol=1e-3 * G)
+
+
+def test_a_scale_off_sensor_reads_1_g_where_still_with_to_g(tmp_path, capsys):
+    t, _, f = motion()
+    log = accelerometer_log(tmp_path / "ride.txt", t, f, ("forward", "right", "down"), scale=0.94)
+    out = tmp_path / "m.csv"
+    argv = ["import", "log", str(log), "--time", "time", "--accel", "x,y,z", "--accel-unit", "g", "--rates", "none",
+            "--modulus", "--out", str(out)]
+    assert main(argv) == 0
+    np.testing.assert_allclose(profiles.load(out).M_d[:100], 0.94 * G, rtol=1e-6)
+    assert main(argv + ["--to-g", "--overwrite"]) == 0
+    path = profiles.load(out)
+    np.testing.assert_allclose(path.M_d[:100], G, rtol=1e-6)
+    k = np.searchsorted(t, path.t)
+    np.testing.assert_allclose(path.M_d, np.linalg.norm(f[k], axis=1), atol=1e-3 * G)
+    assert "scaled by 1.0638 to read 1 g where still (--to-g)" in out.read_text()
+    capsys.readouterr()
+    assert main(argv + ["--to-g", "--no-check", "--overwrite"]) == 2
+    assert "--to-g" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("extra, words", [
+    ([], "add --modulus"),  # six channels need the rates
+    (["--modulus", "--lever-arm", "0,0,1"], "--lever-arm needs the angular rates"),
+])
+def test_a_log_without_rates_gives_only_the_modulus(tmp_path, capsys, extra, words):
+    t, _, f = motion()
+    log = accelerometer_log(tmp_path / "ride.txt", t, f, ("forward", "right", "down"))
+    out = tmp_path / "x.csv"
+    assert main(["import", "log", str(log), "--time", "time", "--accel", "x,y,z", "--accel-unit", "g", "--rates",
+                 "none", "--out", str(out), *extra]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and words in err and not out.exists()
+
+
+def test_rates_need_their_unit(tmp_path, capsys):
+    t, omega, f = motion()
+    log = write_log(tmp_path / "log.csv", t, omega, f, ("forward", "right", "down"), "g", "deg/s")
+    out = tmp_path / "x.csv"
+    assert main(["import", "log", str(log), "--accel-unit", "g", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--rate-unit" in err and "p,q,r" in err and "--rates none" in err
+    assert not out.exists()

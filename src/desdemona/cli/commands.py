@@ -350,9 +350,14 @@ def run_import_log(args) -> int:
     except ValueError:
         raise UserError(f"--lever-arm {args.lever_arm!r}: give three numbers x,y,z in metres") from None
     names = lambda text: tuple(c.strip() for c in text.split(","))  # noqa: E731
-    fmt = log.LogFormat(args.time.strip(), names(args.accel), names(args.rates), args.accel_unit, args.rate_unit,
+    rates = None if args.rates.strip().lower() == "none" else names(args.rates)
+    if rates is not None and args.rate_unit is None:
+        raise UserError("--rate-unit deg/s or rad/s: the unit of the rate columns "
+                        f"({','.join(rates)}); for a log without angular rates give --rates none (with --modulus)")
+    fmt = log.LogFormat(args.time.strip(), names(args.accel), rates, args.accel_unit, args.rate_unit or "rad/s",
                         args.time_unit, names(args.axes), lever_arm)
-    path, comments = log.from_log(args.file, fmt, args.start, args.end, args.rate, args.modulus, args.check)
+    path, comments = log.from_log(args.file, fmt, args.start, args.end, args.rate, args.modulus, args.check,
+                                  args.to_g)
     _say_imported(convert.write_path(args.out, path, comments, args.overwrite), path)
     return 0
 

@@ -251,15 +251,19 @@ def _add_import_parser(sub) -> None:
         "log", help="a logged motion (IMU or simulator output, CSV)",
         description="Read a CSV log of accelerometer readings (specific force: +1 g up at rest, not kinematic "
                     "acceleration) and angular rates, in declared units and axes, into a desired path. Where "
-                    "the log is still for 1 s the force must read +1 g up (the convention check).")
+                    "the log is still for 1 s the force must read +1 g up (the convention check). A log of "
+                    "accelerometer readings alone (--rates none) gives the modulus form for dfs (--modulus), "
+                    "in whatever axes; where it is still the force must read 1 g.")
     lg.add_argument("file", metavar="FILE", help="CSV log, the first non-# line naming the columns")
     lg.add_argument("--time", default="t", metavar="COL", help="time column (default: t)")
     lg.add_argument("--accel", default="ax,ay,az", metavar="X,Y,Z",
                     help="accelerometer columns, the log's x,y,z (default: ax,ay,az)")
     lg.add_argument("--rates", default="p,q,r", metavar="X,Y,Z",
-                    help="angular rate columns, the log's x,y,z (default: p,q,r)")
+                    help="angular rate columns, the log's x,y,z (default: p,q,r); none for a log without "
+                         "them (with --modulus)")
     lg.add_argument("--accel-unit", required=True, choices=("g", "m/s2"), dest="accel_unit")
-    lg.add_argument("--rate-unit", required=True, choices=("deg/s", "rad/s"), dest="rate_unit")
+    lg.add_argument("--rate-unit", choices=("deg/s", "rad/s"), dest="rate_unit",
+                    help="the unit of the --rates columns (required unless --rates none)")
     lg.add_argument("--time-unit", default="s", choices=("s", "ms"), dest="time_unit", help="(default: s)")
     lg.add_argument("--axes", default="forward,right,down", metavar="X,Y,Z",
                     help="direction of the log's x,y,z: each one of forward/back/right/left/up/down, "
@@ -271,6 +275,9 @@ def _add_import_parser(sub) -> None:
                          "at most 100)")
     lg.add_argument("--no-check", action="store_false", dest="check",
                     help="skip the convention check (for a log that is nowhere still)")
+    lg.add_argument("--to-g", action="store_true", dest="to_g",
+                    help="scale the accelerometer readings so that the stillest stretch reads 1 g (a sensor "
+                         "whose scale is off, as a phone's can be by 5-10 %%)")
     _add_import_options(lg, "the log's time")
     lg.set_defaults(run=commands.run_import_log)
 

@@ -214,10 +214,9 @@ def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0)) -> N
     """Raise :class:`ProfileError` naming the likely mistake unless the still force reads +1 g up in
     the cabin frame: magnitude within :data:`MAGNITUDE_TOLERANCE` of g and direction within
     :data:`UP_TOLERANCE_DEG` of ``up``, the world's up in the cabin frame (cabin +z for a vehicle at rest
-    or flying level; from the attitude where it is known). ``axes_hint`` adds how the axes were declared
-    to the message."""
+    or flying level; from the attitude where it is known; None: the magnitude alone, for a log whose
+    axes do not matter). ``axes_hint`` adds how the axes were declared to the message."""
     f = still.f_cabin
-    up = np.asarray(up, dtype=float) / np.linalg.norm(up)
     size = float(np.linalg.norm(f))
     where = f"still from {still.t0:.2f} s to {still.t1:.2f} s, the force reads ({f[0]:.3g}, {f[1]:.3g}, " \
             f"{f[2]:.3g}) m/s^2 in the cabin frame (x right, y forward, z up)"
@@ -234,6 +233,9 @@ def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0)) -> N
                            f"must hold accelerometer readings (specific force, +1 g up at rest)")
     if not lo <= ratio <= hi:
         raise ProfileError(f"{where}: |f| = {ratio:.2f} g at rest, not 1 g: wrong accelerometer unit or scale?")
+    if up is None:
+        return
+    up = np.asarray(up, dtype=float) / np.linalg.norm(up)
     angle = float(np.degrees(np.arccos(np.clip(f @ up / size, -1.0, 1.0))))
     if angle <= UP_TOLERANCE_DEG:
         return

@@ -1,14 +1,16 @@
 """Desired paths from a logged motion: an IMU's or a vehicle simulator's output as CSV.
 
 The log holds, per sample, a time, three accelerometer readings and three angular rates, in columns
-named by the user, in declared units and along declared axes. An accelerometer reads specific force
-``f = a - g_vec`` (+1 g up at rest), which is what a person feels and what a desired path holds; a log
-of kinematic acceleration (0 at rest) is not one, and the convention check says so.
+named by the user, in declared units and along declared axes; a log of accelerometer readings alone
+(a phone's, a ride logger's) gives the modulus form ``t,M`` for ``dfs``, whose |f| needs no axes. An
+accelerometer reads specific force ``f = a - g_vec`` (+1 g up at rest), which is what a person feels
+and what a desired path holds; a log of kinematic acceleration (0 at rest) is not one, and the
+convention check says so.
 
 The rows go through: units to SI, the log's axes turned into the cabin frame (x right, y forward,
 z up), a uniform grid at the log's own median step, the lever arm from the sensor to the head
 (``f_head = f_sensor + alpha x r + omega x (omega x r)``), the anti-alias filter and resampling, the
-convention check (where the log is still the force reads +1 g up) and the crop.
+convention check (where the log is still the force reads +1 g up; without rates, 1 g) and the crop.
 """
 
 from __future__ import annotations
@@ -21,7 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from desdemona.profiles import convert, csvfile
-from desdemona.profiles.path import DesiredPath, ProfileError
+from desdemona.profiles.path import G, DesiredPath, ProfileError
 
 #: Standard gravity [m/s^2], what a sensor's "g" unit means (ISO 80000-3); the simulator's own gravity
 #: (:data:`.path.G`, 9.81) stays what the paths and the convention check use.
@@ -37,7 +39,8 @@ MAX_DEFAULT_RATE = 100.0
 class LogFormat:
     """How a log is laid out: column names, units and the directions of its x, y, z axes.
 
-    time : the time column; accel, rates : three column names each (the log's x, y, z);
+    time : the time column; accel, rates : three column names each (the log's x, y, z), rates None
+    for a log without angular rates (the modulus form only, :func:`from_log`);
     accel_unit : ``g`` or ``m/s2``; rate_unit : ``deg/s`` or ``rad/s``; time_unit : ``s`` or ``ms``;
     axes : the cabin-frame direction of the log's x, y, z (``forward,right,down`` = vehicle body axes);
     lever_arm : (3,) [m] from the sensor to the head, in the log's axes.
@@ -45,7 +48,7 @@ class LogFormat:
 
     time: str = "t"
     accel: tuple[str, str, str] = ("ax", "ay", "az")
-    rates: tuple[str, str, str] = ("p", "q", "r")
+    rates: tuple[str, str, str] | None = ("p", "q", "r")
     accel_unit: str = "m/s2"
     rate_unit: str = "rad/s"
     time_unit: str = "s"
@@ -54,11 +57,11 @@ class LogFormat:
 
     def __post_init__(self):
         for label, value, units in (("--accel-unit", self.accel_unit, ACCEL_UNITS),
-                                    ("--rate-unit", self.rate_unit, RATE_UNITS),
+                                    ("--rate-unit", self.rate_unit if self.rates else "rad/s", RATE_UNITS),
                                     ("--time-unit", self.time_unit, TIME_UNITS)):
             if value not in units:
                 raise ProfileError(f"{label} {value!r}: use one of {', '.join(units)}")
-        for label, names in (("--accel", self.accel), ("--rates", self.rates)):
+        for label, names in (("--accel", self.accel), ("--rates", self.rates or ("", "", ""))):
             if len(names) != 3:
                 raise ProfileError(f"{label} {','.join(names)}: give three column names, for x, y and z")
         if len(self.lever_arm) != 3 or not all(math.isfinite(x) for x in self.lever_arm):
@@ -112,17 +115,30 @@ def read_log(file: str | Path, columns: list[str]) -> dict[str, np.ndarray]:
 
 def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None = None,
              end: float | None = None, rate: float | None = None, modulus: bool = False,
-             check: bool = True) -> tuple[DesiredPath, list[str]]:
+             check: bool = True, to_g: bool = False) -> tuple[DesiredPath, list[str]]:
     """The desired path of a logged motion (see the module's docstring) from ``start`` to ``end`` [s of
     the log's time] (None: all), at ``rate`` [Hz] (None: the log's own, at most
     :data:`MAX_DEFAULT_RATE`), its time 0 at the crop's start; with ``modulus`` its ``t,M`` form.
     Returns the path and its ``source:`` comment lines.
 
     With ``check`` the convention check runs on the whole log (:func:`.convert.check_convention`); a log
-    with no still stretch cannot be checked and is refused unless ``check`` is False.
+    with no still stretch cannot be checked and is refused unless ``check`` is False. A log without
+    rates (``fmt.rates`` None) gives only the modulus form (``modulus``), its check reads only |f| (1 g
+    at rest, in whatever axes), and it is still where its force is steady. ``to_g``: the readings are
+    scaled so that the still stretch reads 1 g (a sensor whose scale is off: a phone read 0.91-0.95 g
+    in a coaster's station).
     """
     file = Path(file)
-    data = read_log(file, [fmt.time, *fmt.accel, *fmt.rates])
+    if fmt.rates is None and not modulus:
+        raise ProfileError("--rates none: without angular rates a log gives only the modulus form t,M (dfs): "
+                           "add --modulus, or name the rate columns with --rates")
+    if fmt.rates is None and any(fmt.lever_arm):
+        raise ProfileError("--lever-arm needs the angular rates (the head's force depends on them): name the rate "
+                           "columns with --rates")
+    if to_g and not check:
+        raise ProfileError("--to-g scales the readings by the still stretch the convention check finds: "
+                           "drop --no-check")
+    data = read_log(file, [fmt.time, *fmt.accel, *(fmt.rates or ())])
     t = data[fmt.time] * TIME_UNITS[fmt.time_unit]
     steps = np.diff(t)
     if np.any(steps <= 0):
@@ -132,7 +148,8 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     _check_time_unit(file, fmt, t)
     R = convert.axes_rotation(fmt.axes)
     f = convert.turn_to_cabin(np.column_stack([data[c] for c in fmt.accel]) * ACCEL_UNITS[fmt.accel_unit], R)
-    omega = convert.turn_to_cabin(np.column_stack([data[c] for c in fmt.rates]) * RATE_UNITS[fmt.rate_unit], R)
+    omega = (np.zeros_like(f) if fmt.rates is None else
+             convert.turn_to_cabin(np.column_stack([data[c] for c in fmt.rates]) * RATE_UNITS[fmt.rate_unit], R))
     t, X = convert.uniform_grid(t, np.column_stack([omega, f]))
     native = 1.0 / float(np.median(np.diff(t)))
     rate = min(native, MAX_DEFAULT_RATE) if rate is None else float(rate)
@@ -142,28 +159,36 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     if np.any(r_cabin != 0):
         X[:, 3:] = head_force(X[:, :3], X[:, 3:], r_cabin, native)
     t, X = convert.resample(t, X, rate)
+    scale = 1.0
     if check:
         still = convert.find_still(t, X[:, :3], X[:, 3:])
         if still is None:
+            steady = "a steady force" if fmt.rates is None else \
+                f"rates below {math.degrees(convert.STILL_RATE):g} deg/s and a steady force"
             raise ProfileError(f"{file}: the convention check cannot run: the log is nowhere still for "
-                               f"{convert.STILL_SECONDS:g} s (rates below {math.degrees(convert.STILL_RATE):g} "
-                               f"deg/s and a steady force); check its axes and units by hand and add --no-check")
+                               f"{convert.STILL_SECONDS:g} s ({steady}); check its units by hand and add --no-check")
         try:
-            convert.check_convention(still, ",".join(fmt.axes) + " for the log's x,y,z")
+            convert.check_convention(still, ",".join(fmt.axes) + " for the log's x,y,z",
+                                     up=None if fmt.rates is None else (0.0, 0.0, 1.0))
         except ProfileError as exc:
             raise ProfileError(f"{file}: {exc}") from None
+        if to_g:
+            scale = G / float(np.linalg.norm(still.f_cabin))
+            X[:, 3:] *= scale
     lo = float(t[0]) if start is None else float(start)
     t, X = convert.crop(t, X, lo, end, str(file))
     convert.check_no_crash(t + lo, X[:, 3:], str(file))
     span = f"{lo:g}-{lo + t[-1]:.6g} s"
     description = f"log {file.name}, {span}"
     path = convert.make_path(file.stem, t, X[:, :3], X[:, 3:], description, modulus)
+    rates = "none" if fmt.rates is None else f"{','.join(fmt.rates)} [{fmt.rate_unit}]"
     comments = [f"source: log {file.name}, columns time {fmt.time} [{fmt.time_unit}], accel "
-                f"{','.join(fmt.accel)} [{fmt.accel_unit}], rates {','.join(fmt.rates)} [{fmt.rate_unit}]",
+                f"{','.join(fmt.accel)} [{fmt.accel_unit}], rates {rates}",
                 f"source: axes {','.join(fmt.axes)} for the log's x,y,z -> cabin (right,forward,up); lever arm "
                 f"sensor->head {','.join(f'{x:g}' for x in fmt.lever_arm)} m (log axes)",
                 f"source: crop {span} of the log's time (t = 0 here), {convert.filter_note(native, rate)}; "
                 f"convention check {'passed' if check else 'skipped (--no-check)'}"
+                + (f"; readings scaled by {scale:.4f} to read 1 g where still (--to-g)" if to_g else "")
                 + ("; modulus |f| only" if modulus else "")]
     return path, comments
 
