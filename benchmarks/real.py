@@ -6,6 +6,7 @@
     python benchmarks/real.py --modes hold --rate dfs=100 --no-docs   # dfs on-line at 100 Hz
     python benchmarks/real.py --table-only             # re-read the result folders, rewrite the table
     python benchmarks/real.py --dask tcp://scheduler:8786   # the jobs on a Dask cluster
+    python benchmarks/real.py --corpus my-rides --modes offline hold   # one's own paths, table printed
 
 The corpus (``benchmarks/corpus.py``) holds flights from JSBSim's shipped scripts and aircraft, each
 in the six-channel form (``t,wx,wy,wz,fx,fy,fz``) and the modulus form (``t,M``). A six-channel case
@@ -13,7 +14,10 @@ runs on ``yaw-track-cabin`` and ``full``, a modulus case on ``dfs``; each off-li
 optimize`` with its defaults) and on-line (``desdemona online --predictor hold``, ``perfect`` and
 ``forecast``, the command's defaults otherwise). ``forecast`` reads the aircraft's own forecasts
 (``NAME.forecast.csv``: every 0.1 s its model run 4 s ahead with the pilot's controls held, made with
-the corpus by ``corpus.py --forecasts`` where a case's are missing). Every job is the command a user
+the corpus by ``corpus.py --forecasts`` where a case's are missing). ``--corpus`` may name a folder of
+one's own paths instead (``desdemona import log`` output, no ``index.json``): each ``NAME.csv`` is a
+case of the form its columns give, nothing is built or written in the folder, and the table is only
+printed. Every job is the command a user
 would type, run as its own process
 (so its peak memory is its own: ``ru_maxrss`` of the process; ``--no-view``: the page is not
 timed), stopped with SIGINT after
@@ -83,8 +87,11 @@ def corpus_cases(folder: Path, build: bool = True, forecasts=()) -> list[dict]:
     """The corpus index: one entry per file (name, file, form "six" or "modulus", duration_s, source,
     and where made, forecast), the corpus built first (``build``) where it is missing or made from another
     definition (:func:`corpus.definition`), and the forecasts of the cases named in ``forecasts`` where
-    they are missing."""
+    they are missing. A folder of one's own paths, without an index, is read as it is
+    (:func:`own_cases`): nothing is built or written in it."""
     index = folder / "index.json"
+    if folder.is_dir() and not index.exists() and any(folder.glob("*.csv")):
+        return own_cases(folder)
     if build and (not index.exists() or json.loads(index.read_text()).get("definition") != corpus.definition()):
         subprocess.run([sys.executable, str(HERE / "corpus.py"), "--out", str(folder)], check=True)
     cases = json.loads(index.read_text())["cases"]
@@ -93,6 +100,27 @@ def corpus_cases(folder: Path, build: bool = True, forecasts=()) -> list[dict]:
         subprocess.run([sys.executable, str(HERE / "corpus.py"), "--out", str(folder), "--forecasts", "--cases",
                         *missing], check=True)
         cases = json.loads(index.read_text())["cases"]
+    return cases
+
+
+def own_cases(folder: Path) -> list[dict]:
+    """Index entries of a folder of one's own desired paths (``desdemona import log`` writes them): every
+    ``NAME.csv`` in it, its form read from its columns, with ``NAME.forecast.csv`` beside it as its
+    forecast where there is one. A file that does not read as a path stops the run, named."""
+    cases = []
+    for file in sorted(folder.glob("*.csv")):
+        if file.name.endswith(".forecast.csv"):
+            continue
+        try:
+            path = profiles.load(file)
+        except profiles.ProfileError as exc:
+            raise SystemExit(f"--corpus {folder}: {exc}") from None
+        case = {"name": file.stem, "file": file.name, "form": "modulus" if path.S_d is None else "six",
+                "duration_s": round(float(path.duration), 1), "peak_g": round(float(np.max(path.M_d)) / profiles.G, 3),
+                "source": str(file), "description": path.description}
+        if file.with_name(f"{file.stem}.forecast.csv").exists():
+            case["forecast"] = f"{file.stem}.forecast.csv"
+        cases.append(case)
     return cases
 
 
@@ -341,7 +369,12 @@ def main(argv=None) -> int:
             case["forecast"] = str((args.corpus / case["forecast"]).resolve())
     cases.sort(key=lambda c: c["duration_s"])  # the short cases' rows first: a long run shows them early
     jobs = [(case, config, mode) for case in cases for config in CONFIGS[case["form"]]
-            if args.configs is None or config in args.configs for mode in args.modes]
+            if args.configs is None or config in args.configs for mode in args.modes
+            if mode != "forecast" or "forecast" in case]
+    if args.corpus.resolve() != CORPUS.resolve() and not args.no_docs:
+        print(f"--corpus {args.corpus}: not the project's corpus; its table is printed, docs/benchmarks.md "
+              f"is left as it is", file=sys.stderr)
+        args.no_docs = True
     args.out.mkdir(parents=True, exist_ok=True)
     record = args.out / "jobs.jsonl"
     load_before = os.getloadavg()

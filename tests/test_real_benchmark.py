@@ -5,6 +5,7 @@ import importlib
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from desdemona import profiles
 
@@ -58,3 +59,26 @@ def test_the_shape_of_a_desired_channel_is_counted_in_perception_thresholds(monk
     t = np.linspace(0.0, 10.0, 101)
     path = profiles.DesiredPath("m", t, None, modulus=9.81 + 0.14 * np.sin(t))  # ranges 0.28 m/s^2
     assert abs(real.shape_thresholds(path, "fz") - 1.0) < 0.01  # the f_z threshold is 0.28 m/s^2
+
+
+def test_a_folder_of_ones_own_paths_is_read_as_it_is(monkeypatch, tmp_path):
+    """``--corpus`` naming a folder of imported paths without an index: one case per path, its form
+    from its columns, a forecast beside it taken; nothing is built there (no JSBSim run, no file)."""
+    real = load_real(monkeypatch)
+    t = np.arange(0.0, 4.0, 0.02)
+    (tmp_path / "ride-M.csv").write_text("t,M\n" + "".join(f"{x:.2f},{9.81 + np.sin(x):.4f}\n" for x in t))
+    six = profiles.load("catapult")
+    (tmp_path / "launch.csv").write_text("t,wx,wy,wz,fx,fy,fz\n" + "".join(
+        ",".join(f"{v:.6g}" for v in (x, *row)) + "\n" for x, row in zip(six.t, six.S_d)))
+    (tmp_path / "launch.forecast.csv").write_text("not read here\n")
+    monkeypatch.setattr(real.subprocess, "run", lambda *a, **k: (_ for _ in ()).throw(AssertionError("built")))
+    before = sorted(p.name for p in tmp_path.iterdir())
+    cases = {c["name"]: c for c in real.corpus_cases(tmp_path)}
+    assert sorted(cases) == ["launch", "ride-M"]
+    assert cases["ride-M"]["form"] == "modulus" and cases["launch"]["form"] == "six"
+    assert cases["launch"]["forecast"] == "launch.forecast.csv" and "forecast" not in cases["ride-M"]
+    assert cases["ride-M"]["duration_s"] == 4.0 and cases["launch"]["duration_s"] == round(six.duration, 1)
+    assert sorted(p.name for p in tmp_path.iterdir()) == before
+    (tmp_path / "broken.csv").write_text("t,M\n0,x\n")
+    with pytest.raises(SystemExit, match="broken.csv"):
+        real.corpus_cases(tmp_path)
