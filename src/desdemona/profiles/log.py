@@ -56,12 +56,15 @@ class LogFormat:
     lever_arm: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
     def __post_init__(self):
-        for label, value, units in (("--accel-unit", self.accel_unit, ACCEL_UNITS),
-                                    ("--rate-unit", self.rate_unit if self.rates else "rad/s", RATE_UNITS),
-                                    ("--time-unit", self.time_unit, TIME_UNITS)):
-            if value not in units:
-                raise ProfileError(f"{label} {value!r}: use one of {', '.join(units)}")
-        for label, names in (("--accel", self.accel), ("--rates", self.rates or ("", "", ""))):
+        units = [("--accel-unit", self.accel_unit, ACCEL_UNITS), ("--time-unit", self.time_unit, TIME_UNITS)]
+        columns = [("--accel", self.accel)]
+        if self.rates is not None:  # None: a log without angular rates
+            units.append(("--rate-unit", self.rate_unit, RATE_UNITS))
+            columns.append(("--rates", self.rates))
+        for label, value, known in units:
+            if value not in known:
+                raise ProfileError(f"{label} {value!r}: use one of {', '.join(known)}")
+        for label, names in columns:
             if len(names) != 3:
                 raise ProfileError(f"{label} {','.join(names)}: give three column names, for x, y and z")
         if len(self.lever_arm) != 3 or not all(math.isfinite(x) for x in self.lever_arm):
@@ -125,7 +128,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     with no still stretch cannot be checked and is refused unless ``check`` is False. A log without
     rates (``fmt.rates`` None) gives only the modulus form (``modulus``), its check reads only |f| (1 g
     at rest, in whatever axes), and it is still where its force is steady. ``to_g``: the readings are
-    scaled so that the still stretch reads 1 g (a sensor whose scale is off: a phone read 0.91-0.95 g
+    scaled so that the still stretch reads 1 g (a sensor whose scale is off: a phone read 0.91-0.96 g
     in a coaster's station).
     """
     file = Path(file)
