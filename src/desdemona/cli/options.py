@@ -276,8 +276,9 @@ def _add_import_parser(sub) -> None:
     lg.add_argument("--no-check", action="store_false", dest="check",
                     help="skip the convention check (for a log that is nowhere still)")
     lg.add_argument("--to-g", action="store_true", dest="to_g",
-                    help="scale the accelerometer readings so that the stillest stretch reads 1 g (a sensor "
-                         "whose scale is off, as a phone's can be by 5-10 %%)")
+                    help="scale the accelerometer readings so that the still stretch the check finds reads 1 g "
+                         "(a sensor whose scale is off, as a phone's can be by 5-10 %%; a reading outside "
+                         "0.8-1.25 g is refused as a wrong unit or scale)")
     _add_import_options(lg, "the log's time")
     lg.set_defaults(run=commands.run_import_log)
 

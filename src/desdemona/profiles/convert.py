@@ -180,12 +180,17 @@ class Still:
     f_cabin: np.ndarray
 
 
-def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=None) -> Still | None:
+def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=None,
+               longest: bool = False) -> Still | None:
     """The stillest stretch of at least :data:`STILL_SECONDS` where the rates are near zero
     (|omega| < ``max_rate`` [rad/s]) and the force nearly constant (RMS about its mean below
     :data:`STILL_SPREAD` of its size plus :data:`STILL_SPREAD_ABS`), or None. Uniform ``t`` [s]; the
     criteria are relative so a log in the wrong unit is still found still (and then diagnosed).
-    ``usable`` (N,) bool, if given: a stretch holding any sample not usable is not still."""
+    ``usable`` (N,) bool, if given: a stretch holding any sample not usable is not still.
+
+    ``longest``: the stillest second of the longest such stretch; for a log without rates (zeros),
+    where a steady turn or a held pull is steady too, but shorter than a wait at rest or at a constant
+    speed (2 s at 1.15 g in a ride were taken for the rest before it)."""
     t = np.asarray(t, dtype=float)
     step = float(np.median(np.diff(t)))
     w = int(round(STILL_SECONDS / step)) + 1
@@ -205,6 +210,12 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
         still &= np.lib.stride_tricks.sliding_window_view(np.asarray(usable, dtype=bool), w).all(axis=1)
     if not np.any(still):
         return None
+    if longest:  # only the windows of the longest run of still ones
+        edges = np.flatnonzero(np.diff(np.concatenate([[0], still.astype(int), [0]])))
+        starts, ends = edges[::2], edges[1::2]  # runs of still windows [start, end)
+        j = int(np.argmax(ends - starts))
+        still = np.zeros_like(still)
+        still[starts[j]:ends[j]] = True
     score = np.where(still, spread / (size + STILL_SPREAD_ABS) + windows_rate / max_rate, np.inf)
     k = int(np.argmin(score))
     return Still(float(t[k]), float(t[k + w - 1]), mean[k])
@@ -218,8 +229,9 @@ def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0)) -> N
     axes do not matter). ``axes_hint`` adds how the axes were declared to the message."""
     f = still.f_cabin
     size = float(np.linalg.norm(f))
-    where = f"still from {still.t0:.2f} s to {still.t1:.2f} s, the force reads ({f[0]:.3g}, {f[1]:.3g}, " \
-            f"{f[2]:.3g}) m/s^2 in the cabin frame (x right, y forward, z up)"
+    where = f"still from {still.t0:.2f} s to {still.t1:.2f} s, " + (
+        f"the force reads {size:.3g} m/s^2" if up is None else
+        f"the force reads ({f[0]:.3g}, {f[1]:.3g}, {f[2]:.3g}) m/s^2 in the cabin frame (x right, y forward, z up)")
     lo, hi = MAGNITUDE_TOLERANCE
     ratio = size / G
     if lo / G <= ratio <= hi / G:

@@ -126,10 +126,10 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
 
     With ``check`` the convention check runs on the whole log (:func:`.convert.check_convention`); a log
     with no still stretch cannot be checked and is refused unless ``check`` is False. A log without
-    rates (``fmt.rates`` None) gives only the modulus form (``modulus``), its check reads only |f| (1 g
-    at rest, in whatever axes), and it is still where its force is steady. ``to_g``: the readings are
+    rates (``fmt.rates`` None) gives only the modulus form (``modulus``); its check reads only |f| (1 g
+    at rest, in whatever axes) over its longest stretch of steady force. ``to_g``: the readings are
     scaled so that the still stretch reads 1 g (a sensor whose scale is off: a phone read 0.91-0.96 g
-    in a coaster's station).
+    in a coaster's station), within the check's 0.8-1.25 g.
     """
     file = Path(file)
     if fmt.rates is None and not modulus:
@@ -143,6 +143,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
                            "drop --no-check")
     data = read_log(file, [fmt.time, *fmt.accel, *(fmt.rates or ())])
     t = data[fmt.time] * TIME_UNITS[fmt.time_unit]
+    logged = t.copy()  # the times with a reading, before the gaps between them are bridged
     steps = np.diff(t)
     if np.any(steps <= 0):
         k = int(np.argmax(steps <= 0))
@@ -164,7 +165,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     t, X = convert.resample(t, X, rate)
     scale = 1.0
     if check:
-        still = convert.find_still(t, X[:, :3], X[:, 3:])
+        still = convert.find_still(t, X[:, :3], X[:, 3:], usable=measured(t, logged), longest=fmt.rates is None)
         if still is None:
             steady = "a steady force" if fmt.rates is None else \
                 f"rates below {math.degrees(convert.STILL_RATE):g} deg/s and a steady force"
@@ -194,6 +195,16 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
                 + (f"; readings scaled by {scale:.4f} to read 1 g where still (--to-g)" if to_g else "")
                 + ("; modulus |f| only" if modulus else "")]
     return path, comments
+
+
+def measured(grid, logged) -> np.ndarray:
+    """(N,) bool: the ``grid`` times [s] within one median step of the log's of a reading (``logged``),
+    not in a gap the grid bridges by interpolation: a straight line across a gap looks as steady as a
+    rest (a coaster's log with 40 s missing before its ride was taken to be still at 1.5 g)."""
+    grid, logged = np.asarray(grid, dtype=float), np.asarray(logged, dtype=float)
+    k = np.clip(np.searchsorted(logged, grid), 1, len(logged) - 1)
+    nearest = np.minimum(np.abs(grid - logged[k - 1]), np.abs(logged[k] - grid))
+    return nearest <= float(np.median(np.diff(logged))) * (1.0 + 1e-9)
 
 
 def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray) -> None:
