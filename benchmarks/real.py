@@ -332,7 +332,9 @@ def write_docs(text: str) -> None:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--corpus", type=Path, default=CORPUS, help="corpus folder (built if missing)")
+    parser.add_argument("--corpus", type=Path, default=CORPUS,
+                        help="corpus folder (the project's is built if missing), or a folder of one's own paths "
+                             "(NAME.csv, read as it is)")
     parser.add_argument("--out", type=Path, default=RESULTS, help="folder of the jobs' result folders")
     parser.add_argument("--cases", nargs="+", default=None, help="only these cases (names in the index)")
     parser.add_argument("--configs", nargs="+", default=None, help="only these configurations")
@@ -360,6 +362,10 @@ def main(argv=None) -> int:
     except (ValueError, ZeroDivisionError):
         parser.error(f"--rate takes CONFIG=HZ, e.g. dfs=100, not {' '.join(args.rate)}")
 
+    own = args.corpus.resolve() != CORPUS.resolve()
+    if own and not (args.corpus / "index.json").exists() and not any(args.corpus.glob("*.csv")):
+        parser.error(f"--corpus {args.corpus}: no paths there (no NAME.csv, no index.json); to build the corpus "
+                     f"there: python benchmarks/corpus.py --out {args.corpus}")
     wanted = lambda name: args.cases is None or name in args.cases  # noqa: E731
     forecasts = {name for name in corpus.CASES if wanted(name)} if "forecast" in args.modes else set()
     cases = [c for c in corpus_cases(args.corpus, not args.table_only, forecasts) if wanted(c["name"])]
@@ -371,7 +377,11 @@ def main(argv=None) -> int:
     jobs = [(case, config, mode) for case in cases for config in CONFIGS[case["form"]]
             if args.configs is None or config in args.configs for mode in args.modes
             if mode != "forecast" or "forecast" in case]
-    if args.corpus.resolve() != CORPUS.resolve() and not args.no_docs:
+    for case in cases:
+        if "forecast" in args.modes and "forecast" not in case:
+            print(f"{case['name']}: no forecast beside it ({case['name']}.forecast.csv): no forecast rows",
+                  file=sys.stderr)
+    if own and not args.no_docs:
         print(f"--corpus {args.corpus}: not the project's corpus; its table is printed, docs/benchmarks.md "
               f"is left as it is", file=sys.stderr)
         args.no_docs = True

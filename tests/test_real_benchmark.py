@@ -82,3 +82,16 @@ def test_a_folder_of_ones_own_paths_is_read_as_it_is(monkeypatch, tmp_path):
     (tmp_path / "broken.csv").write_text("t,M\n0,x\n")
     with pytest.raises(SystemExit, match="broken.csv"):
         real.corpus_cases(tmp_path)
+
+
+def test_a_folder_with_no_paths_is_refused_and_not_built_into(monkeypatch, tmp_path, capsys):
+    """A mistyped --corpus, or a folder without paths, is one error naming how to build a corpus there;
+    the JSBSim corpus is not built into it."""
+    real = load_real(monkeypatch)
+    monkeypatch.setattr(real.subprocess, "run", lambda *a, **k: (_ for _ in ()).throw(AssertionError("built")))
+    for folder in (tmp_path / "typo", tmp_path):
+        with pytest.raises(SystemExit) as stop:
+            real.main(["--corpus", str(folder), "--modes", "hold", "--out", str(tmp_path / "out")])
+        assert stop.value.code == 2
+        assert "no paths there" in capsys.readouterr().err
+    assert not (tmp_path / "typo").exists() and sorted(p.name for p in tmp_path.iterdir()) == []
