@@ -321,38 +321,34 @@ def test_rates_need_their_unit(tmp_path, capsys):
     assert not out.exists()
 
 
-def test_without_rates_the_rest_is_the_longest_steady_stretch(tmp_path):
-    """Without rates a steady pull looks still too: 5 s at rest at 0.95 g, then 2 s held at 1.15 g
-    and 2 s at 2 g, all with the same noise. The stillest stretch relative to its size is the 2 g one
-    (refused as a wrong scale), the rest is the longest: --to-g scales by 1 / 0.95."""
-    rate = 50.0
-    t = np.arange(0.0, 13.0, 1.0 / rate)
-    level = np.select([t < 5.0, (t >= 6.0) & (t < 8.0), (t >= 9.0) & (t < 11.0)], [0.95, 1.15, 2.0], 1.05)
-    noise = np.random.default_rng(0).normal(0.0, 0.01, size=(len(t), 3))
+def scaled_to_g(tmp_path, t, level, seed):
+    """Import a noisy upright log of ``level`` [g] at times ``t`` without rates, with --to-g: the factor
+    it was scaled by, and the path."""
+    noise = np.random.default_rng(seed).normal(0.0, 0.01, size=(len(t), 3))
     f = (np.column_stack([0 * t, 0 * t, level]) + noise) * G
     log = accelerometer_log(tmp_path / "ride.txt", t, f, ("forward", "right", "down"))
     out = tmp_path / "m.csv"
     assert main(["import", "log", str(log), "--time", "time", "--accel", "x,y,z", "--accel-unit", "g", "--rates",
                  "none", "--modulus", "--to-g", "--out", str(out)]) == 0
-    factor = float(out.read_text().split("scaled by ")[1].split()[0])
+    return float(out.read_text().split("scaled by ")[1].split()[0]), profiles.load(out)
+
+
+def test_without_rates_the_rest_is_the_longest_steady_stretch(tmp_path):
+    """Without rates a steady pull looks still too: 5 s at rest at 0.95 g, then 2 s held at 1.15 g
+    and 2 s at 2 g, all with the same noise. The stillest stretch relative to its size is the 2 g one
+    (refused as a wrong scale), the rest is the longest: --to-g scales by 1 / 0.95."""
+    t = np.arange(0.0, 13.0, 1.0 / 50.0)
+    level = np.select([t < 5.0, (t >= 6.0) & (t < 8.0), (t >= 9.0) & (t < 11.0)], [0.95, 1.15, 2.0], 1.05)
+    factor, path = scaled_to_g(tmp_path, t, level, seed=0)
     assert factor == pytest.approx(1.0 / 0.95 * G / STANDARD_GRAVITY, rel=2e-3)
-    np.testing.assert_allclose(np.median(profiles.load(out).M_d[:200]), G, rtol=2e-3)
+    np.testing.assert_allclose(np.median(path.M_d[:200]), G, rtol=2e-3)
 
 
 def test_a_gap_in_the_log_is_not_taken_for_a_rest(tmp_path):
     """A log with 28 s missing between two readings of 1.5 g: the grid bridges the gap with a straight
     line, as steady as a rest and longer than the real one after it; the check reads the real one."""
-    rate = 20.0
-    before = np.arange(0.0, 2.0, 1.0 / rate)
-    after = np.arange(30.0, 38.0, 1.0 / rate)
-    t = np.concatenate([before, after])
+    before, after = np.arange(0.0, 2.0, 1.0 / 20.0), np.arange(30.0, 38.0, 1.0 / 20.0)
     level = np.concatenate([1.0 + 0.5 * before / 2.0,  # pulled up to 1.5 g when the log stops
                             np.where(after < 30.5, 1.5, np.where(after < 34.0, 0.95, 1.3 + 0.2 * np.sin(after)))])
-    noise = np.random.default_rng(1).normal(0.0, 0.01, size=(len(t), 3))
-    f = (np.column_stack([0 * t, 0 * t, level]) + noise) * G
-    log = accelerometer_log(tmp_path / "ride.txt", t, f, ("forward", "right", "down"))
-    out = tmp_path / "m.csv"
-    assert main(["import", "log", str(log), "--time", "time", "--accel", "x,y,z", "--accel-unit", "g", "--rates",
-                 "none", "--modulus", "--to-g", "--out", str(out)]) == 0
-    factor = float(out.read_text().split("scaled by ")[1].split()[0])
+    factor, _ = scaled_to_g(tmp_path, np.concatenate([before, after]), level, seed=1)
     assert factor == pytest.approx(1.0 / 0.95 * G / STANDARD_GRAVITY, rel=3e-3)

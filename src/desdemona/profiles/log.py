@@ -128,7 +128,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     with no still stretch cannot be checked and is refused unless ``check`` is False. A log without
     rates (``fmt.rates`` None) gives only the modulus form (``modulus``); its check reads only |f| (1 g
     at rest, in whatever axes) over its longest stretch of steady force. ``to_g``: the readings are
-    scaled so that the still stretch reads 1 g (a sensor whose scale is off: a phone read 0.91-0.96 g
+    scaled so that the still stretch reads 1 g (a sensor whose scale is off: a phone read 0.90-0.96 g
     in a coaster's station), within the check's 0.8-1.25 g.
     """
     file = Path(file)
@@ -167,10 +167,10 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     if check:
         still = convert.find_still(t, X[:, :3], X[:, 3:], usable=measured(t, logged), longest=fmt.rates is None)
         if still is None:
-            steady = "a steady force" if fmt.rates is None else \
-                f"rates below {math.degrees(convert.STILL_RATE):g} deg/s and a steady force"
+            steady, what = ("a steady force", "units") if fmt.rates is None else \
+                (f"rates below {math.degrees(convert.STILL_RATE):g} deg/s and a steady force", "axes and units")
             raise ProfileError(f"{file}: the convention check cannot run: the log is nowhere still for "
-                               f"{convert.STILL_SECONDS:g} s ({steady}); check its units by hand and add --no-check")
+                               f"{convert.STILL_SECONDS:g} s ({steady}); check its {what} by hand and add --no-check")
         try:
             convert.check_convention(still, ",".join(fmt.axes) + " for the log's x,y,z",
                                      up=None if fmt.rates is None else (0.0, 0.0, 1.0))
@@ -198,7 +198,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
 
 
 def measured(grid, logged) -> np.ndarray:
-    """(N,) bool: the ``grid`` times [s] within one median step of the log's of a reading (``logged``),
+    """(N,) bool: the ``grid`` times [s] within one of the log's median steps of a reading (``logged``),
     not in a gap the grid bridges by interpolation: a straight line across a gap looks as steady as a
     rest (a coaster's log with 40 s missing before its ride was taken to be still at 1.5 g)."""
     grid, logged = np.asarray(grid, dtype=float), np.asarray(logged, dtype=float)
