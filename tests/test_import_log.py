@@ -352,3 +352,20 @@ def test_a_gap_in_the_log_is_not_taken_for_a_rest(tmp_path):
                             np.where(after < 30.5, 1.5, np.where(after < 34.0, 0.95, 1.3 + 0.2 * np.sin(after)))])
     factor, _ = scaled_to_g(tmp_path, np.concatenate([before, after]), level, seed=1)
     assert factor == pytest.approx(1.0 / 0.95 * G / STANDARD_GRAVITY, rel=3e-3)
+
+
+def test_a_gap_within_the_crop_is_imported_with_a_warning(tmp_path, capsys):
+    """0.55 s without a reading in a 20 Hz log (11 steps) is bridged, and said: on stderr and in the file;
+    the same log cropped before the gap, or without it, says nothing."""
+    t = np.arange(0.0, 12.0, 0.05)
+    f = np.column_stack([0 * t, 0.2 * G * np.sin(t), G + 0 * t])
+    full = accelerometer_log(tmp_path / "full.txt", t, f, ("forward", "right", "down"))
+    holed = accelerometer_log(tmp_path / "holed.txt", t[(t < 6.0) | (t > 6.45)], f[(t < 6.0) | (t > 6.45)],
+                              ("forward", "right", "down"))
+    base = ["import", "log", "--time", "time", "--accel", "x,y,z", "--accel-unit", "g", "--rates", "none", "--modulus"]
+    for log, crop, said in ((holed, [], True), (holed, ["--end", "5"], False), (full, [], False)):
+        out = tmp_path / f"{log.stem}{len(crop)}.csv"
+        assert main([*base[:2], str(log), *base[2:], *crop, "--out", str(out)]) == 0
+        err = capsys.readouterr().err
+        assert ("no reading for 0.55 s from 5.95 s" in err) == said
+        assert ("# warning: no reading for 0.55 s" in out.read_text()) == said

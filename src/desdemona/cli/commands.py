@@ -359,6 +359,9 @@ def run_import_log(args) -> int:
     path, comments = log.from_log(args.file, fmt, args.start, args.end, args.rate, args.modulus, args.check,
                                   args.to_g)
     _say_imported(convert.write_path(args.out, path, comments, args.overwrite), path)
+    for line in comments:
+        if line.startswith("warning: "):
+            print(f"{args.file}: {line}", file=sys.stderr)
     return 0
 
 
