@@ -369,3 +369,4 @@ def test_a_gap_within_the_crop_is_imported_with_a_warning(tmp_path, capsys):
         err = capsys.readouterr().err
         assert ("no reading for 0.55 s from 5.95 s" in err) == said
         assert ("# warning: no reading for 0.55 s" in out.read_text()) == said
+        assert profiles.load(out).M_d is not None  # the warning is a comment the reader skips
