@@ -168,17 +168,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     t, X = convert.resample(t, X, rate)
     scale = 1.0
     if check:
-        still = convert.find_still(t, X[:, :3], X[:, 3:], usable=measured(t, logged), longest=fmt.rates is None)
-        if still is None:
-            steady, what = ("a steady force", "units") if fmt.rates is None else \
-                (f"rates below {math.degrees(convert.STILL_RATE):g} deg/s and a steady force", "axes and units")
-            raise ProfileError(f"{file}: the convention check cannot run: the log is nowhere still for "
-                               f"{convert.STILL_SECONDS:g} s ({steady}); check its {what} by hand and add --no-check")
-        try:
-            convert.check_convention(still, ",".join(fmt.axes) + " for the log's x,y,z",
-                                     up=None if fmt.rates is None else (0.0, 0.0, 1.0))
-        except ProfileError as exc:
-            raise ProfileError(f"{file}: {exc}") from None
+        still = _convention_checked(file, fmt, t, X, logged)
         if to_g:
             scale = G / float(np.linalg.norm(still.f_cabin))
             X[:, 3:] *= scale
@@ -202,6 +192,24 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
                 + (f"; readings scaled by {scale:.4f} to read 1 g where still (--to-g)" if to_g else "")
                 + ("; modulus |f| only" if modulus else "")] + warnings
     return path, comments
+
+
+def _convention_checked(file: Path, fmt: LogFormat, t, X, logged) -> convert.Still:
+    """The still stretch of the log's grid (``t``, ``X`` = omega, f in the cabin frame), whose force
+    the convention check has passed: +1 g up, or 1 g in whatever direction without rates, over the
+    longest steady stretch (:func:`.convert.find_still`), never across a gap (:func:`measured`)."""
+    still = convert.find_still(t, X[:, :3], X[:, 3:], usable=measured(t, logged), longest=fmt.rates is None)
+    if still is None:
+        steady, what = ("a steady force", "units") if fmt.rates is None else \
+            (f"rates below {math.degrees(convert.STILL_RATE):g} deg/s and a steady force", "axes and units")
+        raise ProfileError(f"{file}: the convention check cannot run: the log is nowhere still for "
+                           f"{convert.STILL_SECONDS:g} s ({steady}); check its {what} by hand and add --no-check")
+    try:
+        convert.check_convention(still, ",".join(fmt.axes) + " for the log's x,y,z",
+                                 up=None if fmt.rates is None else (0.0, 0.0, 1.0))
+    except ProfileError as exc:
+        raise ProfileError(f"{file}: {exc}") from None
+    return still
 
 
 def longest_gap(logged, lo: float, hi: float) -> tuple[float, float, float] | None:
