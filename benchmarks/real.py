@@ -90,7 +90,7 @@ def corpus_cases(folder: Path, build: bool = True, forecasts=()) -> list[dict]:
     they are missing. A folder of one's own paths, without an index, is read as it is
     (:func:`own_cases`): nothing is built or written in it."""
     index = folder / "index.json"
-    if folder.is_dir() and not index.exists() and any(folder.glob("*.csv")):
+    if holds_own_paths(folder):
         return own_cases(folder)
     if build and (not index.exists() or json.loads(index.read_text()).get("definition") != corpus.definition()):
         subprocess.run([sys.executable, str(HERE / "corpus.py"), "--out", str(folder)], check=True)
@@ -103,10 +103,16 @@ def corpus_cases(folder: Path, build: bool = True, forecasts=()) -> list[dict]:
     return cases
 
 
+def holds_own_paths(folder: Path) -> bool:
+    """Whether ``folder`` is a folder of one's own paths: CSV files and no corpus index."""
+    return not (folder / "index.json").exists() and any(folder.glob("*.csv"))
+
+
 def own_cases(folder: Path) -> list[dict]:
     """Index entries of a folder of one's own desired paths (``desdemona import log`` writes them): every
     ``NAME.csv`` in it, its form read from its columns, with ``NAME.forecast.csv`` beside it as its
-    forecast where there is one. A file that does not read as a path stops the run, named."""
+    forecast where there is one; the fields the jobs and the table read. A file that does not read as a
+    path stops the run, named."""
     cases = []
     for file in sorted(folder.glob("*.csv")):
         if file.name.endswith(".forecast.csv"):
@@ -116,8 +122,7 @@ def own_cases(folder: Path) -> list[dict]:
         except profiles.ProfileError as exc:
             raise SystemExit(f"--corpus {folder}: {exc}") from None
         case = {"name": file.stem, "file": file.name, "form": "modulus" if path.S_d is None else "six",
-                "duration_s": round(float(path.duration), 1), "peak_g": round(float(np.max(path.M_d)) / profiles.G, 3),
-                "source": str(file), "description": path.description}
+                "duration_s": round(float(path.duration), 1)}
         if file.with_name(f"{file.stem}.forecast.csv").exists():
             case["forecast"] = f"{file.stem}.forecast.csv"
         cases.append(case)
@@ -363,7 +368,7 @@ def main(argv=None) -> int:
         parser.error(f"--rate takes CONFIG=HZ, e.g. dfs=100, not {' '.join(args.rate)}")
 
     own = args.corpus.resolve() != CORPUS.resolve()
-    if own and not (args.corpus / "index.json").exists() and not any(args.corpus.glob("*.csv")):
+    if own and not ((args.corpus / "index.json").exists() or holds_own_paths(args.corpus)):
         parser.error(f"--corpus {args.corpus}: no paths there (no NAME.csv, no index.json); to build the corpus "
                      f"there: python benchmarks/corpus.py --out {args.corpus}")
     wanted = lambda name: args.cases is None or name in args.cases  # noqa: E731

@@ -146,7 +146,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
                            "drop --no-check")
     data = read_log(file, [fmt.time, *fmt.accel, *(fmt.rates or ())])
     t = data[fmt.time] * TIME_UNITS[fmt.time_unit]
-    logged = t.copy()  # the times with a reading, before the gaps between them are bridged
+    logged = t  # the times with a reading, before the grid bridges the gaps between them
     steps = np.diff(t)
     if np.any(steps <= 0):
         k = int(np.argmax(steps <= 0))
