@@ -2,6 +2,7 @@
 convention check names the likely mistake; bad input is one message, exit 2, nothing written."""
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -370,3 +371,112 @@ def test_a_gap_within_the_crop_is_imported_with_a_warning(tmp_path, capsys):
         assert ("no reading for 0.55 s from 5.95 s" in err) == said
         assert ("# warning: no reading for 0.55 s" in out.read_text()) == said
         assert profiles.load(out).M_d is not None  # the warning is a comment the reader skips
+
+
+def dataset_log(file, t, omega, f, axes, origin=1.4e9):
+    """The motion as an IMU dataset (EuRoC's layout) holds it: the header a ``#`` comment, time in
+    nanoseconds from 1970, rates [rad/s] before forces [m/s^2], in the sensor's axes."""
+    R = convert.axes_rotation(axes)
+    with open(file, "w") as out:
+        out.write("#timestamp [ns],w_RS_S_x [rad s^-1],w_RS_S_y [rad s^-1],w_RS_S_z [rad s^-1],"
+                  "a_RS_S_x [m s^-2],a_RS_S_y [m s^-2],a_RS_S_z [m s^-2]\n")
+        for ti, w, a in zip(t, omega @ R, f @ R):
+            out.write(f"{round((origin + ti) * 1e9)}," + ",".join(repr(float(x)) for x in (*w, *a)) + "\n")
+    return file
+
+
+DATASET = ["--accel", "a_RS_S_x [m s^-2],a_RS_S_y [m s^-2],a_RS_S_z [m s^-2]", "--rates",
+           "w_RS_S_x [rad s^-1],w_RS_S_y [rad s^-1],w_RS_S_z [rad s^-1]", "--accel-unit", "m/s2",
+           "--rate-unit", "rad/s", "--time-unit", "ns", "--axes", "up,right,forward"]
+
+
+def test_a_datasets_layout_reads_as_the_same_motion(tmp_path, capsys):
+    """A header in a ``#`` comment above the rows and a nanosecond clock from 1970 (EuRoC's, ROS's):
+    the same path as the plain log, its times as exact; the crop and its messages in the log's clock."""
+    t, omega, f = motion()
+    plain = write_log(tmp_path / "plain.csv", t, omega, f, ("up", "right", "forward"), "m/s2", "rad/s")
+    assert main(["import", "log", str(plain), "--accel-unit", "m/s2", "--rate-unit", "rad/s", "--axes",
+                 "up,right,forward", "--out", str(tmp_path / "a.csv")]) == 0
+    log = dataset_log(tmp_path / "imu.csv", t, omega, f, ("up", "right", "forward"))
+    for time in ("#timestamp [ns]", "timestamp [ns]"):  # as the file shows it, or as the header's name
+        out = tmp_path / "b.csv"
+        assert main(["import", "log", str(log), "--time", time, *DATASET, "--overwrite", "--out", str(out)]) == 0
+        a, b = profiles.load(tmp_path / "a.csv"), profiles.load(out)
+        np.testing.assert_allclose(b.t, a.t, atol=1e-9)
+        np.testing.assert_allclose(b.S_d, a.S_d, atol=1e-4)  # the ns clock as float64: 256 ns steps
+    assert "# source: crop 1400000000-1400000007.99 s" in out.read_text()
+    argv = ["import", "log", str(log), "--time", "timestamp [ns]", *DATASET, "--out", str(tmp_path / "c.csv")]
+    assert main(argv + ["--start", "1400000001.5", "--end", "1400000004"]) == 0
+    assert profiles.load(tmp_path / "c.csv").duration == pytest.approx(2.5)
+    assert main(argv + ["--start", "5", "--overwrite"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--start 5: outside the log, which runs from 1400000000 s to 1400000007.99 s" in err
+
+
+def test_rows_without_a_header_are_refused(tmp_path, capsys):
+    """Numbers where the header should be, with no comment above naming as many columns: one line."""
+    t, omega, f = motion()
+    log = dataset_log(tmp_path / "imu.csv", t, omega, f, ("up", "right", "forward"))
+    lines = log.read_text().splitlines()
+    for k, text in enumerate(([lines[0] + ",extra", *lines[1:]], lines[1:])):
+        bad = tmp_path / f"bad{k}.csv"
+        bad.write_text("\n".join(text) + "\n")
+        assert main(["import", "log", str(bad), "--time", "timestamp [ns]", *DATASET, "--out",
+                     str(tmp_path / "x.csv")]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and f"line {2 - k}: numbers where the header should be" in err
+    assert not (tmp_path / "x.csv").exists()
+
+
+def test_microseconds_declared_as_milliseconds_point_to_the_unit(tmp_path, capsys):
+    t = np.arange(0.0, 8.0, 0.01)
+    omega, f = np.zeros((len(t), 3)), np.tile([0.0, 0.0, G], (len(t), 1))
+    log = write_log(tmp_path / "log.csv", t * 1000.0, omega, f, ("right", "forward", "up"), "m/s2", "rad/s", "ms")
+    argv = ["import", "log", str(log), "--axes", "right,forward,up", "--accel-unit", "m/s2", "--rate-unit", "rad/s",
+            "--out", str(tmp_path / "x.csv"), "--time-unit"]
+    assert main(argv + ["ms"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "read as ms" in err and "Declare --time-unit us" in err
+    assert main(argv + ["us"]) == 0
+    assert profiles.load(tmp_path / "x.csv").duration == pytest.approx(7.99)
+
+
+def test_a_gyros_bias_is_named_and_taken_off_with_zero_rates(tmp_path, capsys):
+    """A resting gyro reading (0.5, 4, -2) deg/s with noise: the check names the bias and --zero-rates;
+    with it the rates are the motion's, the bias in the source line; with --rates none it is refused."""
+    t, omega, f = motion(still=3.0)
+    bias = np.radians([0.5, 4.0, -2.0])
+    noise = np.random.default_rng(3).normal(0.0, np.radians(0.1), omega.shape)
+    log = dataset_log(tmp_path / "imu.csv", t, omega + bias + noise, f, ("up", "right", "forward"))
+    argv = ["import", "log", str(log), "--time", "timestamp [ns]", *DATASET, "--out", str(tmp_path / "x.csv")]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    read = lambda text, words: [float(x) for x in re.search(words + r" \(([^)]*)\) deg/s", text)[1].split(",")]  # noqa: E731
+    assert err.count("\n") == 1 and "--zero-rates takes it off" in err
+    np.testing.assert_allclose(read(err, "rates read a steady"), [0.5, 4.0, -2.0], atol=0.03)
+    assert main(argv + ["--zero-rates"]) == 0
+    path = profiles.load(tmp_path / "x.csv")
+    np.testing.assert_allclose(path.S_d[:, :3], omega[::2][: len(path.t)], atol=np.radians(0.3))
+    np.testing.assert_allclose(read((tmp_path / "x.csv").read_text(), "rates less their bias"), [0.5, 4.0, -2.0],
+                               atol=0.03)
+    for extra, words in ((["--rates", "none", "--modulus"], "--zero-rates needs the angular rates"),
+                         (["--no-check"], "--zero-rates reads the still stretch")):
+        assert main(argv + ["--zero-rates", "--overwrite", *extra]) == 2
+        assert words in capsys.readouterr().err
+
+
+def test_a_sensor_mounted_at_an_angle_is_levelled(tmp_path):
+    """The sensor pitched 15 deg on the vehicle: its still force reads 15 deg off up (within the check);
+    --level turns forces and rates back onto the vehicle's, the motion's own."""
+    t, omega, f = motion()
+    c, s = math.cos(math.radians(15.0)), math.sin(math.radians(15.0))
+    pitch = np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])  # about the cabin's x (right)
+    log = dataset_log(tmp_path / "imu.csv", t, omega @ pitch, f @ pitch, ("up", "right", "forward"))
+    argv = ["import", "log", str(log), "--time", "timestamp [ns]", *DATASET]
+    assert main(argv + ["--out", str(tmp_path / "tilted.csv")]) == 0
+    assert main(argv + ["--level", "--out", str(tmp_path / "level.csv")]) == 0
+    tilted, level = profiles.load(tmp_path / "tilted.csv"), profiles.load(tmp_path / "level.csv")
+    truth = np.column_stack([omega, f])[::2][: len(level.t)]
+    np.testing.assert_allclose(level.S_d, truth, atol=1e-3 * G)
+    assert np.abs(tilted.S_d - truth).max() > 0.2 * G
+    assert "turned by 15 deg so that the force reads straight up" in (tmp_path / "level.csv").read_text()

@@ -357,7 +357,7 @@ def run_import_log(args) -> int:
     fmt = log.LogFormat(args.time.strip(), names(args.accel), rates, args.accel_unit, args.rate_unit or "rad/s",
                         args.time_unit, names(args.axes), lever_arm)
     path, comments = log.from_log(args.file, fmt, args.start, args.end, args.rate, args.modulus, args.check,
-                                  args.to_g)
+                                  args.to_g, args.zero_rates, args.level)
     _say_imported(convert.write_path(args.out, path, comments, args.overwrite), path)
     for line in comments:
         if line.startswith("warning: "):

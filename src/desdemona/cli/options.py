@@ -264,7 +264,8 @@ def _add_import_parser(sub) -> None:
     lg.add_argument("--accel-unit", required=True, choices=("g", "m/s2"), dest="accel_unit")
     lg.add_argument("--rate-unit", choices=("deg/s", "rad/s"), dest="rate_unit",
                     help="the unit of the --rates columns (required unless --rates none)")
-    lg.add_argument("--time-unit", default="s", choices=("s", "ms"), dest="time_unit", help="(default: s)")
+    lg.add_argument("--time-unit", default="s", choices=("s", "ms", "us", "ns"), dest="time_unit",
+                    help="(default: s; ns for a dataset's nanosecond stamps, EuRoC's or ROS's)")
     lg.add_argument("--axes", default="forward,right,down", metavar="X,Y,Z",
                     help="direction of the log's x,y,z: each one of forward/back/right/left/up/down, "
                          "right-handed (default: forward,right,down, vehicle body axes)")
@@ -279,6 +280,12 @@ def _add_import_parser(sub) -> None:
                     help="scale the accelerometer readings so that the still stretch the check finds reads 1 g "
                          "(a sensor whose scale is off, as a phone's can be by 5-10 %%; a reading outside "
                          "0.8-1.25 g is refused as a wrong unit or scale)")
+    lg.add_argument("--zero-rates", action="store_true", dest="zero_rates",
+                    help="take the rates' mean where the log is still off every rate (a gyro's bias, up to 10 "
+                         "deg/s: a MEMS gyro's reads a few deg/s at rest, which would be cued as a turn)")
+    lg.add_argument("--level", action="store_true",
+                    help="turn forces and rates by the smallest rotation that makes the force read straight up "
+                         "where the log is still (a sensor mounted at an angle to the vehicle)")
     _add_import_options(lg, "the log's time")
     lg.set_defaults(run=commands.run_import_log)
 

@@ -42,6 +42,9 @@ STILL_SECONDS = 1.0          # [s] the shortest still stretch the check uses
 #: [rad/s] |omega| below this: above a resting IMU's gyro noise and bias, below an airliner's steady
 #: turn (1.45 deg/s at 30 deg of bank, which reads 1.15 g: not still).
 STILL_RATE = np.radians(1.0)
+#: [rad/s] the largest mean rate at rest read as a gyro's bias (``find_still(biased=True)``): MEMS
+#: gyros' run up to a few deg/s uncalibrated (EuRoC's ADIS16448 4.6); beyond this it is a turn.
+MAX_GYRO_BIAS = np.radians(10.0)
 STILL_SPREAD = 0.03          # RMS of f about its mean, relative to |mean f| ...
 STILL_SPREAD_ABS = 0.05      # ... plus this [m/s^2]
 UP_TOLERANCE_DEG = 30.0      # direction of the still force from up (a parked car on a slope)
@@ -132,17 +135,27 @@ def filter_note(native_hz: float, rate_hz: float) -> str:
     return f"{rate_hz:g} Hz from {native_hz:.4g} Hz through a zero-phase Butterworth low-pass at {cutoff:g} Hz"
 
 
-def crop(t, X, start: float | None, end: float | None, what: str) -> tuple[np.ndarray, np.ndarray]:
+def seconds(x: float) -> str:
+    """A time [s] to the microsecond, without trailing zeros: ``37.04``, and ``1403636599.75856`` for a
+    clock that counts from 1970, which ``:g`` would print as 1.40364e+09."""
+    return f"{float(x):.6f}".rstrip("0").rstrip(".")
+
+
+def crop(t, X, start: float | None, end: float | None, what: str,
+         origin: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
     """The samples with ``start <= t <= end`` [s] (None: from the first, to the last), time shifted so
-    that the crop starts at 0. Fewer than two samples raises :class:`ProfileError`."""
+    that the crop starts at 0. Fewer than two samples raises :class:`ProfileError`, its times told
+    ``origin`` [s] later (where ``t`` counts from a log's first time)."""
     t = np.asarray(t, dtype=float)
     lo = t[0] if start is None else float(start)
     hi = t[-1] if end is None else float(end)
     if start is not None and end is not None and not hi > lo:
-        raise ProfileError(f"--start {lo:g} and --end {hi:g}: the end must be after the start")
+        raise ProfileError(f"--start {seconds(origin + lo)} and --end {seconds(origin + hi)}: the end must be after "
+                           f"the start")
     keep = (t >= lo - 1e-9) & (t <= hi + 1e-9)
     if np.count_nonzero(keep) < 2:
-        raise ProfileError(f"{what}: nothing between {lo:g} s and {hi:g} s (it runs from {t[0]:g} s to {t[-1]:g} s)")
+        raise ProfileError(f"{what}: nothing between {seconds(origin + lo)} s and {seconds(origin + hi)} s (it runs "
+                           f"from {seconds(origin + t[0])} s to {seconds(origin + t[-1])} s)")
     return t[keep] - lo, np.asarray(X)[keep]
 
 
@@ -178,10 +191,11 @@ class Still:
     t0: float
     t1: float
     f_cabin: np.ndarray
+    omega_cabin: np.ndarray | None = None  # the mean rates [rad/s] (a gyro's bias, where read about it)
 
 
 def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=None,
-               longest: bool = False) -> Still | None:
+               longest: bool = False, biased: bool = False) -> Still | None:
     """The stillest stretch of at least :data:`STILL_SECONDS` where the rates are near zero
     (|omega| < ``max_rate`` [rad/s]) and the force nearly constant (RMS about its mean below
     :data:`STILL_SPREAD` of its size plus :data:`STILL_SPREAD_ABS`), or None. Uniform ``t`` [s]; the
@@ -190,15 +204,25 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
 
     ``longest``: the stillest second of the longest such stretch; for a log without rates (zeros),
     where a steady turn or a held pull is steady too, but shorter than a wait at rest or at a constant
-    speed (2 s at 1.15 g in a ride were taken for the rest before it)."""
+    speed (2 s at 1.15 g in a ride were taken for the rest before it).
+
+    ``biased``: the rates are read about their mean over the stretch, which may be up to
+    :data:`MAX_GYRO_BIAS` (a gyro's bias: EuRoC's read 4.6 deg/s at rest); the Still carries that mean."""
     t = np.asarray(t, dtype=float)
     step = float(np.median(np.diff(t)))
     w = int(round(STILL_SECONDS / step)) + 1
     if len(t) < w:
         return None
     f = np.asarray(f_cabin, dtype=float)
-    rates = np.linalg.norm(omega_cabin, axis=1)
-    windows_rate = np.lib.stride_tricks.sliding_window_view(rates, w).max(axis=1)
+    omega = np.asarray(omega_cabin, dtype=float)
+    omega_mean = np.zeros((len(t) - w + 1, 3))
+    if biased:  # the largest deviation from the window's mean rate, the mean itself at most MAX_GYRO_BIAS
+        windows = np.lib.stride_tricks.sliding_window_view(omega, w, axis=0)  # (windows, 3, w)
+        omega_mean = windows.mean(axis=2)
+        windows_rate = np.linalg.norm(windows - omega_mean[:, :, None], axis=1).max(axis=1)
+        windows_rate[np.linalg.norm(omega_mean, axis=1) > MAX_GYRO_BIAS] = np.inf
+    else:
+        windows_rate = np.lib.stride_tricks.sliding_window_view(np.linalg.norm(omega, axis=1), w).max(axis=1)
     c1 = np.vstack([np.zeros(3), np.cumsum(f, axis=0)])
     c2 = np.vstack([np.zeros(3), np.cumsum(f ** 2, axis=0)])
     mean = (c1[w:] - c1[:-w]) / w
@@ -218,7 +242,7 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
         still[starts[j]:ends[j]] = True
     score = np.where(still, spread / (size + STILL_SPREAD_ABS) + windows_rate / max_rate, np.inf)
     k = int(np.argmin(score))
-    return Still(float(t[k]), float(t[k + w - 1]), mean[k])
+    return Still(float(t[k]), float(t[k + w - 1]), mean[k], omega_mean[k])
 
 
 def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0)) -> None:
@@ -258,6 +282,21 @@ def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0)) -> N
     k = int(np.argmax(np.abs(f[:2])))
     raise ProfileError(f"{where}: g lies along cabin {'xy'[k]} ({('right', 'forward')[k]}), not up: which "
                        f"axis is vertical?{hint}")
+
+
+def levelling(f_still) -> np.ndarray:
+    """(3, 3) the smallest rotation that turns the still force ``f_still`` (3,) in the cabin frame onto
+    straight up (+z), for a sensor mounted at an angle to the vehicle (EuRoC's, 15-19 deg): about the
+    horizontal axis ``f x z`` by the angle between them (Rodrigues' formula)."""
+    a = np.asarray(f_still, dtype=float) / np.linalg.norm(f_still)
+    z = np.array([0.0, 0.0, 1.0])
+    axis, c = np.cross(a, z), float(a @ z)
+    s = float(np.linalg.norm(axis))
+    if s < 1e-12:  # already up (a force pointing down is refused by the check before)
+        return np.eye(3)
+    k = axis / s
+    K = np.array([[0.0, -k[2], k[1]], [k[2], 0.0, -k[0]], [-k[1], k[0], 0.0]])
+    return np.eye(3) + s * K + (1.0 - c) * K @ K
 
 
 def up_from_attitude(phi, theta) -> np.ndarray:

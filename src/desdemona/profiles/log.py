@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import csv
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -30,7 +30,9 @@ from desdemona.profiles.path import G, DesiredPath, ProfileError
 STANDARD_GRAVITY = 9.80665
 ACCEL_UNITS = {"g": STANDARD_GRAVITY, "m/s2": 1.0, "m/s^2": 1.0}
 RATE_UNITS = {"deg/s": math.pi / 180.0, "rad/s": 1.0}
-TIME_UNITS = {"s": 1.0, "ms": 1e-3}
+#: Seconds per unit of a time column; ``us`` and ``ns`` are the clocks of IMU datasets and robot logs
+#: (EuRoC's and ROS's time stamps are nanoseconds since 1970).
+TIME_UNITS = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "ns": 1e-9}
 #: The written path's rate when none is given: the log's own, at most this [Hz].
 MAX_DEFAULT_RATE = 100.0
 #: A gap between two readings longer than this many of the log's median steps is bridged by
@@ -44,7 +46,7 @@ class LogFormat:
 
     time : the time column; accel, rates : three column names each (the log's x, y, z), rates None
     for a log without angular rates (the modulus form only, :func:`from_log`);
-    accel_unit : ``g`` or ``m/s2``; rate_unit : ``deg/s`` or ``rad/s``; time_unit : ``s`` or ``ms``;
+    accel_unit : ``g`` or ``m/s2``; rate_unit : ``deg/s`` or ``rad/s``; time_unit : ``s``, ``ms``, ``us`` or ``ns``;
     axes : the cabin-frame direction of the log's x, y, z (``forward,right,down`` = vehicle body axes);
     lever_arm : (3,) [m] from the sensor to the head, in the log's axes.
     """
@@ -77,27 +79,53 @@ class LogFormat:
 
 def data_lines(file: Path) -> list[tuple[int, str]]:
     """(line number, text) of a UTF-8 CSV's lines other than blank ones and ``#`` comments; the first is
-    its header. A file that cannot be read, is not UTF-8 or holds no line raises :class:`ProfileError`."""
+    its header. Where the first such line is all numbers, the header is the ``#`` comment right above it
+    if that names as many columns (a dataset's ``#timestamp [ns],w_RS_S_x [rad s^-1],...``), its ``#``
+    dropped. A file that cannot be read, is not UTF-8, holds no line or no header raises
+    :class:`ProfileError`."""
     try:
         text = file.read_bytes().decode("utf-8-sig")
     except OSError as exc:
         raise ProfileError(f"{file}: cannot read: {exc.strerror or exc}") from None
     except UnicodeDecodeError:
         raise ProfileError(f"{file}: not UTF-8 text; save it as UTF-8 CSV") from None
-    lines = [(i + 1, line) for i, line in enumerate(text.splitlines())
-             if line.strip() and not line.lstrip().startswith("#")]
+    numbered = list(enumerate(text.splitlines(), start=1))
+    lines = [(i, line) for i, line in numbered if line.strip() and not line.lstrip().startswith("#")]
     if not lines:
         raise ProfileError(f"{file}: no header and no data")
+    first, row = lines[0]
+    if _numbers_only(row):  # no header line: the header may be the comment just above (EuRoC's "#timestamp [ns],...")
+        above = numbered[first - 2][1].lstrip() if first > 1 else ""
+        header = above[1:]
+        if not (above.startswith("#") and len(_cells(header)) == len(_cells(row)) and not _numbers_only(header)):
+            raise ProfileError(f"{file}: line {first}: numbers where the header should be: the first line that is "
+                               f"not a '#' comment must name the columns")
+        lines[0:0] = [(first - 1, header)]
     return lines
 
 
+def _cells(line: str) -> list[str]:
+    return [c.strip() for c in next(csv.reader([line]), [])]
+
+
+def _numbers_only(line: str) -> bool:
+    """Whether every cell of a CSV line reads as a number (a row of data, not a header)."""
+    try:
+        [float(c) for c in _cells(line)]
+    except ValueError:
+        return False
+    return True
+
+
 def read_log(file: str | Path, columns: list[str]) -> dict[str, np.ndarray]:
-    """The named columns of a CSV log as float arrays. ``#`` lines are comments; the first other line
-    names the columns. A missing column, a cell that is not a number, fewer than two rows raise
-    :class:`ProfileError` naming them (and the log's columns)."""
+    """The named columns of a CSV log as float arrays, keyed by the names given. ``#`` lines are
+    comments; the first other line names the columns, or the comment above it (:func:`data_lines`),
+    where a name may be given with its ``#`` too. A missing column, a cell that is not a number, fewer
+    than two rows raise :class:`ProfileError` naming them (and the log's columns)."""
     file = Path(file)
     lines = data_lines(file)
-    header = [c.strip() for c in next(csv.reader([lines[0][1]]))]
+    header = _cells(lines[0][1])
+    given, columns = columns, [c[1:].strip() if c not in header and c.startswith("#") else c for c in columns]
     missing = [c for c in columns if c not in header]
     if missing:
         raise ProfileError(f"{file}: no column{'s' if len(missing) > 1 else ''} {', '.join(map(repr, missing))}; "
@@ -116,12 +144,13 @@ def read_log(file: str | Path, columns: list[str]) -> dict[str, np.ndarray]:
     if len(rows) < 2:
         raise ProfileError(f"{file}: needs at least two rows of data, found {len(rows)}")
     data = np.array(rows)
-    return {c: data[:, k] for k, c in enumerate(columns)}
+    return {c: data[:, k] for k, c in enumerate(given)}
 
 
 def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None = None,
              end: float | None = None, rate: float | None = None, modulus: bool = False,
-             check: bool = True, to_g: bool = False) -> tuple[DesiredPath, list[str]]:
+             check: bool = True, to_g: bool = False, zero_rates: bool = False,
+             level: bool = False) -> tuple[DesiredPath, list[str]]:
     """The desired path of a logged motion (see the module's docstring) from ``start`` to ``end`` [s of
     the log's time] (None: all), at ``rate`` [Hz] (None: the log's own, at most
     :data:`MAX_DEFAULT_RATE`), its time 0 at the crop's start; with ``modulus`` its ``t,M`` form.
@@ -132,26 +161,23 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     rates (``fmt.rates`` None) gives only the modulus form (``modulus``); its check reads only |f| (1 g
     at rest, in whatever axes) over its longest stretch of steady force. ``to_g``: the readings are
     scaled so that the still stretch reads 1 g (a sensor whose scale is off: a phone read 0.90-0.96 g
-    in a coaster's station), within the check's 0.8-1.25 g.
+    in a coaster's station), within the check's 0.8-1.25 g. ``zero_rates``: the rates' mean where the
+    log is still (a gyro's bias, up to :data:`.convert.MAX_GYRO_BIAS`) is taken off every rate, before
+    the lever arm and the check (:func:`gyro_bias`). ``level``: forces and rates are turned by the
+    smallest rotation that makes the still force read straight up (:func:`.convert.levelling`), for a
+    sensor mounted at an angle to the vehicle.
     """
     file = Path(file)
-    if fmt.rates is None and not modulus:
-        raise ProfileError("--rates none: without angular rates a log gives only the modulus form t,M (dfs): "
-                           "add --modulus, or name the rate columns with --rates")
-    if fmt.rates is None and any(fmt.lever_arm):
-        raise ProfileError("--lever-arm needs the angular rates (the head's force depends on them): name the rate "
-                           "columns with --rates")
-    if to_g and not check:
-        raise ProfileError("--to-g scales the readings by the still stretch the convention check finds: "
-                           "drop --no-check")
+    _refuse_combinations(fmt, modulus, check, to_g, zero_rates, level)
     data = read_log(file, [fmt.time, *fmt.accel, *(fmt.rates or ())])
-    t = data[fmt.time] * TIME_UNITS[fmt.time_unit]
+    clock = data[fmt.time]  # from here on times count from the log's first (a clock from 1970 keeps its digits)
+    origin, t = float(clock[0]) * TIME_UNITS[fmt.time_unit], (clock - clock[0]) * TIME_UNITS[fmt.time_unit]
     logged = t  # the times with a reading, before the grid bridges the gaps between them
     steps = np.diff(t)
     if np.any(steps <= 0):
         k = int(np.argmax(steps <= 0))
-        raise ProfileError(f"{file}: column {fmt.time!r}: time {t[k + 1]:g} s at data row {k + 2} does not "
-                           f"increase (previous {t[k]:g} s)")
+        raise ProfileError(f"{file}: column {fmt.time!r}: time {convert.seconds(origin + t[k + 1])} s at data row "
+                           f"{k + 2} does not increase (previous {convert.seconds(origin + t[k])} s)")
     _check_time_unit(file, fmt, t)
     R = convert.axes_rotation(fmt.axes)
     f = convert.turn_to_cabin(np.column_stack([data[c] for c in fmt.accel]) * ACCEL_UNITS[fmt.accel_unit], R)
@@ -162,39 +188,98 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     rate = min(native, MAX_DEFAULT_RATE) if rate is None else float(rate)
     if not rate > 0:
         raise ProfileError(f"--rate {rate:g}: must be a positive number of samples per second")
+    bias = gyro_bias(file, t, X, rate, logged) if zero_rates else None
+    if bias is not None:
+        X[:, :3] -= bias.omega_cabin
     r_cabin = R @ np.asarray(fmt.lever_arm, dtype=float)
     if np.any(r_cabin != 0):
         X[:, 3:] = head_force(X[:, :3], X[:, 3:], r_cabin, native)
     t, X = convert.resample(t, X, rate)
     scale = 1.0
     if check:
-        still = _convention_checked(file, fmt, t, X, logged)
+        still = _convention_checked(file, fmt, t, X, logged, origin)
         if to_g:
             scale = G / float(np.linalg.norm(still.f_cabin))
             X[:, 3:] *= scale
-    lo = float(t[0]) if start is None else float(start)
-    t, X = convert.crop(t, X, lo, end, str(file))
-    convert.check_no_crash(t + lo, X[:, 3:], str(file))
-    span = f"{lo:g}-{lo + t[-1]:.6g} s"
-    description = f"log {file.name}, {span}"
-    path = convert.make_path(file.stem, t, X[:, :3], X[:, 3:], description, modulus)
-    rates = "none" if fmt.rates is None else f"{','.join(fmt.rates)} [{fmt.rate_unit}]"
+        turn = convert.levelling(still.f_cabin) if level else None
+        if turn is not None:
+            X = np.column_stack([X[:, :3] @ turn.T, X[:, 3:] @ turn.T])
+    lo, t, X = _cropped(file, t, X, start, end, origin)
+    convert.check_no_crash(origin + lo + t, X[:, 3:], str(file))
+    span = f"{convert.seconds(origin + lo)}-{convert.seconds(origin + lo + t[-1])} s"
+    path = convert.make_path(file.stem, t, X[:, :3], X[:, 3:], f"log {file.name}, {span}", modulus)
+    changes = [f"readings scaled by {scale:.4f} to read 1 g where still (--to-g)"] if to_g else []
+    if level:
+        tilt = math.degrees(math.acos(min(1.0, float(turn[2, 2]))))
+        changes.append(f"turned by {tilt:.3g} deg so that the force reads straight up where still (--level)")
+    if bias is not None:
+        changes.append(f"rates less their bias ({', '.join(f'{math.degrees(x):.3g}' for x in bias.omega_cabin)}) "
+                       f"deg/s in the cabin's x,y,z, read still from {convert.seconds(origin + bias.t0)} s (--zero-rates)")
+    comments = _source_lines(file, fmt, span, f"{convert.filter_note(native, rate)}; convention check "
+                             f"{'passed' if check else 'skipped (--no-check)'}", changes, modulus)
     gap = longest_gap(logged, lo, lo + float(t[-1]))
-    warnings = [] if gap is None else [
-        f"warning: no reading for {gap[0]:.3g} s from {gap[1]:.6g} s of the log's time ({gap[0] / gap[2]:.0f} of its "
-        f"median steps of {gap[2]:.3g} s), bridged by a straight line"]
-    comments = [f"source: log {file.name}, columns time {fmt.time} [{fmt.time_unit}], accel "
-                f"{','.join(fmt.accel)} [{fmt.accel_unit}], rates {rates}",
-                f"source: axes {','.join(fmt.axes)} for the log's x,y,z -> cabin (right,forward,up); lever arm "
-                f"sensor->head {','.join(f'{x:g}' for x in fmt.lever_arm)} m (log axes)",
-                f"source: crop {span} of the log's time (t = 0 here), {convert.filter_note(native, rate)}; "
-                f"convention check {'passed' if check else 'skipped (--no-check)'}"
-                + (f"; readings scaled by {scale:.4f} to read 1 g where still (--to-g)" if to_g else "")
-                + ("; modulus |f| only" if modulus else "")] + warnings
-    return path, comments
+    return path, comments + ([] if gap is None else [
+        f"warning: no reading for {gap[0]:.3g} s from {convert.seconds(origin + gap[1])} s of the log's time "
+        f"({gap[0] / gap[2]:.0f} of its median steps of {gap[2]:.3g} s), bridged by a straight line"])
 
 
-def _convention_checked(file: Path, fmt: LogFormat, t, X, logged) -> convert.Still:
+def _cropped(file: Path, t, X, start: float | None, end: float | None, origin: float):
+    """(the crop's start, its times from 0, its samples) of the grid ``t`` [s from the log's first
+    time, ``origin`` on the log's clock], ``X``, from ``start`` to ``end`` [s of the log's clock].
+    A start or end outside the log by more than a step is refused: on a clock from 1970 ``--start 5``
+    would otherwise import the whole log (:func:`.convert.crop`)."""
+    step = float(t[1] - t[0])
+    for option, when in (("--start", start), ("--end", end)):
+        if when is not None and not -step <= float(when) - origin <= float(t[-1]) + step:
+            raise ProfileError(f"{file}: {option} {convert.seconds(when)}: outside the log, which runs from "
+                               f"{convert.seconds(origin)} s to {convert.seconds(origin + t[-1])} s of its own clock")
+    lo = 0.0 if start is None else float(start) - origin
+    t, X = convert.crop(t, X, lo, None if end is None else float(end) - origin, str(file), origin)
+    return lo, t, X
+
+
+def _refuse_combinations(fmt: LogFormat, modulus: bool, check: bool, to_g: bool, zero_rates: bool,
+                         level: bool) -> None:
+    """Refuse the options of :func:`from_log` that cannot go together, naming the fix."""
+    if fmt.rates is None and not modulus:
+        raise ProfileError("--rates none: without angular rates a log gives only the modulus form t,M (dfs): "
+                           "add --modulus, or name the rate columns with --rates")
+    for option, wanted in (("--lever-arm", any(fmt.lever_arm)), ("--zero-rates", zero_rates), ("--level", level)):
+        if fmt.rates is None and wanted:
+            raise ProfileError(f"{option} needs the angular rates: name the rate columns with --rates")
+    for option, wanted in (("--to-g", to_g), ("--zero-rates", zero_rates), ("--level", level)):
+        if wanted and not check:
+            raise ProfileError(f"{option} reads the still stretch that the convention check finds: drop --no-check")
+
+
+def _source_lines(file: Path, fmt: LogFormat, span: str, filtered: str, changes: list[str],
+                  modulus: bool) -> list[str]:
+    """The ``source:`` comment lines of an imported log: its columns and units, its axes and lever arm,
+    the crop, the filter and the check, and what was changed in the readings."""
+    rates = "none" if fmt.rates is None else f"{','.join(fmt.rates)} [{fmt.rate_unit}]"
+    return [f"source: log {file.name}, columns time {fmt.time} [{fmt.time_unit}], accel "
+            f"{','.join(fmt.accel)} [{fmt.accel_unit}], rates {rates}",
+            f"source: axes {','.join(fmt.axes)} for the log's x,y,z -> cabin (right,forward,up); lever arm "
+            f"sensor->head {','.join(f'{x:g}' for x in fmt.lever_arm)} m (log axes)",
+            f"source: crop {span} of the log's time (t = 0 here), {filtered}"
+            + "".join(f"; {change}" for change in changes) + ("; modulus |f| only" if modulus else "")]
+
+
+def gyro_bias(file: Path, t, X, rate: float, logged) -> convert.Still:
+    """The still stretch of the log's grid (``t``, ``X`` = omega, f in the cabin frame, before the
+    anti-alias filter to ``rate`` [Hz]) read with the rates about their mean, the gyro's bias
+    (:func:`.convert.find_still`, ``biased``): a resting MEMS gyro reads a few deg/s, which would be
+    cued as a turn. Refused where the log is nowhere still, or its rates are not steady there."""
+    tr, Xr = convert.resample(t, X, rate)  # noise filtered as the check will see it
+    still = convert.find_still(tr, Xr[:, :3], Xr[:, 3:], usable=measured(tr, logged), biased=True)
+    if still is None:
+        raise ProfileError(f"{file}: --zero-rates: the log is nowhere still for {convert.STILL_SECONDS:g} s (a "
+                           f"steady force, rates steady within {math.degrees(convert.STILL_RATE):g} deg/s of a mean "
+                           f"below {math.degrees(convert.MAX_GYRO_BIAS):g} deg/s): no bias to read")
+    return still
+
+
+def _convention_checked(file: Path, fmt: LogFormat, t, X, logged, origin: float) -> convert.Still:
     """The still stretch of the log's grid (``t``, ``X`` = omega, f in the cabin frame), whose force
     the convention check has passed: +1 g up, or 1 g in whatever direction without rates, over the
     longest steady stretch (:func:`.convert.find_still`), never across a gap (:func:`measured`)."""
@@ -202,10 +287,18 @@ def _convention_checked(file: Path, fmt: LogFormat, t, X, logged) -> convert.Sti
     if still is None:
         steady, what = ("a steady force", "units") if fmt.rates is None else \
             (f"rates below {math.degrees(convert.STILL_RATE):g} deg/s and a steady force", "axes and units")
+        biased = None if fmt.rates is None else convert.find_still(t, X[:, :3], X[:, 3:], usable=measured(t, logged),
+                                                                   biased=True)
+        hint = "" if biased is None else (
+            f"; from {convert.seconds(origin + biased.t0)} s the force is steady and the rates read a steady "
+            f"({', '.join(f'{math.degrees(x):.3g}' for x in biased.omega_cabin)}) deg/s (cabin x,y,z): a gyro's "
+            f"bias? --zero-rates takes it off")
         raise ProfileError(f"{file}: the convention check cannot run: the log is nowhere still for "
-                           f"{convert.STILL_SECONDS:g} s ({steady}); check its {what} by hand and add --no-check")
+                           f"{convert.STILL_SECONDS:g} s ({steady}){hint}; else check its {what} by hand and add "
+                           f"--no-check")
     try:
-        convert.check_convention(still, ",".join(fmt.axes) + " for the log's x,y,z",
+        convert.check_convention(replace(still, t0=origin + still.t0, t1=origin + still.t1),
+                                 ",".join(fmt.axes) + " for the log's x,y,z",
                                  up=None if fmt.rates is None else (0.0, 0.0, 1.0))
     except ProfileError as exc:
         raise ProfileError(f"{file}: {exc}") from None
@@ -236,7 +329,8 @@ def measured(grid, logged) -> np.ndarray:
 
 
 def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray) -> None:
-    """Refuse a time column in a unit 1000 times smaller than declared (milliseconds declared as seconds):
+    """Refuse a time column in a unit 1000 times smaller than declared (milliseconds declared as seconds,
+    microseconds as milliseconds):
     the CSV reader's rule (:func:`.csvfile.time_unit_problem`), on the times in seconds ``t``."""
     problem = csvfile.time_unit_problem(t)
     if problem is None:
@@ -249,9 +343,11 @@ def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray) -> None:
     if fmt.time_unit == "s":
         raise ProfileError(f"{where} looks like milliseconds: {csvfile.describe_steps(t)}; a recording is sampled "
                            f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: declare --time-unit ms")
-    raise ProfileError(f"{where}: {csvfile.describe_steps(t)} read as milliseconds; a recording is sampled "
-                       f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: is the column in microseconds? "
-                       f"Convert it to s or ms")
+    smaller = dict(zip(TIME_UNITS, list(TIME_UNITS)[1:]))  # each unit's next, 1000 times smaller
+    fix = f"declare --time-unit {smaller[fmt.time_unit]}" if fmt.time_unit in smaller else "check the column"
+    raise ProfileError(f"{where}: {csvfile.describe_steps(t)} read as {fmt.time_unit}; a recording is sampled "
+                       f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: is the column in a unit 1000 times "
+                       f"smaller? {fix[0].upper() + fix[1:]}")
 
 
 def head_force(omega, f_sensor, r, rate_hz: float) -> np.ndarray:
