@@ -44,8 +44,8 @@ what the occupant feels, read from the result's ``summary.json`` ("quality"):
 
 Below the table, the on-line rows worse than the classical loop on any of those measures (the felt
 direction by the part the machine made), or reversing a joint's acceleration more than once a second,
-marked + where the run's ``perfect`` row is worse too and o where its ``offline`` row is (point 1 of the
-on-line issue, :func:`against_loop`).
+marked + where the run's ``perfect`` row is worse too, o where its ``offline`` row is, and t where the
+desired force itself reverses as often (point 1 of the on-line issue, :func:`against_loop`).
 
 The machine's load average is recorded before and after the run, and so is its own spread of time
 (:func:`jitter`): a fixed piece of work timed again and again, whose p99 over its median is what the
@@ -68,7 +68,7 @@ import corpus  # benchmarks/corpus.py: the script's own folder is on the path
 import tables
 import numpy as np
 
-from desdemona import batch, perception, profiles
+from desdemona import batch, metrics, perception, profiles
 
 HERE = Path(__file__).resolve().parent
 CORPUS = HERE / "corpus"
@@ -203,6 +203,15 @@ def shape_thresholds(path: profiles.DesiredPath, channel: str) -> float:
     return float(np.ptp(values) / perception.THRESHOLDS[column])
 
 
+def target_reversals(path: profiles.DesiredPath) -> float:
+    """How often the desired force itself reverses [1/s]: the most of its channels (minus g on z; the
+    modulus minus g), with the joints' hysteresis of 5 % of the channel's peak
+    (:func:`desdemona.metrics.reversals_per_second`). A joint that makes a force channel reverses its
+    acceleration whenever the force does: a multicopter's hover bobs at 1-2 Hz."""
+    force = (path.modulus - profiles.G)[:, None] if path.S_d is None else path.S_d[:, 3:] - [0.0, 0.0, profiles.G]
+    return float(np.max(metrics.reversals_per_second(path.t, force)))
+
+
 def against_loop(rows: list[dict]) -> str:
     """Point 1 of the on-line issue, row by row: where an on-line row is worse than the classical loop
     of the same run (felt force RMS or peak felt rotation above it, correlation below it, the felt
@@ -213,7 +222,8 @@ def against_loop(rows: list[dict]) -> str:
     fails as well: the cost's own trade, which no prediction lifts, rather than the prediction's. A
     row marked o is one whose off-line optimum (the run's ``offline`` row: the whole future, solved to
     convergence) is worse than this row's loop on the same measure: there point 1 asks for more than
-    the optimum of the cost gives.
+    the optimum of the cost gives. A reversal count marked t is at most the desired force's own
+    (``target_reversals`` of the row, :func:`target_reversals`): following the target takes as many.
 
     The felt direction is judged by the part the machine made (``made``: beyond a still level cabin's,
     :func:`desdemona.metrics.direction_made`), as the issue defines it: the machine "never turns the
@@ -242,6 +252,7 @@ def against_loop(rows: list[dict]) -> str:
         marks = {id(r): ("*" if key == "correlation" and r.get("shape", 1.0) < 1.0 else "")
                  + ("+" if r["mode"] != "perfect" and worse(perfect.get((r["case"], r["config"]), {})) else "")
                  + ("o" if worse(offline.get((r["case"], r["config"]), {}), by=r) else "")  # against r's loop
+                 + ("t" if key == "reversals" and r[key] <= r.get("target_reversals", 0.0) else "")
                  for r in hits}
         used.update(*marks.values())
         cells = [f"{r['case']} on {r['config']} ({r['mode']}) {format(r[key], fmt)} against {format(bound(r), fmt)}"
@@ -250,7 +261,8 @@ def against_loop(rows: list[dict]) -> str:
     if any(r.get("shape", 1.0) < 1.0 for r in judged):
         lines.append("- *: the desired channel ranges over less than one perception threshold")
     legend = {"+": "so is the same controller with the future known (perfect): the cost's own trade",
-              "o": "so is the off-line optimum, against the same loop: more than the cost's optimum gives"}
+              "o": "so is the off-line optimum, against the same loop: more than the cost's optimum gives",
+              "t": "the desired force itself reverses at least as often: following it takes as many reversals"}
     lines += [f"- {mark}: {text}" for mark, text in legend.items() if mark in used]
     head = f"Against the classical loop, {len(judged) - len(failing)} of {len(judged)} on-line rows worse on no measure:"
     return "\n".join([head, "", *lines])
@@ -417,6 +429,7 @@ def main(argv=None) -> int:
     for r in rows:
         if "channel" in r:
             r["shape"] = shape_thresholds(paths[(r["case"], r["form"])], r["channel"])
+            r["target_reversals"] = target_reversals(paths[(r["case"], r["form"])])
     online = {(r["case"], r["config"]): r for r in rows if r["mode"] != "offline" and "classical_force_rms" in r}
     for r in rows:  # the off-line rows beside the same classical loop
         if r["mode"] == "offline" and (r["case"], r["config"]) in online:

@@ -31,13 +31,14 @@ def test_real_lists_the_rows_worse_than_the_loop_measure_by_measure(monkeypatch)
             row("turned", direction_peak=31.0, direction_made=31.0, rotation_peak=21.0),
             row("upright", direction_peak=29.0, direction_made=29.0),
             row("push-over", direction_peak=179.0, direction_made=3.0, classical_direction_peak=170.0),
-            row("shaky", reversals=1.2), {**row("off-line"), "mode": "offline", "force_rms": 9.0},
+            row("shaky", reversals=1.2, target_reversals=0.3), row("bobbing", reversals=1.6, target_reversals=1.7),
+            {**row("off-line"), "mode": "offline", "force_rms": 9.0},
             # the future known: as forceful (the cost's trade, marked +), not as late (the prediction's)
             {**row("forceful", force_rms=2.2), "mode": "perfect"}, {**row("late"), "mode": "perfect"},
             # the whole future solved off-line: as forceful against the hold row's loop (marked o)
             {**row("forceful", force_rms=2.1, classical_force_rms=None), "mode": "offline"}]
     text = real.against_loop(rows)
-    assert text.startswith("Against the classical loop, 4 of 9 on-line rows worse on no measure")
+    assert text.startswith("Against the classical loop, 4 of 10 on-line rows worse on no measure")
     lines = dict(line[2:].split(": ", 1) for line in text.splitlines()[2:])
     assert lines["felt force RMS above the loop's"] == ("2 rows: forceful on dfs (hold) 2.500 against 2.000+o; "
                                                         "forceful on dfs (perfect) 2.200 against 2.000o")
@@ -47,11 +48,25 @@ def test_real_lists_the_rows_worse_than_the_loop_measure_by_measure(monkeypatch)
     # 30 deg or the loop's, the larger: 29 deg against a loop's 20 is not worse; nor is a push-over's
     # 179 deg against the loop's 170, where a still cabin is as far off (the machine made 3 deg of it)
     assert lines["felt direction made above max(30 deg, the loop's)"] == "1 row: turned on dfs (hold) 31.0 against 30.0"
-    assert lines["more than one reversal a second"] == "1 row: shaky on dfs (hold) 1.20 against 1.00"
+    assert lines["more than one reversal a second"] == ("2 rows: shaky on dfs (hold) 1.20 against 1.00; "
+                                                        "bobbing on dfs (hold) 1.60 against 1.00t")
+    assert "desired force itself reverses" in lines["t"]
     assert "less than one perception threshold" in lines["*"]
-    assert real.against_loop([rows[7]]) == ""  # off-line rows are not judged against the loop
-    assert "+" not in real.against_loop(rows[:8])  # no perfect row, no mark
-    assert "2.000+; " in real.against_loop(rows[:10])  # no off-line twin, no o
+    assert real.against_loop([rows[8]]) == ""  # off-line rows are not judged against the loop
+    assert "+" not in real.against_loop(rows[:9])  # no perfect row, no mark
+    assert "2.000+; " in real.against_loop(rows[:11])  # no off-line twin, no o
+
+
+def test_the_targets_own_reversals_are_those_of_its_force(monkeypatch):
+    """A modulus bobbing at 1 Hz about 1 g reverses twice a second, as must the joint that makes it; a
+    six-channel path counts its force channels less g, not g itself."""
+    real = load_real(monkeypatch)
+    t = np.arange(0.0, 20.0, 0.01)
+    bob = profiles.G + 0.5 * np.sin(2 * np.pi * t)
+    assert real.target_reversals(profiles.DesiredPath("m", t, None, modulus=bob)) == pytest.approx(2.0, abs=0.1)
+    S = np.zeros((len(t), 6))
+    S[:, 5], S[:, 3] = profiles.G, 2.0 * np.sin(0.2 * np.pi * t)  # still vertical, a 0.1 Hz sway
+    assert real.target_reversals(profiles.DesiredPath("s", t, S)) == pytest.approx(0.2, abs=0.06)
 
 
 def test_the_shape_of_a_desired_channel_is_counted_in_perception_thresholds(monkeypatch):
