@@ -418,27 +418,41 @@ def test_rows_without_a_header_are_refused(tmp_path, capsys):
     t, omega, f = motion()
     log = dataset_log(tmp_path / "imu.csv", t, omega, f, ("up", "right", "forward"))
     lines = log.read_text().splitlines()
-    for k, text in enumerate(([lines[0] + ",extra", *lines[1:]], lines[1:])):
+    for k, (text, words) in enumerate((([lines[0] + ",extra", *lines[1:]], "line 2: numbers where the header "
+                                        "should be: the '#' comment at line 1 names 8 columns, the rows have 7"),
+                                       (lines[1:], "line 1: numbers where the header should be;"))):
         bad = tmp_path / f"bad{k}.csv"
         bad.write_text("\n".join(text) + "\n")
         assert main(["import", "log", str(bad), "--time", "timestamp [ns]", *DATASET, "--out",
                      str(tmp_path / "x.csv")]) == 2
         err = capsys.readouterr().err
-        assert err.count("\n") == 1 and f"line {2 - k}: numbers where the header should be" in err
+        assert err.count("\n") == 1 and words in err
     assert not (tmp_path / "x.csv").exists()
+    # a blank line and another comment between the header and the rows are no matter
+    (tmp_path / "spaced.csv").write_text("\n".join([lines[0], "", "# units as named", *lines[1:]]) + "\n")
+    assert main(["import", "log", str(tmp_path / "spaced.csv"), "--time", "timestamp [ns]", *DATASET, "--out",
+                 str(tmp_path / "x.csv")]) == 0
 
 
-def test_microseconds_declared_as_milliseconds_point_to_the_unit(tmp_path, capsys):
+def test_a_time_unit_declared_wrong_is_refused_naming_the_right_one(tmp_path, capsys):
+    """A 100 Hz log in microseconds: declared as ms it is a 2 Hz-or-slower log of hours, as ns a 100 kHz
+    log of 8 ms; in nanoseconds declared as seconds a log of days. Each is refused in one line naming
+    the unit it is in; declared right it imports."""
     t = np.arange(0.0, 8.0, 0.01)
     omega, f = np.zeros((len(t), 3)), np.tile([0.0, 0.0, G], (len(t), 1))
-    log = write_log(tmp_path / "log.csv", t * 1000.0, omega, f, ("right", "forward", "up"), "m/s2", "rad/s", "ms")
-    argv = ["import", "log", str(log), "--axes", "right,forward,up", "--accel-unit", "m/s2", "--rate-unit", "rad/s",
-            "--out", str(tmp_path / "x.csv"), "--time-unit"]
-    assert main(argv + ["ms"]) == 2
-    err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "read as ms" in err and "Declare --time-unit us" in err
-    assert main(argv + ["us"]) == 0
-    assert profiles.load(tmp_path / "x.csv").duration == pytest.approx(7.99)
+    for clock, declared, words in ((1e6, "ms", "read as ms"), (1e6, "ns", "sampled at 100 kHz"), (1e9, "s", "days")):
+        log = write_log(tmp_path / "log.csv", t * clock / 1000.0, omega, f, ("right", "forward", "up"), "m/s2",
+                        "rad/s", "ms")
+        argv = ["import", "log", str(log), "--axes", "right,forward,up", "--accel-unit", "m/s2", "--rate-unit",
+                "rad/s", "--out", str(tmp_path / "x.csv"), "--time-unit"]
+        assert main(argv + [declared]) == 2
+        err = capsys.readouterr().err
+        right = {1e6: "us", 1e9: "ns"}[clock]
+        assert err.count("\n") == 1 and words in err and f"declare --time-unit {right}" in err
+        assert not (tmp_path / "x.csv").exists()
+        assert main(argv + [right, "--overwrite"]) == 0
+        assert profiles.load(tmp_path / "x.csv").duration == pytest.approx(7.99)
+        (tmp_path / "x.csv").unlink()
 
 
 def test_a_gyros_bias_is_named_and_taken_off_with_zero_rates(tmp_path, capsys):
@@ -459,6 +473,13 @@ def test_a_gyros_bias_is_named_and_taken_off_with_zero_rates(tmp_path, capsys):
     np.testing.assert_allclose(path.S_d[:, :3], omega[::2][: len(path.t)], atol=np.radians(0.3))
     np.testing.assert_allclose(read((tmp_path / "x.csv").read_text(), "rates less their bias"), [0.5, 4.0, -2.0],
                                atol=0.03)
+    # a bias beyond a gyro's, or rates in deg/s declared as rad/s: named, with what to check
+    for rates, words in (((omega + bias + noise) * 4.0, "more than a gyro's bias (10 deg/s): a steady turn, or the "
+                          "rates in deg/s declared as rad/s?"),
+                         ((omega + noise) * 180.0 / math.pi, "read as deg/s the rates are still")):
+        wrong = dataset_log(tmp_path / "wrong.csv", t, rates, f, ("up", "right", "forward"))
+        assert main(["import", "log", str(wrong), *argv[3:], "--overwrite"]) == 2
+        assert words in capsys.readouterr().err
     for extra, words in ((["--rates", "none", "--modulus"], "--zero-rates needs the angular rates"),
                          (["--no-check"], "--zero-rates reads the still stretch")):
         assert main(argv + ["--zero-rates", "--overwrite", *extra]) == 2
@@ -480,3 +501,41 @@ def test_a_sensor_mounted_at_an_angle_is_levelled(tmp_path):
     np.testing.assert_allclose(level.S_d, truth, atol=1e-3 * G)
     assert np.abs(tilted.S_d - truth).max() > 0.2 * G
     assert "turned by 15 deg so that the force reads straight up" in (tmp_path / "level.csv").read_text()
+
+
+def test_zero_rates_reads_the_rest_not_a_later_steady_curve(tmp_path):
+    """A car at rest for 3 s, then a long steady curve (2.9 deg/s, 0.13 g): the curve is as steady as
+    the rest, its rate as constant as a bias. --zero-rates reads the rest, the first still stretch, and
+    the curve keeps its rate and force."""
+    t = np.arange(0.0, 25.0, 1.0 / RATE)
+    ramp = np.clip(t - 7.0, 0.0, 1.0)
+    omega = np.column_stack([0 * t, 0 * t, -np.radians(2.9) * ramp])  # turning right
+    f = np.column_stack([1.25 * ramp, 0 * t, G + 0 * t])
+    rng = np.random.default_rng(5)
+    noisy = omega + rng.normal(0.0, np.radians(0.2), omega.shape), f + rng.normal(0.0, 0.05, f.shape)
+    log = dataset_log(tmp_path / "imu.csv", t, *noisy, ("up", "right", "forward"))
+    assert main(["import", "log", str(log), "--time", "timestamp [ns]", *DATASET, "--zero-rates",
+                 "--out", str(tmp_path / "x.csv")]) == 0
+    path = profiles.load(tmp_path / "x.csv")
+    curve = path.t > 10.0
+    assert np.degrees(np.mean(path.S_d[curve, 2])) == pytest.approx(-2.9, abs=0.1)
+    assert np.mean(path.S_d[curve, 3]) == pytest.approx(1.25, abs=0.05)
+    bias = re.search(r"rates less their bias \(([^)]*)\) deg/s.*read still from ([0-9.]+) s", (tmp_path / "x.csv").read_text())
+    assert np.all(np.abs([float(x) for x in bias[1].split(",")]) < 0.1) and float(bias[2]) - 1.4e9 < 6.0
+
+
+def test_a_sensor_tilted_beyond_the_check_is_named_and_levelled(tmp_path, capsys):
+    """Pitched 35 deg: beyond the check's 30 deg for a vehicle on a slope, refused as a tilt (not as g
+    along another axis) pointing to --level, which takes up to 60 deg."""
+    t, omega, f = motion()
+    c, s = math.cos(math.radians(35.0)), math.sin(math.radians(35.0))
+    pitch = np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
+    log = dataset_log(tmp_path / "imu.csv", t, omega @ pitch, f @ pitch, ("up", "right", "forward"))
+    argv = ["import", "log", str(log), "--time", "timestamp [ns]", *DATASET, "--out", str(tmp_path / "x.csv")]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "the force is 35 deg from up" in err and "--level turns a sensor" in err
+    assert "e-1" not in err.split("reads (")[1].split(")")[0]  # round-off prints as 0
+    assert main(argv + ["--level"]) == 0
+    np.testing.assert_allclose(profiles.load(tmp_path / "x.csv").S_d, np.column_stack([omega, f])[::2][:800],
+                               atol=1e-3 * G)

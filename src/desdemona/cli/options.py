@@ -281,12 +281,13 @@ def _add_import_parser(sub) -> None:
                          "(a sensor whose scale is off, as a phone's can be by 5-10 %%; a reading outside "
                          "0.8-1.25 g is refused as a wrong unit or scale)")
     lg.add_argument("--zero-rates", action="store_true", dest="zero_rates",
-                    help="take the rates' mean where the log is still off every rate (a gyro's bias, up to 10 "
-                         "deg/s: a MEMS gyro's reads a few deg/s at rest, which would be cued as a turn)")
+                    help="subtract from every rate its mean over the log's first still stretch (a gyro's bias, up "
+                         "to 10 deg/s: a MEMS gyro reads a few deg/s at rest, which would be cued as a turn)")
     lg.add_argument("--level", action="store_true",
                     help="turn forces and rates by the smallest rotation that makes the force read straight up "
-                         "where the log is still (a sensor mounted at an angle to the vehicle)")
-    _add_import_options(lg, "the log's time")
+                         "where the log is still (a sensor mounted at an angle to the vehicle, up to 60 deg; "
+                         "without it the check takes 30 deg, a vehicle on a slope)")
+    _add_import_options(lg, "the log's time; on a clock from 1970, seconds on that clock")
     lg.set_defaults(run=commands.run_import_log)
 
 

@@ -152,7 +152,7 @@ def crop(t, X, start: float | None, end: float | None, what: str,
     if start is not None and end is not None and not hi > lo:
         raise ProfileError(f"--start {seconds(origin + lo)} and --end {seconds(origin + hi)}: the end must be after "
                            f"the start")
-    keep = (t >= lo - 1e-9) & (t <= hi + 1e-9)
+    keep = (t >= lo - 1e-6) & (t <= hi + 1e-6)  # a time printed to the microsecond (:func:`seconds`) is on its sample
     if np.count_nonzero(keep) < 2:
         raise ProfileError(f"{what}: nothing between {seconds(origin + lo)} s and {seconds(origin + hi)} s (it runs "
                            f"from {seconds(origin + t[0])} s to {seconds(origin + t[-1])} s)")
@@ -195,7 +195,7 @@ class Still:
 
 
 def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=None,
-               longest: bool = False, biased: bool = False) -> Still | None:
+               longest: bool = False, biased: bool = False, max_bias: float | None = None) -> Still | None:
     """The stillest stretch of at least :data:`STILL_SECONDS` where the rates are near zero
     (|omega| < ``max_rate`` [rad/s]) and the force nearly constant (RMS about its mean below
     :data:`STILL_SPREAD` of its size plus :data:`STILL_SPREAD_ABS`), or None. Uniform ``t`` [s]; the
@@ -206,8 +206,11 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
     where a steady turn or a held pull is steady too, but shorter than a wait at rest or at a constant
     speed (2 s at 1.15 g in a ride were taken for the rest before it).
 
-    ``biased``: the rates are read about their mean over the stretch, which may be up to
-    :data:`MAX_GYRO_BIAS` (a gyro's bias: EuRoC's read 4.6 deg/s at rest); the Still carries that mean."""
+    ``biased``: the rates are read about their mean over the stretch, which may be up to ``max_bias``
+    [rad/s] (None: :data:`MAX_GYRO_BIAS`; a gyro's bias: EuRoC's read 4.6 deg/s at rest); the Still
+    carries that mean. The stillest second of the first such stretch: a steady turn is as steady as a
+    rest, its rate as constant as a bias, and a log starts at rest more often than in a steady turn
+    (a 2.9 deg/s curve after a 3 s rest was taken for the rest)."""
     t = np.asarray(t, dtype=float)
     step = float(np.median(np.diff(t)))
     w = int(round(STILL_SECONDS / step)) + 1
@@ -220,7 +223,7 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
         windows = np.lib.stride_tricks.sliding_window_view(omega, w, axis=0)  # (windows, 3, w)
         omega_mean = windows.mean(axis=2)
         windows_rate = np.linalg.norm(windows - omega_mean[:, :, None], axis=1).max(axis=1)
-        windows_rate[np.linalg.norm(omega_mean, axis=1) > MAX_GYRO_BIAS] = np.inf
+        windows_rate[np.linalg.norm(omega_mean, axis=1) > (MAX_GYRO_BIAS if max_bias is None else max_bias)] = np.inf
     else:
         windows_rate = np.lib.stride_tricks.sliding_window_view(np.linalg.norm(omega, axis=1), w).max(axis=1)
     c1 = np.vstack([np.zeros(3), np.cumsum(f, axis=0)])
@@ -234,10 +237,10 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
         still &= np.lib.stride_tricks.sliding_window_view(np.asarray(usable, dtype=bool), w).all(axis=1)
     if not np.any(still):
         return None
-    if longest:  # only the windows of the longest run of still ones
+    if longest or biased:  # only the windows of the longest (biased: the first) run of still ones
         edges = np.flatnonzero(np.diff(np.concatenate([[0], still.astype(int), [0]])))
         starts, ends = edges[::2], edges[1::2]  # runs of still windows [start, end)
-        j = int(np.argmax(ends - starts))
+        j = 0 if biased else int(np.argmax(ends - starts))
         still = np.zeros_like(still)
         still[starts[j]:ends[j]] = True
     score = np.where(still, spread / (size + STILL_SPREAD_ABS) + windows_rate / max_rate, np.inf)
@@ -245,13 +248,14 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
     return Still(float(t[k]), float(t[k + w - 1]), mean[k], omega_mean[k])
 
 
-def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0)) -> None:
+def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0),
+                     tolerance: float = UP_TOLERANCE_DEG) -> None:
     """Raise :class:`ProfileError` naming the likely mistake unless the still force reads +1 g up in
     the cabin frame: magnitude within :data:`MAGNITUDE_TOLERANCE` of g and direction within
-    :data:`UP_TOLERANCE_DEG` of ``up``, the world's up in the cabin frame (cabin +z for a vehicle at rest
+    ``tolerance`` [deg] (:data:`UP_TOLERANCE_DEG`) of ``up``, the world's up in the cabin frame (cabin +z for a vehicle at rest
     or flying level; from the attitude where it is known; None: the magnitude alone, for a log whose
     axes do not matter). ``axes_hint`` adds how the axes were declared to the message."""
-    f = still.f_cabin
+    f = np.where(np.abs(still.f_cabin) < 1e-9, 0.0, still.f_cabin)  # round-off prints as 0, not 1e-173
     size = float(np.linalg.norm(f))
     where = f"still from {still.t0:.2f} s to {still.t1:.2f} s, " + (
         f"the force reads {size:.3g} m/s^2" if up is None else
@@ -273,12 +277,15 @@ def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0)) -> N
         return
     up = np.asarray(up, dtype=float) / np.linalg.norm(up)
     angle = float(np.degrees(np.arccos(np.clip(f @ up / size, -1.0, 1.0))))
-    if angle <= UP_TOLERANCE_DEG:
+    if angle <= tolerance:
         return
     hint = f" (declared {axes_hint})" if axes_hint else ""
-    if angle >= 180.0 - UP_TOLERANCE_DEG:
+    if angle >= 180.0 - tolerance:
         raise ProfileError(f"{where}: -1 g, the force points down: the vertical axis is up but declared "
                            f"down (or the reverse)?{hint}")
+    if angle < 60.0:
+        raise ProfileError(f"{where}: the force is {angle:.0f} deg from up: which axis is vertical, or is the "
+                           f"sensor mounted at an angle?{hint}")
     k = int(np.argmax(np.abs(f[:2])))
     raise ProfileError(f"{where}: g lies along cabin {'xy'[k]} ({('right', 'forward')[k]}), not up: which "
                        f"axis is vertical?{hint}")

@@ -38,6 +38,11 @@ MAX_DEFAULT_RATE = 100.0
 #: A gap between two readings longer than this many of the log's median steps is bridged by
 #: interpolation with a warning (a phone's log of a coaster ride missed 0.79 s at 59 ms a reading).
 GAP_STEPS = 4.0
+#: A log's median step shorter than this [s] (10 kHz) is a time unit declared too large.
+MIN_STEP = 1e-4
+#: With ``--level`` the still force may lie this far from up [deg] (a sensor mounted at an angle; without
+#: it, :data:`.convert.UP_TOLERANCE_DEG`, a vehicle parked on a slope).
+LEVEL_TOLERANCE_DEG = 60.0
 
 
 @dataclass(frozen=True)
@@ -79,8 +84,8 @@ class LogFormat:
 
 def data_lines(file: Path) -> list[tuple[int, str]]:
     """(line number, text) of a UTF-8 CSV's lines other than blank ones and ``#`` comments; the first is
-    its header. Where the first such line is all numbers, the header is the ``#`` comment right above it
-    if that names as many columns (a dataset's ``#timestamp [ns],w_RS_S_x [rad s^-1],...``), its ``#``
+    its header. Where the first such line is all numbers, the header is the nearest ``#`` comment above it
+    that names as many columns (a dataset's ``#timestamp [ns],w_RS_S_x [rad s^-1],...``), its ``#``
     dropped. A file that cannot be read, is not UTF-8, holds no line or no header raises
     :class:`ProfileError`."""
     try:
@@ -94,13 +99,16 @@ def data_lines(file: Path) -> list[tuple[int, str]]:
     if not lines:
         raise ProfileError(f"{file}: no header and no data")
     first, row = lines[0]
-    if _numbers_only(row):  # no header line: the header may be the comment just above (EuRoC's "#timestamp [ns],...")
-        above = numbered[first - 2][1].lstrip() if first > 1 else ""
-        header = above[1:]
-        if not (above.startswith("#") and len(_cells(header)) == len(_cells(row)) and not _numbers_only(header)):
-            raise ProfileError(f"{file}: line {first}: numbers where the header should be: the first line that is "
-                               f"not a '#' comment must name the columns")
-        lines[0:0] = [(first - 1, header)]
+    if _numbers_only(row):  # no header line: a comment above may name the columns (EuRoC's "#timestamp [ns],...")
+        comments = [(i, line.lstrip()[1:]) for i, line in reversed(numbered[:first - 1]) if line.strip()]
+        named = [(i, c) for i, c in comments if len(_cells(c)) > 1 and not _numbers_only(c)]
+        header = next(((i, c) for i, c in named if len(_cells(c)) == len(_cells(row))), None)
+        if header is None:
+            near = f": the '#' comment at line {named[0][0]} names {len(_cells(named[0][1]))} columns, the rows have " \
+                f"{len(_cells(row))}" if named else ""
+            raise ProfileError(f"{file}: line {first}: numbers where the header should be{near}; the first line "
+                               f"that is not a '#' comment, or a '#' comment above the rows, must name the columns")
+        lines[0:0] = [header]
     return lines
 
 
@@ -197,7 +205,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     t, X = convert.resample(t, X, rate)
     scale = 1.0
     if check:
-        still = _convention_checked(file, fmt, t, X, logged, origin)
+        still = _convention_checked(file, fmt, t, X, logged, origin, level)
         if to_g:
             scale = G / float(np.linalg.norm(still.f_cabin))
             X[:, 3:] *= scale
@@ -214,7 +222,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
         changes.append(f"turned by {tilt:.3g} deg so that the force reads straight up where still (--level)")
     if bias is not None:
         changes.append(f"rates less their bias ({', '.join(f'{math.degrees(x):.3g}' for x in bias.omega_cabin)}) "
-                       f"deg/s in the cabin's x,y,z, read still from {convert.seconds(origin + bias.t0)} s (--zero-rates)")
+                       f"deg/s in the cabin's x,y,z before any --level, read still from {convert.seconds(origin + bias.t0)} s (--zero-rates)")
     comments = _source_lines(file, fmt, span, f"{convert.filter_note(native, rate)}; convention check "
                              f"{'passed' if check else 'skipped (--no-check)'}", changes, modulus)
     gap = longest_gap(logged, lo, lo + float(t[-1]))
@@ -279,30 +287,49 @@ def gyro_bias(file: Path, t, X, rate: float, logged) -> convert.Still:
     return still
 
 
-def _convention_checked(file: Path, fmt: LogFormat, t, X, logged, origin: float) -> convert.Still:
+def _convention_checked(file: Path, fmt: LogFormat, t, X, logged, origin: float,
+                        level: bool = False) -> convert.Still:
     """The still stretch of the log's grid (``t``, ``X`` = omega, f in the cabin frame), whose force
     the convention check has passed: +1 g up, or 1 g in whatever direction without rates, over the
-    longest steady stretch (:func:`.convert.find_still`), never across a gap (:func:`measured`)."""
+    longest steady stretch (:func:`.convert.find_still`), never across a gap (:func:`measured`). With
+    ``level`` the force may lie up to :data:`LEVEL_TOLERANCE_DEG` from up (a sensor mounted at an angle)."""
     still = convert.find_still(t, X[:, :3], X[:, 3:], usable=measured(t, logged), longest=fmt.rates is None)
     if still is None:
         steady, what = ("a steady force", "units") if fmt.rates is None else \
             (f"rates below {math.degrees(convert.STILL_RATE):g} deg/s and a steady force", "axes and units")
-        biased = None if fmt.rates is None else convert.find_still(t, X[:, :3], X[:, 3:], usable=measured(t, logged),
-                                                                   biased=True)
-        hint = "" if biased is None else (
-            f"; from {convert.seconds(origin + biased.t0)} s the force is steady and the rates read a steady "
-            f"({', '.join(f'{math.degrees(x):.3g}' for x in biased.omega_cabin)}) deg/s (cabin x,y,z): a gyro's "
-            f"bias? --zero-rates takes it off")
         raise ProfileError(f"{file}: the convention check cannot run: the log is nowhere still for "
-                           f"{convert.STILL_SECONDS:g} s ({steady}){hint}; else check its {what} by hand and add "
-                           f"--no-check")
+                           f"{convert.STILL_SECONDS:g} s ({steady}){_rates_hint(fmt, t, X, logged, origin)}; else "
+                           f"check its {what} by hand and add --no-check")
     try:
         convert.check_convention(replace(still, t0=origin + still.t0, t1=origin + still.t1),
                                  ",".join(fmt.axes) + " for the log's x,y,z",
-                                 up=None if fmt.rates is None else (0.0, 0.0, 1.0))
+                                 up=None if fmt.rates is None else (0.0, 0.0, 1.0),
+                                 tolerance=LEVEL_TOLERANCE_DEG if level else convert.UP_TOLERANCE_DEG)
     except ProfileError as exc:
-        raise ProfileError(f"{file}: {exc}") from None
+        fix = "" if level or "deg from up" not in str(exc) else \
+            f"; --level turns a sensor mounted at up to {LEVEL_TOLERANCE_DEG:g} deg upright"
+        raise ProfileError(f"{file}: {exc}{fix}") from None
     return still
+
+
+def _rates_hint(fmt: LogFormat, t, X, logged, origin: float) -> str:
+    """Why a log with rates may be nowhere still, where the rates say: a steady rate where the force is
+    steady (a gyro's bias, for --zero-rates; beyond one, a turn or deg/s declared as rad/s), or rates
+    that would be still in deg/s."""
+    if fmt.rates is None:
+        return ""
+    usable = measured(t, logged)
+    steady = convert.find_still(t, X[:, :3], X[:, 3:], usable=usable, biased=True, max_bias=np.inf)
+    if steady is not None:
+        rates = ", ".join(f"{math.degrees(x):.3g}" for x in steady.omega_cabin)
+        where = f"; from {convert.seconds(origin + steady.t0)} s the force is steady and the rates read a steady ({rates}) deg/s"
+        if np.linalg.norm(steady.omega_cabin) <= convert.MAX_GYRO_BIAS:
+            return f"{where} (cabin x,y,z): a gyro's bias? --zero-rates takes it off"
+        return (f"{where}, more than a gyro's bias ({math.degrees(convert.MAX_GYRO_BIAS):g} deg/s): a steady turn, "
+                f"or the rates in deg/s declared as {fmt.rate_unit}?")
+    if fmt.rate_unit == "rad/s" and convert.find_still(t, np.radians(X[:, :3]), X[:, 3:], usable=usable) is not None:
+        return "; read as deg/s the rates are still: are they in deg/s, declared as rad/s (--rate-unit deg/s)?"
+    return ""
 
 
 def longest_gap(logged, lo: float, hi: float) -> tuple[float, float, float] | None:
@@ -329,25 +356,40 @@ def measured(grid, logged) -> np.ndarray:
 
 
 def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray) -> None:
-    """Refuse a time column in a unit 1000 times smaller than declared (milliseconds declared as seconds,
-    microseconds as milliseconds):
-    the CSV reader's rule (:func:`.csvfile.time_unit_problem`), on the times in seconds ``t``."""
+    """Refuse a time column in a unit other than declared, naming the likely one: a unit 1000 times
+    smaller (milliseconds declared as seconds: the CSV reader's rule, :func:`.csvfile.time_unit_problem`),
+    a span of days, or steps shorter than :data:`MIN_STEP` (microseconds declared as nanoseconds: a
+    log of 16 ms at 200 kHz), on the times in seconds ``t``."""
     problem = csvfile.time_unit_problem(t)
-    if problem is None:
+    step = float(np.median(np.diff(t)))
+    if problem is None and step >= MIN_STEP:
         return
     where = f"{file}: column {fmt.time!r} [{fmt.time_unit}]"
+    likely = _likely_unit(t, fmt.time_unit)
+    fix = f"declare --time-unit {likely}" if likely else "check the column"
     if problem == "days":
         duration = float(t[-1] - t[0])
         raise ProfileError(f"{where} spans {duration:.3g} s ({duration / 86400:.3g} days), far longer than a "
-                           f"session (minutes): wrong time column or --time-unit?")
+                           f"session (minutes): wrong time column? Else {fix}")
+    if problem is None:
+        raise ProfileError(f"{where}: {csvfile.describe_steps(t)} read as {fmt.time_unit}, sampled at "
+                           f"{1e-3 / step:.3g} kHz: {fix}")
     if fmt.time_unit == "s":
         raise ProfileError(f"{where} looks like milliseconds: {csvfile.describe_steps(t)}; a recording is sampled "
-                           f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: declare --time-unit ms")
-    smaller = dict(zip(TIME_UNITS, list(TIME_UNITS)[1:]))  # each unit's next, 1000 times smaller
-    fix = f"declare --time-unit {smaller[fmt.time_unit]}" if fmt.time_unit in smaller else "check the column"
+                           f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: {fix}")
     raise ProfileError(f"{where}: {csvfile.describe_steps(t)} read as {fmt.time_unit}; a recording is sampled "
-                       f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: is the column in a unit 1000 times "
-                       f"smaller? {fix[0].upper() + fix[1:]}")
+                       f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: {fix}")
+
+
+def _likely_unit(t: np.ndarray, declared: str) -> str | None:
+    """The time unit under which the times ``t`` [s, read in the ``declared`` unit] look like a
+    recording: steps of :data:`MIN_STEP` to :data:`.csvfile.MS_MEDIAN_STEP`, a span under a day."""
+    step, span = float(np.median(np.diff(t))), float(t[-1] - t[0])
+    for unit, seconds in TIME_UNITS.items():
+        scale = seconds / TIME_UNITS[declared]
+        if unit != declared and MIN_STEP <= step * scale < csvfile.MS_MEDIAN_STEP and span * scale < 86400.0:
+            return unit
+    return None
 
 
 def head_force(omega, f_sensor, r, rate_hz: float) -> np.ndarray:
