@@ -209,8 +209,8 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
         if to_g:
             scale = G / float(np.linalg.norm(still.f_cabin))
             X[:, 3:] *= scale
-        turn = convert.levelling(still.f_cabin) if level else None
-        if turn is not None:
+        if level:
+            turn = convert.levelling(still.f_cabin)
             X = np.column_stack([X[:, :3] @ turn.T, X[:, 3:] @ turn.T])
     lo, t, X = _cropped(file, t, X, start, end, origin)
     convert.check_no_crash(origin + lo + t, X[:, 3:], str(file))
@@ -221,8 +221,9 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
         tilt = math.degrees(math.acos(min(1.0, float(turn[2, 2]))))
         changes.append(f"turned by {tilt:.3g} deg so that the force reads straight up where still (--level)")
     if bias is not None:
-        changes.append(f"rates less their bias ({', '.join(f'{math.degrees(x):.3g}' for x in bias.omega_cabin)}) "
-                       f"deg/s in the cabin's x,y,z before any --level, read still from {convert.seconds(origin + bias.t0)} s (--zero-rates)")
+        rates = ", ".join(f"{math.degrees(x):.3g}" for x in bias.omega_cabin)
+        changes.append(f"rates less their bias ({rates}) deg/s in the cabin's x,y,z before any --level, read still "
+                       f"from {convert.seconds(origin + bias.t0)} s (--zero-rates)")
     comments = _source_lines(file, fmt, span, f"{convert.filter_note(native, rate)}; convention check "
                              f"{'passed' if check else 'skipped (--no-check)'}", changes, modulus)
     gap = longest_gap(logged, lo, lo + float(t[-1]))
