@@ -275,7 +275,7 @@ def _source_lines(file: Path, fmt: LogFormat, span: str, filtered: str, changes:
 
 
 def gyro_bias(file: Path, t, X, rate: float, logged) -> convert.Still:
-    """The still stretch of the log's grid (``t``, ``X`` = omega, f in the cabin frame, before the
+    """The first still stretch of the log's grid (``t``, ``X`` = omega, f in the cabin frame, before the
     anti-alias filter to ``rate`` [Hz]) read with the rates about their mean, the gyro's bias
     (:func:`.convert.find_still`, ``biased``): a resting MEMS gyro reads a few deg/s, which would be
     cued as a turn. Refused where the log is nowhere still, or its rates are not steady there."""
