@@ -478,8 +478,9 @@ def test_a_gyros_bias_is_named_and_taken_off_with_zero_rates(tmp_path, capsys):
                           "rates in deg/s declared as rad/s?"),
                          ((omega + noise) * 180.0 / math.pi, "read as deg/s the rates are still")):
         wrong = dataset_log(tmp_path / "wrong.csv", t, rates, f, ("up", "right", "forward"))
-        assert main(["import", "log", str(wrong), *argv[3:], "--overwrite"]) == 2
-        assert words in capsys.readouterr().err
+        for extra in ([], ["--zero-rates"]):  # --zero-rates cannot take it off either, and says why
+            assert main(["import", "log", str(wrong), *argv[3:], "--overwrite", *extra]) == 2
+            assert words in capsys.readouterr().err
     for extra, words in ((["--rates", "none", "--modulus"], "--zero-rates needs the angular rates"),
                          (["--no-check"], "--zero-rates reads the still stretch")):
         assert main(argv + ["--zero-rates", "--overwrite", *extra]) == 2

@@ -196,7 +196,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     rate = min(native, MAX_DEFAULT_RATE) if rate is None else float(rate)
     if not rate > 0:
         raise ProfileError(f"--rate {rate:g}: must be a positive number of samples per second")
-    bias = gyro_bias(file, t, X, rate, logged) if zero_rates else None
+    bias = gyro_bias(file, fmt, t, X, rate, logged, origin) if zero_rates else None
     if bias is not None:
         X[:, :3] -= bias.omega_cabin
     r_cabin = R @ np.asarray(fmt.lever_arm, dtype=float)
@@ -274,17 +274,19 @@ def _source_lines(file: Path, fmt: LogFormat, span: str, filtered: str, changes:
             + "".join(f"; {change}" for change in changes) + ("; modulus |f| only" if modulus else "")]
 
 
-def gyro_bias(file: Path, t, X, rate: float, logged) -> convert.Still:
+def gyro_bias(file: Path, fmt: LogFormat, t, X, rate: float, logged, origin: float) -> convert.Still:
     """The first still stretch of the log's grid (``t``, ``X`` = omega, f in the cabin frame, before the
     anti-alias filter to ``rate`` [Hz]) read with the rates about their mean, the gyro's bias
     (:func:`.convert.find_still`, ``biased``): a resting MEMS gyro reads a few deg/s, which would be
-    cued as a turn. Refused where the log is nowhere still, or its rates are not steady there."""
+    cued as a turn. Refused where the log is nowhere still, or its rates are not steady there, saying
+    what the rates read (:func:`_rates_hint`)."""
     tr, Xr = convert.resample(t, X, rate)  # noise filtered as the check will see it
     still = convert.find_still(tr, Xr[:, :3], Xr[:, 3:], usable=measured(tr, logged), biased=True)
     if still is None:
         raise ProfileError(f"{file}: --zero-rates: the log is nowhere still for {convert.STILL_SECONDS:g} s (a "
                            f"steady force, rates steady within {math.degrees(convert.STILL_RATE):g} deg/s of a mean "
-                           f"below {math.degrees(convert.MAX_GYRO_BIAS):g} deg/s): no bias to read")
+                           f"below {math.degrees(convert.MAX_GYRO_BIAS):g} deg/s): no bias to read"
+                           f"{_rates_hint(fmt, tr, Xr, logged, origin)}")
     return still
 
 
