@@ -48,6 +48,9 @@ MAX_GYRO_BIAS = np.radians(10.0)
 STILL_SPREAD = 0.03          # RMS of f about its mean, relative to |mean f| ...
 STILL_SPREAD_ABS = 0.05      # ... plus this [m/s^2]
 UP_TOLERANCE_DEG = 30.0      # direction of the still force from up (a parked car on a slope)
+#: [deg] a still force up to this far from up is a sensor mounted at an angle (named as a tilt, and what
+#: ``import log --level`` turns upright); beyond it, an axis declared wrong.
+MAX_TILT_DEG = 60.0
 MAGNITUDE_TOLERANCE = (0.8, 1.25)  # |f| / g at rest
 
 #: Cut-off of the filter before the rates are differentiated for the lever arm's alpha [Hz]: motion
@@ -249,12 +252,13 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
 
 
 def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0),
-                     tolerance: float = UP_TOLERANCE_DEG) -> None:
+                     tolerance: float = UP_TOLERANCE_DEG, tilt_fix: str = "") -> None:
     """Raise :class:`ProfileError` naming the likely mistake unless the still force reads +1 g up in
     the cabin frame: magnitude within :data:`MAGNITUDE_TOLERANCE` of g and direction within
     ``tolerance`` [deg] (:data:`UP_TOLERANCE_DEG`) of ``up``, the world's up in the cabin frame (cabin +z for a vehicle at rest
     or flying level; from the attitude where it is known; None: the magnitude alone, for a log whose
-    axes do not matter). ``axes_hint`` adds how the axes were declared to the message."""
+    axes do not matter). ``axes_hint`` adds how the axes were declared to the message, ``tilt_fix``
+    what mends a tilt of up to :data:`MAX_TILT_DEG`."""
     f = np.where(np.abs(still.f_cabin) < 1e-9, 0.0, still.f_cabin)  # round-off prints as 0, not 1e-173
     size = float(np.linalg.norm(f))
     where = f"still from {still.t0:.2f} s to {still.t1:.2f} s, " + (
@@ -283,9 +287,9 @@ def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0),
     if angle >= 180.0 - tolerance:
         raise ProfileError(f"{where}: -1 g, the force points down: the vertical axis is up but declared "
                            f"down (or the reverse)?{hint}")
-    if angle < 60.0:
+    if angle < MAX_TILT_DEG:
         raise ProfileError(f"{where}: the force is {angle:.0f} deg from up: which axis is vertical, or is the "
-                           f"sensor mounted at an angle?{hint}")
+                           f"sensor mounted at an angle?{hint}{tilt_fix}")
     k = int(np.argmax(np.abs(f[:2])))
     raise ProfileError(f"{where}: g lies along cabin {'xy'[k]} ({('right', 'forward')[k]}), not up: which "
                        f"axis is vertical?{hint}")

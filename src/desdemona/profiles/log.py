@@ -40,9 +40,6 @@ MAX_DEFAULT_RATE = 100.0
 GAP_STEPS = 4.0
 #: A log's median step shorter than this [s] (10 kHz) is a time unit declared too large.
 MIN_STEP = 1e-4
-#: With ``--level`` the still force may lie this far from up [deg] (a sensor mounted at an angle; without
-#: it, :data:`.convert.UP_TOLERANCE_DEG`, a vehicle parked on a slope).
-LEVEL_TOLERANCE_DEG = 60.0
 
 
 @dataclass(frozen=True)
@@ -295,7 +292,8 @@ def _convention_checked(file: Path, fmt: LogFormat, t, X, logged, origin: float,
     """The still stretch of the log's grid (``t``, ``X`` = omega, f in the cabin frame), whose force
     the convention check has passed: +1 g up, or 1 g in whatever direction without rates, over the
     longest steady stretch (:func:`.convert.find_still`), never across a gap (:func:`measured`). With
-    ``level`` the force may lie up to :data:`LEVEL_TOLERANCE_DEG` from up (a sensor mounted at an angle)."""
+    ``level`` the force may lie up to :data:`.convert.MAX_TILT_DEG` from up (a sensor mounted at an
+    angle; without it :data:`.convert.UP_TOLERANCE_DEG`, a vehicle parked on a slope)."""
     still = convert.find_still(t, X[:, :3], X[:, 3:], usable=measured(t, logged), longest=fmt.rates is None)
     if still is None:
         steady, what = ("a steady force", "units") if fmt.rates is None else \
@@ -307,11 +305,11 @@ def _convention_checked(file: Path, fmt: LogFormat, t, X, logged, origin: float,
         convert.check_convention(replace(still, t0=origin + still.t0, t1=origin + still.t1),
                                  ",".join(fmt.axes) + " for the log's x,y,z",
                                  up=None if fmt.rates is None else (0.0, 0.0, 1.0),
-                                 tolerance=LEVEL_TOLERANCE_DEG if level else convert.UP_TOLERANCE_DEG)
+                                 tolerance=convert.MAX_TILT_DEG if level else convert.UP_TOLERANCE_DEG,
+                                 tilt_fix="" if level else
+                                 f"; --level turns a sensor mounted at up to {convert.MAX_TILT_DEG:g} deg upright")
     except ProfileError as exc:
-        fix = "" if level or "deg from up" not in str(exc) else \
-            f"; --level turns a sensor mounted at up to {LEVEL_TOLERANCE_DEG:g} deg upright"
-        raise ProfileError(f"{file}: {exc}{fix}") from None
+        raise ProfileError(f"{file}: {exc}") from None
     return still
 
 
@@ -359,24 +357,24 @@ def measured(grid, logged) -> np.ndarray:
 
 
 def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray) -> None:
-    """Refuse a time column in a unit other than declared, naming the likely one: a unit 1000 times
-    smaller (milliseconds declared as seconds: the CSV reader's rule, :func:`.csvfile.time_unit_problem`),
-    a span of days, or steps shorter than :data:`MIN_STEP` (microseconds declared as nanoseconds: a
-    log of 16 ms at 200 kHz), on the times in seconds ``t``."""
-    problem = csvfile.time_unit_problem(t)
-    step = float(np.median(np.diff(t)))
-    if problem is None and step >= MIN_STEP:
+    """Refuse a time column in a unit other than declared (:func:`_time_problem`, on the times in
+    seconds ``t``): a unit 1000 times smaller (milliseconds declared as seconds), a span of days, or
+    steps shorter than :data:`MIN_STEP` (microseconds declared as nanoseconds: a log of 16 ms at 200
+    kHz). The refusal names the first unit under which the same rule passes."""
+    problem = _time_problem(t)
+    if problem is None:
         return
     where = f"{file}: column {fmt.time!r} [{fmt.time_unit}]"
-    likely = _likely_unit(t, fmt.time_unit)
+    likely = next((unit for unit, seconds in TIME_UNITS.items()  # the first under which the check passes
+                   if _time_problem(t * seconds / TIME_UNITS[fmt.time_unit]) is None), None)
     fix = f"declare --time-unit {likely}" if likely else "check the column"
     if problem == "days":
         duration = float(t[-1] - t[0])
         raise ProfileError(f"{where} spans {duration:.3g} s ({duration / 86400:.3g} days), far longer than a "
                            f"session (minutes): wrong time column? Else {fix}")
-    if problem is None:
+    if problem == "fast":
         raise ProfileError(f"{where}: {csvfile.describe_steps(t)} read as {fmt.time_unit}, sampled at "
-                           f"{1e-3 / step:.3g} kHz: {fix}")
+                           f"{1e-3 / float(np.median(np.diff(t))):.3g} kHz: {fix}")
     if fmt.time_unit == "s":
         raise ProfileError(f"{where} looks like milliseconds: {csvfile.describe_steps(t)}; a recording is sampled "
                            f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: {fix}")
@@ -384,15 +382,11 @@ def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray) -> None:
                        f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: {fix}")
 
 
-def _likely_unit(t: np.ndarray, declared: str) -> str | None:
-    """The time unit under which the times ``t`` [s, read in the ``declared`` unit] look like a
-    recording: steps of :data:`MIN_STEP` to :data:`.csvfile.MS_MEDIAN_STEP`, a span under a day."""
-    step, span = float(np.median(np.diff(t))), float(t[-1] - t[0])
-    for unit, seconds in TIME_UNITS.items():
-        scale = seconds / TIME_UNITS[declared]
-        if unit != declared and MIN_STEP <= step * scale < csvfile.MS_MEDIAN_STEP and span * scale < 86400.0:
-            return unit
-    return None
+def _time_problem(t: np.ndarray) -> str | None:
+    """The CSV reader's rule on times ``t`` [s] (:func:`.csvfile.time_unit_problem`: ``"days"`` or
+    ``"ms"``), and ``"fast"``: a median step shorter than :data:`MIN_STEP`; None where none applies."""
+    problem = csvfile.time_unit_problem(t)
+    return problem if problem is not None or float(np.median(np.diff(t))) >= MIN_STEP else "fast"
 
 
 def head_force(omega, f_sensor, r, rate_hz: float) -> np.ndarray:
