@@ -3,6 +3,7 @@ convention check names the likely mistake; bad input is one message, exit 2, not
 
 import math
 import re
+from datetime import datetime, timedelta
 
 import numpy as np
 import pytest
@@ -540,3 +541,93 @@ def test_a_sensor_tilted_beyond_the_check_is_named_and_levelled(tmp_path, capsys
     assert main(argv + ["--level"]) == 0
     np.testing.assert_allclose(profiles.load(tmp_path / "x.csv").S_d, np.column_stack([omega, f])[::2][:800],
                                atol=1e-3 * G)
+
+
+def dated_log(file, t, omega, f, axes, first="2023-08-04 17:47:58-04:00", sep=" "):
+    """The motion with its time as ISO 8601 dates and times from ``first`` (a pandas export's, a phone
+    logger's), in the log's axes, forces [m/s^2] and rates [rad/s]."""
+    R = convert.axes_rotation(axes)
+    start = datetime.fromisoformat(first)
+    with open(file, "w") as out:
+        out.write("time,ax,ay,az,p,q,r\n")
+        for ti, a, w in zip(t, f @ R, omega @ R):
+            when = (start + timedelta(seconds=float(ti))).isoformat(sep=sep)
+            out.write(when + "," + ",".join(repr(float(x)) for x in (*a, *w)) + "\n")
+    return file
+
+
+DATED = ["--time", "time", "--accel-unit", "m/s2", "--rate-unit", "rad/s", "--axes", "left,up,forward"]
+
+
+def test_a_log_stamped_with_dates_reads_as_the_same_motion(tmp_path, capsys):
+    """A time column of ISO 8601 dates and times, with a UTC offset or without one (taken as UTC): the
+    same path as the plain log; the crop given as dates, its messages and source line in UTC."""
+    t, omega, f = motion()
+    axes = ("left", "up", "forward")
+    plain = write_log(tmp_path / "plain.csv", t, omega, f, axes, "m/s2", "rad/s")
+    assert main(["import", "log", str(plain), *DATED[2:], "--out", str(tmp_path / "a.csv")]) == 0
+    a = profiles.load(tmp_path / "a.csv")
+    for k, first in enumerate(("2023-08-04 17:47:58-04:00", "2023-08-04T21:47:58")):
+        log = dated_log(tmp_path / f"dated{k}.csv", t, omega, f, axes, first, sep=first[10])
+        out = tmp_path / f"b{k}.csv"
+        assert main(["import", "log", str(log), *DATED, "--out", str(out)]) == 0
+        b = profiles.load(out)
+        np.testing.assert_allclose(b.t, a.t, atol=1e-9)
+        np.testing.assert_allclose(b.S_d, a.S_d, atol=1e-4)  # a clock from 1970 as float64: 0.24 us steps
+        assert "# source: crop 2023-08-04T21:47:58+00:00 to 2023-08-04T21:48:05.990+00:00" in out.read_text()
+    argv = ["import", "log", str(tmp_path / "dated0.csv"), *DATED, "--out", str(tmp_path / "c.csv")]
+    assert main(argv + ["--start", "2023-08-04 17:48:00-04:00", "--end", "2023-08-04T21:48:03Z"]) == 0
+    assert profiles.load(tmp_path / "c.csv").duration == pytest.approx(3.0)
+    for extra, words in ((["--start", "2023-08-04 17:00:00-04:00"], "--start 2023-08-04T21:00:00+00:00: outside the "
+                           "log, which runs from 2023-08-04T21:47:58+00:00 to 2023-08-04T21:48:05.990+00:00"),
+                         (["--start", "after lunch"], "'after lunch': give seconds, or a date and time"),
+                         (["--time-unit", "ms"], "column 'time' holds dates and times, read as seconds since 1970: "
+                          "drop --time-unit ms")):
+        assert main(argv + extra + ["--overwrite"]) == 2
+        err = capsys.readouterr().err
+        assert words in err.splitlines()[-1]  # the last line: argparse's own error follows its usage
+
+
+def test_a_cell_that_cannot_be_read_is_named_by_its_column(tmp_path, capsys):
+    t, omega, f = motion()
+    log = dated_log(tmp_path / "dated.csv", t, omega, f, ("left", "up", "forward"))
+    lines = log.read_text().splitlines()
+    for k, (row, words) in enumerate(((lines[5].replace("2023-08-04 ", "2023-08-4x "), "line 6: column 'time': "
+                                       "'2023-08-4x 17:47:58.020000-04:00' is not a date and time as the first row's"),
+                                      (lines[5].replace(",", ",x,", 1).rsplit(",", 1)[0],
+                                       "line 6: column 'ax': 'x' is not a number"),
+                                      (lines[5].rsplit(",", 1)[0], "line 6: column 'r': no value"))):
+        bad = tmp_path / f"bad{k}.csv"
+        bad.write_text("\n".join([*lines[:5], row, *lines[6:]]) + "\n")
+        assert main(["import", "log", str(bad), *DATED, "--out", str(tmp_path / "x.csv")]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and words in err
+    assert not (tmp_path / "x.csv").exists()
+
+
+def test_a_slow_log_on_a_clock_from_1970_is_not_taken_for_milliseconds(tmp_path, capsys):
+    """A phone's log of a drive averaged to a row a second, stamped in seconds since 1970: in its unit
+    (in milliseconds its clock would read January 1970), imported with a warning and interpolated to
+    10 Hz, which every command reads. The same rows from t = 0 are still taken for milliseconds, and a
+    path asked at 2 Hz or slower is refused."""
+    t = np.arange(0.0, 61.0)
+    turn, brake = bump(t, 10.0, 30.0), bump(t, 35.0, 50.0)
+    omega = np.column_stack([0 * t, 0 * t, 0.2 * turn])
+    f = np.column_stack([-0.2 * G * turn, -0.3 * G * brake, np.full_like(t, G)])
+    axes = ("right", "forward", "up")
+    args = ["--axes", "right,forward,up", "--accel-unit", "m/s2", "--rate-unit", "rad/s"]
+    epoch = write_log(tmp_path / "drive.csv", t + 1691185678.0, omega, f, axes, "m/s2", "rad/s")
+    out = tmp_path / "x.csv"
+    assert main(["import", "log", str(epoch), *args, "--out", str(out)]) == 0
+    err = capsys.readouterr().err
+    assert "warning: the log has a reading every 1 s: what changes faster than 0.5 Hz" in err
+    path = profiles.load(out)
+    assert len(path.t) == 601 and path.duration == pytest.approx(60.0)
+    np.testing.assert_allclose(path.S_d[::10, 5], f[:, 2], atol=1e-9)  # interpolated between the readings
+    assert np.max(np.abs(path.S_d[::10, 3] - f[:, 0])) < 0.05 * G  # through the filter at its native rate
+    assert main(["import", "log", str(epoch), *args, "--rate", "2", "--out", str(tmp_path / "y.csv")]) == 2
+    assert "--rate 2: give more than 2 samples per second" in capsys.readouterr().err
+    zero = write_log(tmp_path / "zero.csv", t, omega, f, axes, "m/s2", "rad/s")
+    assert main(["import", "log", str(zero), *args, "--out", str(tmp_path / "z.csv")]) == 2
+    assert "looks like milliseconds" in capsys.readouterr().err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["drive.csv", "x.csv", "zero.csv"]

@@ -265,7 +265,8 @@ def _add_import_parser(sub) -> None:
     lg.add_argument("--rate-unit", choices=("deg/s", "rad/s"), dest="rate_unit",
                     help="the unit of the --rates columns (required unless --rates none)")
     lg.add_argument("--time-unit", default="s", choices=("s", "ms", "us", "ns"), dest="time_unit",
-                    help="(default: s; ns for a dataset's nanosecond stamps, EuRoC's or ROS's)")
+                    help="(default: s; ns for a dataset's nanosecond stamps, EuRoC's or ROS's; a column of "
+                         "ISO 8601 dates and times, 2023-08-04 17:47:58-04:00, is read as such)")
     lg.add_argument("--axes", default="forward,right,down", metavar="X,Y,Z",
                     help="direction of the log's x,y,z: each one of forward/back/right/left/up/down, "
                          "right-handed (default: forward,right,down, vehicle body axes)")
@@ -273,7 +274,7 @@ def _add_import_parser(sub) -> None:
                     help="from the sensor to the head, the log's axes [m] (default: 0,0,0)")
     lg.add_argument("--rate", type=float, default=None, metavar="HZ",
                     help="samples per second of the path, through an anti-alias filter (default: the log's, "
-                         "at most 100)")
+                         "at least 10, interpolated, and at most 100)")
     lg.add_argument("--no-check", action="store_false", dest="check",
                     help="skip the convention check (for a log that is nowhere still)")
     lg.add_argument("--to-g", action="store_true", dest="to_g",
@@ -287,7 +288,8 @@ def _add_import_parser(sub) -> None:
                     help="turn forces and rates by the smallest rotation that makes the force read straight up "
                          "where the log is still (a sensor mounted at an angle to the vehicle, up to 60 deg; "
                          "without it the check takes 30 deg, a vehicle on a slope)")
-    _add_import_options(lg, "the log's time; on a clock from 1970, seconds on that clock")
+    _add_import_options(lg, "the log's time; on a clock from 1970, seconds on that clock, or a date and time "
+                            "as the log's")
     lg.set_defaults(run=commands.run_import_log)
 
 
@@ -296,12 +298,26 @@ def _add_import_options(parser: argparse.ArgumentParser, clock: str, out_group=N
     (out_group or parser).add_argument("--out", metavar="PATH.csv", required=out_group is None,
                                        help="the desired path CSV to write (required"
                                             + (")" if out_group is None else " unless --list)"))
-    parser.add_argument("--start", type=float, default=None, metavar="SECONDS",
+    parser.add_argument("--start", type=_time_or_date, default=None, metavar="SECONDS",
                         help=f"crop from here [s of {clock}]; it becomes t = 0 (default: the start)")
-    parser.add_argument("--end", type=float, default=None, metavar="SECONDS",
+    parser.add_argument("--end", type=_time_or_date, default=None, metavar="SECONDS",
                         help=f"crop to here [s of {clock}] (default: the end)")
     parser.add_argument("--modulus", action="store_true", help="write the dfs form t,M (M = |f|)")
     parser.add_argument("--overwrite", action="store_true", help="replace an existing --out file")
+
+
+def _time_or_date(text: str) -> float:
+    """A time [s], or an ISO 8601 date and time as seconds since 1970 (a log stamped with dates)."""
+    from desdemona.profiles.log import date_seconds
+
+    try:
+        return float(text)
+    except ValueError:
+        seconds = date_seconds(text)
+        if seconds is None:
+            raise argparse.ArgumentTypeError(f"{text!r}: give seconds, or a date and time as the log's "
+                                             f"(2023-08-04 17:47:58-04:00)") from None
+        return seconds
 
 
 def _add_machine_options(parser: argparse.ArgumentParser, default_config: str = "full") -> None:

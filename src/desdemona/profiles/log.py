@@ -18,6 +18,7 @@ from __future__ import annotations
 import csv
 import math
 from dataclasses import dataclass, replace
+from datetime import datetime, timezone
 from pathlib import Path
 
 import numpy as np
@@ -33,13 +34,21 @@ RATE_UNITS = {"deg/s": math.pi / 180.0, "rad/s": 1.0}
 #: Seconds per unit of a time column; ``us`` and ``ns`` are the clocks of IMU datasets and robot logs
 #: (EuRoC's and ROS's time stamps are nanoseconds since 1970).
 TIME_UNITS = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "ns": 1e-9}
-#: The written path's rate when none is given: the log's own, at most this [Hz].
+#: The written path's rate when none is given: the log's own, at most this [Hz]...
 MAX_DEFAULT_RATE = 100.0
+#: ... and at least this [Hz]: a slower log is interpolated to it. Every command reads a path sampled
+#: at 2 Hz or slower as one whose time is in milliseconds (:func:`.csvfile.time_unit_problem`).
+MIN_DEFAULT_RATE = 10.0
 #: A gap between two readings longer than this many of the log's median steps is bridged by
 #: interpolation with a warning (a phone's log of a coaster ride missed 0.79 s at 59 ms a reading).
 GAP_STEPS = 4.0
 #: A log's median step shorter than this [s] (10 kHz) is a time unit declared too large.
 MIN_STEP = 1e-4
+#: The dates [s since 1970] a clock counting from 1970 reads in its declared unit: 2000-01-01 to
+#: 2100-01-01. A log whose first time is one of them is in that unit however slowly it is sampled (a
+#: phone's log of a drive, averaged to one row a second, stamped in seconds since 1970): in a unit 1000
+#: times off it would read January 1970 or the year 33,000.
+EPOCH_DATES = (946684800.0, 4102444800.0)
 
 
 @dataclass(frozen=True)
@@ -122,11 +131,31 @@ def _numbers_only(line: str) -> bool:
     return True
 
 
-def read_log(file: str | Path, columns: list[str]) -> dict[str, np.ndarray]:
-    """The named columns of a CSV log as float arrays, keyed by the names given. ``#`` lines are
-    comments; the first other line names the columns, or the comment above it (:func:`data_lines`),
-    where a name may be given with its ``#`` too. A missing column, a cell that is not a number, fewer
-    than two rows raise :class:`ProfileError` naming them (and the log's columns)."""
+def date_seconds(text: str) -> float | None:
+    """Seconds since 1970 of an ISO 8601 date and time (``2023-08-04 17:47:58-04:00``,
+    ``2023-08-04T21:47:58.25Z``; one without a UTC offset is taken as UTC), or None where ``text`` is
+    not one."""
+    try:
+        when = datetime.fromisoformat(text.strip())
+    except ValueError:
+        return None
+    return (when if when.tzinfo is not None else when.replace(tzinfo=timezone.utc)).timestamp()
+
+
+def _date_value(text: str) -> float:
+    seconds = date_seconds(text)
+    if seconds is None:
+        raise ValueError(text)
+    return seconds
+
+
+def read_log(file: str | Path, columns: list[str], dated: str | None = None) -> tuple[dict[str, np.ndarray], bool]:
+    """The named columns of a CSV log as float arrays, keyed by the names given, and whether the column
+    ``dated`` holds ISO 8601 dates and times (:func:`date_seconds`; read as seconds since 1970) rather
+    than numbers, as its first row tells. ``#`` lines are comments; the first other line names the
+    columns, or the comment above it (:func:`data_lines`), where a name may be given with its ``#`` too. A
+    missing column, a cell that is not a number (or not a date where the first row's is), fewer than two
+    rows raise :class:`ProfileError` naming them (and the log's columns)."""
     file = Path(file)
     lines = data_lines(file)
     header = _cells(lines[0][1])
@@ -136,20 +165,29 @@ def read_log(file: str | Path, columns: list[str]) -> dict[str, np.ndarray]:
         raise ProfileError(f"{file}: no column{'s' if len(missing) > 1 else ''} {', '.join(map(repr, missing))}; "
                            f"the log's columns are {', '.join(header)} (name them with --time, --accel, --rates)")
     index = [header.index(c) for c in columns]
+    first = _cells(lines[1][1]) if len(lines) > 1 else []
+    k = index[given.index(dated)] if dated in given else len(first)
+    dates = k < len(first) and not _numbers_only(first[k]) and date_seconds(first[k]) is not None
+    parsers = [_date_value if dates and j == k else float for j in index]
     rows = []
     for number, line in lines[1:]:
         cells = next(csv.reader([line]))
-        try:
-            values = [float(cells[k]) for k in index]
-        except (ValueError, IndexError):
-            raise ProfileError(f"{file}: line {number}: a missing value or not a number in {line.strip()!r}") from None
+        values = []
+        for name, k, parse in zip(columns, index, parsers):
+            cell = cells[k].strip() if k < len(cells) else ""
+            try:
+                values.append(parse(cell))
+            except ValueError:
+                what = "no value" if not cell else f"{cell!r} is not " + (
+                    "a date and time as the first row's" if parse is _date_value else "a number")
+                raise ProfileError(f"{file}: line {number}: column {name!r}: {what}, in {line.strip()!r}") from None
         if not all(math.isfinite(v) for v in values):
             raise ProfileError(f"{file}: line {number}: not a finite number (NaN or inf) in {line.strip()!r}")
         rows.append(values)
     if len(rows) < 2:
         raise ProfileError(f"{file}: needs at least two rows of data, found {len(rows)}")
     data = np.array(rows)
-    return {c: data[:, k] for k, c in enumerate(given)}
+    return {c: data[:, k] for k, c in enumerate(given)}, dates
 
 
 def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None = None,
@@ -157,9 +195,11 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
              check: bool = True, to_g: bool = False, zero_rates: bool = False,
              level: bool = False) -> tuple[DesiredPath, list[str]]:
     """The desired path of a logged motion (see the module's docstring) from ``start`` to ``end`` [s of
-    the log's time] (None: all), at ``rate`` [Hz] (None: the log's own, at most
-    :data:`MAX_DEFAULT_RATE`), its time 0 at the crop's start; with ``modulus`` its ``t,M`` form.
-    Returns the path and its ``source:`` comment lines.
+    the log's time] (None: all), at ``rate`` [Hz] (None: the log's own, at least
+    :data:`MIN_DEFAULT_RATE` and at most :data:`MAX_DEFAULT_RATE`), its time 0 at the crop's start;
+    with ``modulus`` its ``t,M`` form. Returns the path and its ``source:`` comment lines. The time
+    column may hold ISO 8601 dates and times (:func:`read_log`), and ``start``, ``end`` are then
+    seconds since 1970 (:func:`date_seconds`).
 
     With ``check`` the convention check runs on the whole log (:func:`.convert.check_convention`); a log
     with no still stretch cannot be checked and is refused unless ``check`` is False. A log without
@@ -174,25 +214,29 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     """
     file = Path(file)
     _refuse_combinations(fmt, modulus, check, to_g, zero_rates, level)
-    data = read_log(file, [fmt.time, *fmt.accel, *(fmt.rates or ())])
-    clock = data[fmt.time]  # from here on times count from the log's first (a clock from 1970 keeps its digits)
-    origin, t = float(clock[0]) * TIME_UNITS[fmt.time_unit], (clock - clock[0]) * TIME_UNITS[fmt.time_unit]
+    data, dated = read_log(file, [fmt.time, *fmt.accel, *(fmt.rates or ())], dated=fmt.time)
+    if dated and fmt.time_unit != "s":
+        raise ProfileError(f"{file}: column {fmt.time!r} holds dates and times, read as seconds since 1970: "
+                           f"drop --time-unit {fmt.time_unit}")
+    clock, unit = data[fmt.time], 1.0 if dated else TIME_UNITS[fmt.time_unit]
+    origin, t = float(clock[0]) * unit, (clock - clock[0]) * unit  # from the first: a clock from 1970 keeps its digits
     logged = t  # the times with a reading, before the grid bridges the gaps between them
     steps = np.diff(t)
     if np.any(steps <= 0):
         k = int(np.argmax(steps <= 0))
-        raise ProfileError(f"{file}: column {fmt.time!r}: time {convert.seconds(origin + t[k + 1])} s at data row "
-                           f"{k + 2} does not increase (previous {convert.seconds(origin + t[k])} s)")
-    _check_time_unit(file, fmt, t)
+        raise ProfileError(f"{file}: column {fmt.time!r}: time {_clock(origin + t[k + 1], dated)} at data row "
+                           f"{k + 2} does not increase (previous {_clock(origin + t[k], dated)})")
+    _check_time_unit(file, fmt, t, origin)
     R = convert.axes_rotation(fmt.axes)
     f = convert.turn_to_cabin(np.column_stack([data[c] for c in fmt.accel]) * ACCEL_UNITS[fmt.accel_unit], R)
     omega = (np.zeros_like(f) if fmt.rates is None else
              convert.turn_to_cabin(np.column_stack([data[c] for c in fmt.rates]) * RATE_UNITS[fmt.rate_unit], R))
     t, X = convert.uniform_grid(t, np.column_stack([omega, f]))
     native = 1.0 / float(np.median(np.diff(t)))
-    rate = min(native, MAX_DEFAULT_RATE) if rate is None else float(rate)
-    if not rate > 0:
-        raise ProfileError(f"--rate {rate:g}: must be a positive number of samples per second")
+    rate = min(max(native, MIN_DEFAULT_RATE), MAX_DEFAULT_RATE) if rate is None else float(rate)
+    if not rate > 1.0 / csvfile.MS_MEDIAN_STEP:
+        raise ProfileError(f"--rate {rate:g}: give more than {1.0 / csvfile.MS_MEDIAN_STEP:g} samples per second (a "
+                           f"path sampled that slowly is read as one whose time is in milliseconds)")
     bias = gyro_bias(file, fmt, t, X, rate, logged, origin) if zero_rates else None
     if bias is not None:
         X[:, :3] -= bias.omega_cabin
@@ -209,9 +253,10 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
         if level:
             turn = convert.levelling(still.f_cabin)
             X = np.column_stack([X[:, :3] @ turn.T, X[:, 3:] @ turn.T])
-    lo, t, X = _cropped(file, t, X, start, end, origin)
+    lo, t, X = _cropped(file, t, X, start, end, origin, dated)
     convert.check_no_crash(origin + lo + t, X[:, 3:], str(file))
-    span = f"{convert.seconds(origin + lo)}-{convert.seconds(origin + lo + t[-1])} s"
+    a, b = origin + lo, origin + lo + float(t[-1])
+    span = f"{_clock(a, True)} to {_clock(b, True)}" if dated else f"{convert.seconds(a)}-{convert.seconds(b)} s"
     path = convert.make_path(file.stem, t, X[:, :3], X[:, 3:], f"log {file.name}, {span}", modulus)
     changes = [f"readings scaled by {scale:.4f} to read 1 g where still (--to-g)"] if to_g else []
     if level:
@@ -224,12 +269,23 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     comments = _source_lines(file, fmt, span, f"{convert.filter_note(native, rate)}; convention check "
                              f"{'passed' if check else 'skipped (--no-check)'}", changes, modulus)
     gap = longest_gap(logged, lo, lo + float(t[-1]))
+    slow = native < 1.0 / csvfile.MS_MEDIAN_STEP  # a clock from 1970 in its unit (_check_time_unit)
     return path, comments + ([] if gap is None else [
-        f"warning: no reading for {gap[0]:.3g} s from {convert.seconds(origin + gap[1])} s of the log's time "
-        f"({gap[0] / gap[2]:.0f} of its median steps of {gap[2]:.3g} s), bridged by a straight line"])
+        f"warning: no reading for {gap[0]:.3g} s from {_clock(origin + gap[1], dated)} of the log's time "
+        f"({gap[0] / gap[2]:.0f} of its median steps of {gap[2]:.3g} s), bridged by a straight line"]) + (
+        [f"warning: the log has a reading every {1 / native:.3g} s: what changes faster than {native / 2:.3g} Hz "
+         f"(a bump, a gear change, the onset of a brake) is not in it"] if slow else [])
 
 
-def _cropped(file: Path, t, X, start: float | None, end: float | None, origin: float):
+def _clock(x: float, dated: bool) -> str:
+    """A time of the log's clock [s]: ``1403636599.75856 s``, or for a log stamped with dates and times
+    the UTC date and time, ``2023-08-04T21:47:58+00:00``."""
+    if not dated:
+        return f"{convert.seconds(x)} s"
+    return datetime.fromtimestamp(x, timezone.utc).isoformat(timespec="milliseconds").replace(".000+", "+")
+
+
+def _cropped(file: Path, t, X, start: float | None, end: float | None, origin: float, dated: bool = False):
     """(the crop's start, its times from 0, its samples) of the grid ``t`` [s from the log's first
     time, ``origin`` on the log's clock], ``X``, from ``start`` to ``end`` [s of the log's clock].
     A start or end outside the log by more than a step is refused: on a clock from 1970 ``--start 5``
@@ -237,8 +293,9 @@ def _cropped(file: Path, t, X, start: float | None, end: float | None, origin: f
     step = float(t[1] - t[0])
     for option, when in (("--start", start), ("--end", end)):
         if when is not None and not -step <= float(when) - origin <= float(t[-1]) + step:
-            raise ProfileError(f"{file}: {option} {convert.seconds(when)}: outside the log, which runs from "
-                               f"{convert.seconds(origin)} s to {convert.seconds(origin + t[-1])} s of its own clock")
+            given = _clock(when, dated) if dated else convert.seconds(when)
+            raise ProfileError(f"{file}: {option} {given}: outside the log, which runs from "
+                               f"{_clock(origin, dated)} to {_clock(origin + t[-1], dated)} of its own clock")
     lo = 0.0 if start is None else float(start) - origin
     t, X = convert.crop(t, X, lo, None if end is None else float(end) - origin, str(file), origin)
     return lo, t, X
@@ -356,13 +413,15 @@ def measured(grid, logged) -> np.ndarray:
     return nearest <= float(np.median(np.diff(logged))) * (1.0 + 1e-9)
 
 
-def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray) -> None:
+def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray, origin: float = 0.0) -> None:
     """Refuse a time column in a unit other than declared (:func:`_time_problem`, on the times in
-    seconds ``t``): a unit 1000 times smaller (milliseconds declared as seconds), a span of days, or
-    steps shorter than :data:`MIN_STEP` (microseconds declared as nanoseconds: a log of 16 ms at 200
-    kHz). The refusal names the first unit under which the same rule passes."""
+    seconds ``t`` from the first, ``origin`` [s]): a unit 1000 times smaller (milliseconds declared as
+    seconds), a span of days, or steps shorter than :data:`MIN_STEP` (microseconds declared as
+    nanoseconds: a log of 16 ms at 200 kHz). The refusal names the first unit under which the same
+    rule passes. A log sampled at 2 Hz or slower whose clock reads a date (:data:`EPOCH_DATES`) is in
+    its unit: its slowness is a warning of :func:`from_log`, not a unit."""
     problem = _time_problem(t)
-    if problem is None:
+    if problem is None or (problem == "ms" and EPOCH_DATES[0] <= origin <= EPOCH_DATES[1]):
         return
     where = f"{file}: column {fmt.time!r} [{fmt.time_unit}]"
     likely = next((unit for unit, seconds in TIME_UNITS.items()  # the first under which the check passes
