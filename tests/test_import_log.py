@@ -631,3 +631,57 @@ def test_a_slow_log_on_a_clock_from_1970_is_not_taken_for_milliseconds(tmp_path,
     assert main(["import", "log", str(zero), *args, "--out", str(tmp_path / "z.csv")]) == 2
     assert "looks like milliseconds" in capsys.readouterr().err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["drive.csv", "x.csv", "zero.csv"]
+
+
+def phone_logs(folder, t, omega, f, axes, shift=0.004, origin=1707663721.0):
+    """The motion as a phone logger writes it: the accelerometer and the gyroscope each to a file of
+    its own (``time`` in ns since 1970, ``seconds_elapsed``, then ``z,y,x``), the gyroscope read
+    ``shift`` s after each accelerometer reading."""
+    R = convert.axes_rotation(axes)
+    for name, values, lag in (("TotalAcceleration.csv", f @ R, 0.0), ("Gyroscope.csv", omega @ R, shift)):
+        late = t + lag
+        with open(folder / name, "w") as out:
+            out.write("time,seconds_elapsed,z,y,x\n")
+            for ti, v in zip(late, values if lag == 0 else np.column_stack(
+                    [np.interp(late, t, values[:, i]) for i in range(3)])):
+                out.write(f"{round((origin + ti) * 1e9)},{float(ti)!r}," + ",".join(repr(float(x)) for x in v[::-1]) + "\n")
+    return folder / "TotalAcceleration.csv", folder / "Gyroscope.csv"
+
+
+def test_rates_from_a_second_file_read_as_one_log(tmp_path, capsys):
+    """A phone logger's accelerometer and gyroscope files, each at its own instants: the rates are
+    interpolated onto the accelerometer's times, the same path as one log holding both. A rates file
+    on another clock, one with a gap, and an --out that is a file being read are refused."""
+    t, omega, f = motion()
+    axes = ("right", "up", "back")
+    plain = write_log(tmp_path / "plain.csv", t, omega, f, axes, "m/s2", "rad/s")
+    assert main(["import", "log", str(plain), "--accel-unit", "m/s2", "--rate-unit", "rad/s", "--axes",
+                 ",".join(axes), "--out", str(tmp_path / "a.csv")]) == 0
+    accel, gyro = phone_logs(tmp_path, t, omega, f, axes)
+    argv = ["import", "log", str(accel), "--rates-file", str(gyro), "--time", "time", "--time-unit", "ns",
+            "--accel", "x,y,z", "--rates", "x,y,z", "--accel-unit", "m/s2", "--rate-unit", "rad/s", "--axes",
+            ",".join(axes), "--out"]
+    assert main(argv + [str(tmp_path / "b.csv")]) == 0
+    a, b = profiles.load(tmp_path / "a.csv"), profiles.load(tmp_path / "b.csv")
+    assert a.duration - 0.011 < b.duration < a.duration  # the span both files cover: from the second reading
+    np.testing.assert_allclose(b.S_d, a.sample(b.t + 0.005), atol=1e-3)  # 1e-3: a half step's interpolation
+    assert "rates x,y,z [rad/s] from Gyroscope.csv" in (tmp_path / "b.csv").read_text()
+    elapsed = ["--time", "seconds_elapsed", "--time-unit", "s"]  # the logger's other clock, from its start
+    assert main(argv[:5] + elapsed + argv[9:] + [str(tmp_path / "c.csv")]) == 0
+    c = profiles.load(tmp_path / "c.csv")
+    np.testing.assert_allclose(c.S_d, a.sample(c.t + 0.005), atol=1e-3)
+    lines = gyro.read_text().splitlines()
+    (tmp_path / "late.csv").write_text("\n".join([lines[0]] + [
+        f"{int(line.split(',')[0]) + 10 ** 12},{line.split(',', 1)[1]}" for line in lines[1:]]) + "\n")
+    (tmp_path / "gap.csv").write_text("\n".join(lines[:400] + lines[700:]) + "\n")
+    for bad, words in (("late.csv", "no common second; is column 'time' the same clock in both?"),
+                       ("gap.csv", "gap.csv: no rate reading for 1.51 s from 1707663722.994 s")):
+        assert main(argv[:4] + [str(tmp_path / bad)] + argv[5:] + [str(tmp_path / "x.csv")]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and words in err
+    assert main(argv + [str(gyro), "--overwrite"]) == 2
+    assert "is the log being read" in capsys.readouterr().err
+    assert main(argv[:9] + ["--accel", "x,y,z", "--rates", "none", "--accel-unit", "m/s2", "--modulus", "--out",
+                            str(tmp_path / "x.csv")]) == 2
+    assert "--rates-file holds the angular rates" in capsys.readouterr().err
+    assert not (tmp_path / "x.csv").exists() and lines == gyro.read_text().splitlines()

@@ -345,6 +345,9 @@ def run_import_log(args) -> int:
     from desdemona.profiles import convert, log
 
     convert.check_out(args.out, args.overwrite)
+    for given in (args.file, args.rates_file):
+        if given is not None and Path(given).exists() and Path(given).resolve() == Path(args.out).resolve():
+            raise UserError(f"--out {args.out}: is the log being read ({given}); choose another file")
     try:
         lever_arm = tuple(float(x) for x in args.lever_arm.split(","))
     except ValueError:
@@ -355,7 +358,7 @@ def run_import_log(args) -> int:
         raise UserError("--rate-unit deg/s or rad/s: the unit of the rate columns "
                         f"({','.join(rates)}); for a log without angular rates give --rates none (with --modulus)")
     fmt = log.LogFormat(args.time.strip(), names(args.accel), rates, args.accel_unit, args.rate_unit or "rad/s",
-                        args.time_unit, names(args.axes), lever_arm)
+                        args.time_unit, names(args.axes), lever_arm, args.rates_file)
     path, comments = log.from_log(args.file, fmt, args.start, args.end, args.rate, args.modulus, args.check,
                                   args.to_g, args.zero_rates, args.level)
     _say_imported(convert.write_path(args.out, path, comments, args.overwrite), path)

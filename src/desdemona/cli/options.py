@@ -261,6 +261,10 @@ def _add_import_parser(sub) -> None:
     lg.add_argument("--rates", default="p,q,r", metavar="X,Y,Z",
                     help="angular rate columns, the log's x,y,z (default: p,q,r); none for a log without "
                          "them (with --modulus)")
+    lg.add_argument("--rates-file", default=None, metavar="FILE", dest="rates_file",
+                    help="a second CSV log holding the --rates columns, on the same clock (a phone logger's "
+                         "gyroscope file beside its accelerometer's); its rates are interpolated onto FILE's "
+                         "times, over the span both cover")
     lg.add_argument("--accel-unit", required=True, choices=("g", "m/s2"), dest="accel_unit")
     lg.add_argument("--rate-unit", choices=("deg/s", "rad/s"), dest="rate_unit",
                     help="the unit of the --rates columns (required unless --rates none)")

@@ -59,7 +59,9 @@ class LogFormat:
     for a log without angular rates (the modulus form only, :func:`from_log`);
     accel_unit : ``g`` or ``m/s2``; rate_unit : ``deg/s`` or ``rad/s``; time_unit : ``s``, ``ms``, ``us`` or ``ns``;
     axes : the cabin-frame direction of the log's x, y, z (``forward,right,down`` = vehicle body axes);
-    lever_arm : (3,) [m] from the sensor to the head, in the log's axes.
+    lever_arm : (3,) [m] from the sensor to the head, in the log's axes;
+    rates_file : a second CSV log that holds the rates, with a time column of the same name and unit
+    (a phone logger's, which writes each sensor to a file of its own: :func:`with_rates_file`).
     """
 
     time: str = "t"
@@ -70,6 +72,7 @@ class LogFormat:
     time_unit: str = "s"
     axes: tuple[str, str, str] = ("forward", "right", "down")
     lever_arm: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    rates_file: str | None = None
 
     def __post_init__(self):
         units = [("--accel-unit", self.accel_unit, ACCEL_UNITS), ("--time-unit", self.time_unit, TIME_UNITS)]
@@ -83,6 +86,8 @@ class LogFormat:
         for label, names in columns:
             if len(names) != 3:
                 raise ProfileError(f"{label} {','.join(names)}: give three column names, for x, y and z")
+        if self.rates_file is not None and self.rates is None:
+            raise ProfileError("--rates-file holds the angular rates: name their columns with --rates")
         if len(self.lever_arm) != 3 or not all(math.isfinite(x) for x in self.lever_arm):
             raise ProfileError(f"--lever-arm {self.lever_arm}: give three numbers x,y,z in metres")
         convert.axes_rotation(self.axes)  # raises on a left-handed or degenerate set
@@ -214,23 +219,12 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     """
     file = Path(file)
     _refuse_combinations(fmt, modulus, check, to_g, zero_rates, level)
-    data, dated = read_log(file, [fmt.time, *fmt.accel, *(fmt.rates or ())], dated=fmt.time)
-    if dated and fmt.time_unit != "s":
-        raise ProfileError(f"{file}: column {fmt.time!r} holds dates and times, read as seconds since 1970: "
-                           f"drop --time-unit {fmt.time_unit}")
-    clock, unit = data[fmt.time], 1.0 if dated else TIME_UNITS[fmt.time_unit]
-    origin, t = float(clock[0]) * unit, (clock - clock[0]) * unit  # from the first: a clock from 1970 keeps its digits
+    t, f, omega, dated = _readings(file, fmt)
+    origin, t = float(t[0]), t - t[0]  # times from the log's first: a clock from 1970 keeps its digits
     logged = t  # the times with a reading, before the grid bridges the gaps between them
-    steps = np.diff(t)
-    if np.any(steps <= 0):
-        k = int(np.argmax(steps <= 0))
-        raise ProfileError(f"{file}: column {fmt.time!r}: time {_clock(origin + t[k + 1], dated)} at data row "
-                           f"{k + 2} does not increase (previous {_clock(origin + t[k], dated)})")
-    _check_time_unit(file, fmt, t, origin)
     R = convert.axes_rotation(fmt.axes)
-    f = convert.turn_to_cabin(np.column_stack([data[c] for c in fmt.accel]) * ACCEL_UNITS[fmt.accel_unit], R)
-    omega = (np.zeros_like(f) if fmt.rates is None else
-             convert.turn_to_cabin(np.column_stack([data[c] for c in fmt.rates]) * RATE_UNITS[fmt.rate_unit], R))
+    f = convert.turn_to_cabin(f * ACCEL_UNITS[fmt.accel_unit], R)
+    omega = np.zeros_like(f) if omega is None else convert.turn_to_cabin(omega * RATE_UNITS[fmt.rate_unit], R)
     t, X = convert.uniform_grid(t, np.column_stack([omega, f]))
     native = 1.0 / float(np.median(np.diff(t)))
     rate = min(max(native, MIN_DEFAULT_RATE), MAX_DEFAULT_RATE) if rate is None else float(rate)
@@ -285,6 +279,58 @@ def _clock(x: float, dated: bool) -> str:
     return datetime.fromtimestamp(x, timezone.utc).isoformat(timespec="milliseconds").replace(".000+", "+")
 
 
+def _read_clock(file: Path, fmt: LogFormat, columns: list[str]) -> tuple[dict[str, np.ndarray], bool]:
+    """:func:`read_log` of the time column and ``columns``, the time in seconds (of a clock from 1970
+    where it holds dates), and whether it holds dates; refused where it does not increase or is in
+    a unit other than declared (:func:`_check_time_unit`)."""
+    data, dated = read_log(file, [fmt.time, *columns], dated=fmt.time)
+    if dated and fmt.time_unit != "s":
+        raise ProfileError(f"{file}: column {fmt.time!r} holds dates and times, read as seconds since 1970: "
+                           f"drop --time-unit {fmt.time_unit}")
+    t = data[fmt.time] = data[fmt.time] * (1.0 if dated else TIME_UNITS[fmt.time_unit])
+    steps = np.diff(t)
+    if np.any(steps <= 0):
+        k = int(np.argmax(steps <= 0))
+        raise ProfileError(f"{file}: column {fmt.time!r}: time {_clock(t[k + 1], dated)} at data row "
+                           f"{k + 2} does not increase (previous {_clock(t[k], dated)})")
+    _check_time_unit(file, fmt, t - t[0], float(t[0]))
+    return data, dated
+
+
+def _readings(file: Path, fmt: LogFormat) -> tuple[np.ndarray, np.ndarray, np.ndarray | None, bool]:
+    """(times [s], forces (N, 3), rates (N, 3) or None, whether the clock holds dates) of the log, in
+    its units and axes; the rates from ``fmt.rates_file`` where it names one (:func:`with_rates_file`)."""
+    own_rates = fmt.rates if fmt.rates is not None and fmt.rates_file is None else ()
+    data, dated = _read_clock(file, fmt, [*fmt.accel, *own_rates])
+    t, f = data[fmt.time], np.column_stack([data[c] for c in fmt.accel])
+    if fmt.rates_file is None:
+        return t, f, np.column_stack([data[c] for c in own_rates]) if own_rates else None, dated
+    keep, omega = with_rates_file(file, fmt, t, dated)
+    return t[keep], f[keep], omega, dated
+
+
+def with_rates_file(file: Path, fmt: LogFormat, t: np.ndarray, dated: bool) -> tuple[np.ndarray, np.ndarray]:
+    """(which of the accelerometer log's times ``t`` [s] the rates cover, the rates (K, 3) at those
+    times): ``fmt.rates_file``'s, interpolated linearly, over the span both logs cover (a phone logger
+    writes the accelerometer and the gyroscope to files of their own, each at its own instants).
+    Refused where the rates file's clock is not the log's (no common span of a second), or where it
+    has a gap of more than :data:`GAP_STEPS` of its median steps within that span."""
+    other = Path(fmt.rates_file)
+    rates, other_dated = _read_clock(other, fmt, list(fmt.rates))
+    tr = rates[fmt.time]
+    lo, hi = max(t[0], tr[0]), min(t[-1], tr[-1])
+    if dated != other_dated or not hi - lo >= 1.0:
+        raise ProfileError(f"{other}: its rates run from {_clock(tr[0], other_dated)} to {_clock(tr[-1], other_dated)}"
+                           f", the log {file.name} from {_clock(t[0], dated)} to {_clock(t[-1], dated)}: no common "
+                           f"second; is column {fmt.time!r} the same clock in both?")
+    gap = longest_gap(tr - lo, 0.0, hi - lo)
+    if gap is not None:
+        raise ProfileError(f"{other}: no rate reading for {gap[0]:.3g} s from {_clock(lo + gap[1], dated)} "
+                           f"({gap[0] / gap[2]:.0f} of its median steps of {gap[2]:.3g} s)")
+    keep = (t >= lo) & (t <= hi)
+    return keep, np.column_stack([np.interp(t[keep], tr, rates[c]) for c in fmt.rates])
+
+
 def _cropped(file: Path, t, X, start: float | None, end: float | None, origin: float, dated: bool = False):
     """(the crop's start, its times from 0, its samples) of the grid ``t`` [s from the log's first
     time, ``origin`` on the log's clock], ``X``, from ``start`` to ``end`` [s of the log's clock].
@@ -319,7 +365,8 @@ def _source_lines(file: Path, fmt: LogFormat, span: str, filtered: str, changes:
                   modulus: bool) -> list[str]:
     """The ``source:`` comment lines of an imported log: its columns and units, its axes and lever arm,
     the crop, the filter and the check, and what was changed in the readings."""
-    rates = "none" if fmt.rates is None else f"{','.join(fmt.rates)} [{fmt.rate_unit}]"
+    rates = "none" if fmt.rates is None else f"{','.join(fmt.rates)} [{fmt.rate_unit}]" + (
+        "" if fmt.rates_file is None else f" from {Path(fmt.rates_file).name}")
     return [f"source: log {file.name}, columns time {fmt.time} [{fmt.time_unit}], accel "
             f"{','.join(fmt.accel)} [{fmt.accel_unit}], rates {rates}",
             f"source: axes {','.join(fmt.axes)} for the log's x,y,z -> cabin (right,forward,up); lever arm "
