@@ -219,8 +219,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     """
     file = Path(file)
     _refuse_combinations(fmt, modulus, check, to_g, zero_rates, level)
-    t, f, omega, dated = _readings(file, fmt)
-    origin, t = float(t[0]), t - t[0]  # times from the log's first: a clock from 1970 keeps its digits
+    origin, t, f, omega, dated = _readings(file, fmt)
     logged = t  # the times with a reading, before the grid bridges the gaps between them
     R = convert.axes_rotation(fmt.axes)
     f = convert.turn_to_cabin(f * ACCEL_UNITS[fmt.accel_unit], R)
@@ -279,53 +278,59 @@ def _clock(x: float, dated: bool) -> str:
     return datetime.fromtimestamp(x, timezone.utc).isoformat(timespec="milliseconds").replace(".000+", "+")
 
 
-def _read_clock(file: Path, fmt: LogFormat, columns: list[str]) -> tuple[dict[str, np.ndarray], bool]:
-    """:func:`read_log` of the time column and ``columns``, the time in seconds (of a clock from 1970
-    where it holds dates), and whether it holds dates; refused where it does not increase or is in
-    a unit other than declared (:func:`_check_time_unit`)."""
+def _read_clock(file: Path, fmt: LogFormat, columns: list[str]) -> tuple[float, dict[str, np.ndarray], bool]:
+    """(the first time [s of the log's clock], :func:`read_log` of the time column and ``columns``, whether
+    the clock holds dates), the times in seconds from the first (counted in the log's own unit first: a
+    nanosecond clock from 1970 keeps its digits). Refused where the time does not increase or is in a
+    unit other than declared (:func:`_check_time_unit`)."""
     data, dated = read_log(file, [fmt.time, *columns], dated=fmt.time)
     if dated and fmt.time_unit != "s":
         raise ProfileError(f"{file}: column {fmt.time!r} holds dates and times, read as seconds since 1970: "
                            f"drop --time-unit {fmt.time_unit}")
-    t = data[fmt.time] = data[fmt.time] * (1.0 if dated else TIME_UNITS[fmt.time_unit])
+    clock, unit = data[fmt.time], 1.0 if dated else TIME_UNITS[fmt.time_unit]
+    origin, t = float(clock[0]) * unit, (clock - clock[0]) * unit
+    data[fmt.time] = t
     steps = np.diff(t)
     if np.any(steps <= 0):
         k = int(np.argmax(steps <= 0))
-        raise ProfileError(f"{file}: column {fmt.time!r}: time {_clock(t[k + 1], dated)} at data row "
-                           f"{k + 2} does not increase (previous {_clock(t[k], dated)})")
-    _check_time_unit(file, fmt, t - t[0], float(t[0]))
-    return data, dated
+        raise ProfileError(f"{file}: column {fmt.time!r}: time {_clock(origin + t[k + 1], dated)} at data row "
+                           f"{k + 2} does not increase (previous {_clock(origin + t[k], dated)})")
+    _check_time_unit(file, fmt, t, origin)
+    return origin, data, dated
 
 
-def _readings(file: Path, fmt: LogFormat) -> tuple[np.ndarray, np.ndarray, np.ndarray | None, bool]:
-    """(times [s], forces (N, 3), rates (N, 3) or None, whether the clock holds dates) of the log, in
-    its units and axes; the rates from ``fmt.rates_file`` where it names one (:func:`with_rates_file`)."""
+def _readings(file: Path, fmt: LogFormat) -> tuple[float, np.ndarray, np.ndarray, np.ndarray | None, bool]:
+    """(the first time [s of the log's clock], the times [s from it], forces (N, 3), rates (N, 3) or None,
+    whether the clock holds dates) of the log, in its units and axes; the rates from ``fmt.rates_file``
+    where it names one (:func:`with_rates_file`), and then the times those rates cover."""
     own_rates = fmt.rates if fmt.rates is not None and fmt.rates_file is None else ()
-    data, dated = _read_clock(file, fmt, [*fmt.accel, *own_rates])
+    origin, data, dated = _read_clock(file, fmt, [*fmt.accel, *own_rates])
     t, f = data[fmt.time], np.column_stack([data[c] for c in fmt.accel])
     if fmt.rates_file is None:
-        return t, f, np.column_stack([data[c] for c in own_rates]) if own_rates else None, dated
-    keep, omega = with_rates_file(file, fmt, t, dated)
-    return t[keep], f[keep], omega, dated
+        return origin, t, f, np.column_stack([data[c] for c in own_rates]) if own_rates else None, dated
+    keep, omega = with_rates_file(file, fmt, origin, t, dated)
+    return origin + t[keep][0], t[keep] - t[keep][0], f[keep], omega, dated
 
 
-def with_rates_file(file: Path, fmt: LogFormat, t: np.ndarray, dated: bool) -> tuple[np.ndarray, np.ndarray]:
-    """(which of the accelerometer log's times ``t`` [s] the rates cover, the rates (K, 3) at those
-    times): ``fmt.rates_file``'s, interpolated linearly, over the span both logs cover (a phone logger
-    writes the accelerometer and the gyroscope to files of their own, each at its own instants).
+def with_rates_file(file: Path, fmt: LogFormat, origin: float, t: np.ndarray,
+                    dated: bool) -> tuple[np.ndarray, np.ndarray]:
+    """(which of the accelerometer log's times ``t`` [s from ``origin``] the rates cover, the rates (K, 3)
+    at those times): ``fmt.rates_file``'s, interpolated linearly, over the span both logs cover (a phone
+    logger writes the accelerometer and the gyroscope to files of their own, each at its own instants).
     Refused where the rates file's clock is not the log's (no common span of a second), or where it
     has a gap of more than :data:`GAP_STEPS` of its median steps within that span."""
     other = Path(fmt.rates_file)
-    rates, other_dated = _read_clock(other, fmt, list(fmt.rates))
-    tr = rates[fmt.time]
+    origin_r, rates, other_dated = _read_clock(other, fmt, list(fmt.rates))
+    tr = rates[fmt.time] + (origin_r - origin)  # on the accelerometer log's count
     lo, hi = max(t[0], tr[0]), min(t[-1], tr[-1])
     if dated != other_dated or not hi - lo >= 1.0:
-        raise ProfileError(f"{other}: its rates run from {_clock(tr[0], other_dated)} to {_clock(tr[-1], other_dated)}"
-                           f", the log {file.name} from {_clock(t[0], dated)} to {_clock(t[-1], dated)}: no common "
-                           f"second; is column {fmt.time!r} the same clock in both?")
-    gap = longest_gap(tr - lo, 0.0, hi - lo)
+        raise ProfileError(f"{other}: its rates run from {_clock(origin_r, other_dated)} to "
+                           f"{_clock(origin_r + rates[fmt.time][-1], other_dated)}, the log {file.name} from "
+                           f"{_clock(origin, dated)} to {_clock(origin + t[-1], dated)}: no common second; is "
+                           f"column {fmt.time!r} the same clock in both?")
+    gap = longest_gap(tr, lo, hi)
     if gap is not None:
-        raise ProfileError(f"{other}: no rate reading for {gap[0]:.3g} s from {_clock(lo + gap[1], dated)} "
+        raise ProfileError(f"{other}: no rate reading for {gap[0]:.3g} s from {_clock(origin + gap[1], dated)} "
                            f"({gap[0] / gap[2]:.0f} of its median steps of {gap[2]:.3g} s)")
     keep = (t >= lo) & (t <= hi)
     return keep, np.column_stack([np.interp(t[keep], tr, rates[c]) for c in fmt.rates])
