@@ -578,8 +578,15 @@ def test_a_log_stamped_with_dates_reads_as_the_same_motion(tmp_path, capsys):
     argv = ["import", "log", str(tmp_path / "dated0.csv"), *DATED, "--out", str(tmp_path / "c.csv")]
     assert main(argv + ["--start", "2023-08-04 17:48:00-04:00", "--end", "2023-08-04T21:48:03Z"]) == 0
     assert profiles.load(tmp_path / "c.csv").duration == pytest.approx(3.0)
+    assert "columns time time [date and time]" in (tmp_path / "c.csv").read_text()
+    # its rates in a file of their own on the same clock, as seconds since 1970: the same path
+    epoch = write_log(tmp_path / "rates.csv", t + 1691185678.0, omega, f, axes, "m/s2", "rad/s",
+                      names=("time", "ax", "ay", "az", "p", "q", "r"))
+    assert main(argv[:3] + ["--rates-file", str(epoch)] + argv[3:-1] + [str(tmp_path / "d.csv")]) == 0
+    np.testing.assert_allclose(profiles.load(tmp_path / "d.csv").S_d, a.S_d, atol=1e-4)
     for extra, words in ((["--start", "2023-08-04 17:00:00-04:00"], "--start 2023-08-04T21:00:00+00:00: outside the "
                            "log, which runs from 2023-08-04T21:47:58+00:00 to 2023-08-04T21:48:05.990+00:00"),
+                         (["--start", "3"], "of its own clock (give --start as a date and time, as the log's)"),
                          (["--start", "after lunch"], "'after lunch': give seconds, or a date and time"),
                          (["--time-unit", "ms"], "column 'time' holds dates and times, read as seconds since 1970: "
                           "drop --time-unit ms")):
@@ -596,12 +603,19 @@ def test_a_cell_that_cannot_be_read_is_named_by_its_column(tmp_path, capsys):
                                        "'2023-08-4x 17:47:58.020000-04:00' is not a date and time as the first row's"),
                                       (lines[5].replace(",", ",x,", 1).rsplit(",", 1)[0],
                                        "line 6: column 'ax': 'x' is not a number"),
-                                      (lines[5].rsplit(",", 1)[0], "line 6: column 'r': no value"))):
+                                      (lines[5].rsplit(",", 1)[0], "line 6: column 'r': no value"),
+                                      # local times beside ones with their offset: hours apart, read as UTC
+                                      (lines[5].replace("-04:00,", ",", 1), "line 6: column 'time': '2023-08-04 "
+                                       "17:47:58.020000' has no UTC offset, the first row's has one"))):
         bad = tmp_path / f"bad{k}.csv"
         bad.write_text("\n".join([*lines[:5], row, *lines[6:]]) + "\n")
         assert main(["import", "log", str(bad), *DATED, "--out", str(tmp_path / "x.csv")]) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and words in err
+    excel = tmp_path / "excel.csv"  # a spreadsheet's dates are not ISO 8601: the message shows the form read
+    excel.write_text("\n".join([lines[0]] + [line.replace("2023-08-04 ", "04.08.2023 ") for line in lines[1:]]) + "\n")
+    assert main(["import", "log", str(excel), *DATED, "--out", str(tmp_path / "x.csv")]) == 2
+    assert "is not a number, nor an ISO 8601 date and time (2023-08-04 17:47:58-04:00)" in capsys.readouterr().err
     assert not (tmp_path / "x.csv").exists()
 
 
@@ -629,7 +643,8 @@ def test_a_slow_log_on_a_clock_from_1970_is_not_taken_for_milliseconds(tmp_path,
     assert "--rate 2: give more than 2 samples per second" in capsys.readouterr().err
     zero = write_log(tmp_path / "zero.csv", t, omega, f, axes, "m/s2", "rad/s")
     assert main(["import", "log", str(zero), *args, "--out", str(tmp_path / "z.csv")]) == 2
-    assert "looks like milliseconds" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert "looks like milliseconds" in err and "add its start in seconds since 1970 to its times" in err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["drive.csv", "x.csv", "zero.csv"]
 
 
@@ -644,7 +659,8 @@ def phone_logs(folder, t, omega, f, axes, shift=0.004, origin=1707663721.0):
             out.write("time,seconds_elapsed,z,y,x\n")
             for ti, v in zip(late, values if lag == 0 else np.column_stack(
                     [np.interp(late, t, values[:, i]) for i in range(3)])):
-                out.write(f"{round((origin + ti) * 1e9)},{float(ti)!r}," + ",".join(repr(float(x)) for x in v[::-1]) + "\n")
+                cells = [repr(float(x)) for x in v[::-1]]  # z, y, x
+                out.write(f"{round((origin + ti) * 1e9)},{float(ti)!r}," + ",".join(cells) + "\n")
     return folder / "TotalAcceleration.csv", folder / "Gyroscope.csv"
 
 
@@ -679,8 +695,24 @@ def test_rates_from_a_second_file_read_as_one_log(tmp_path, capsys):
         assert main(argv[:4] + [str(tmp_path / bad)] + argv[5:] + [str(tmp_path / "x.csv")]) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and words in err
-    assert main(argv + [str(gyro), "--overwrite"]) == 2
-    assert "is the log being read" in capsys.readouterr().err
+    for out in (str(gyro), str(accel)):  # without --overwrite too: the refusal that holds
+        assert main(argv + [out]) == 2
+        assert "is the log being read" in capsys.readouterr().err
+    assert main(argv[:4] + [str(accel)] + argv[5:] + [str(tmp_path / "x.csv")]) == 2
+    assert "is the accelerometer's log itself; name the gyroscope's file" in capsys.readouterr().err
+    # a gyroscope read for part of the log, or once a second: imported, with a warning
+    for name, kept, words in (("part.csv", [lines[0]] + lines[1001:], "the rates of part.csv cover 1707663726.004 s "
+                               "to 1707663728.995 s of the log's 1707663721 s to 1707663728.995 s: the path is cut"),
+                              ("slow.csv", [lines[0]] + lines[1::200], "slow.csv has a rate reading every 1 s")):
+        (tmp_path / name).write_text("\n".join(kept) + "\n")
+        assert main(argv[:4] + [str(tmp_path / name)] + argv[5:9] + ["--no-check"] + argv[9:] +
+                    [str(tmp_path / f"{name}.out.csv")]) == 0
+        assert words in capsys.readouterr().err
+    # a gyroscope on a clock in ms beside the accelerometer's in ns: the unit is declared for both
+    (tmp_path / "ms.csv").write_text("\n".join([lines[0]] + [
+        f"{int(line.split(',')[0]) // 10 ** 6},{line.split(',', 1)[1]}" for line in lines[1:]]) + "\n")
+    assert main(argv[:4] + [str(tmp_path / "ms.csv")] + argv[5:] + [str(tmp_path / "x.csv")]) == 2
+    assert "--time-unit is the unit of both files' clocks" in capsys.readouterr().err
     assert main(argv[:9] + ["--accel", "x,y,z", "--rates", "none", "--accel-unit", "m/s2", "--modulus", "--out",
                             str(tmp_path / "x.csv")]) == 2
     assert "--rates-file holds the angular rates" in capsys.readouterr().err

@@ -344,10 +344,10 @@ def run_import_jsbsim(args) -> int:
 def run_import_log(args) -> int:
     from desdemona.profiles import convert, log
 
-    convert.check_out(args.out, args.overwrite)
     for given in (args.file, args.rates_file):
         if given is not None and Path(given).exists() and Path(given).resolve() == Path(args.out).resolve():
             raise UserError(f"--out {args.out}: is the log being read ({given}); choose another file")
+    convert.check_out(args.out, args.overwrite)
     try:
         lever_arm = tuple(float(x) for x in args.lever_arm.split(","))
     except ValueError:

@@ -140,18 +140,46 @@ def date_seconds(text: str) -> float | None:
     """Seconds since 1970 of an ISO 8601 date and time (``2023-08-04 17:47:58-04:00``,
     ``2023-08-04T21:47:58.25Z``; one without a UTC offset is taken as UTC), or None where ``text`` is
     not one."""
-    try:
-        when = datetime.fromisoformat(text.strip())
-    except ValueError:
+    when = _when(text)
+    if when is None:
         return None
     return (when if when.tzinfo is not None else when.replace(tzinfo=timezone.utc)).timestamp()
 
 
-def _date_value(text: str) -> float:
-    seconds = date_seconds(text)
-    if seconds is None:
-        raise ValueError(text)
-    return seconds
+def _when(text: str) -> datetime | None:
+    try:
+        return datetime.fromisoformat(text.strip())
+    except ValueError:
+        return None
+
+
+def _number(text: str) -> float:
+    try:
+        return float(text)
+    except ValueError:
+        raise ValueError("is not a number") from None
+
+
+def _time_number(text: str) -> float:
+    try:
+        return float(text)
+    except ValueError:
+        raise ValueError("is not a number, nor an ISO 8601 date and time (2023-08-04 17:47:58-04:00)") from None
+
+
+def _date_reader(offset: bool):
+    """A cell's seconds since 1970 (:func:`date_seconds`), refused where it is not a date and time, or where
+    it has a UTC offset and the first row's has not (``offset``), or the reverse: a column mixing the two
+    would read local times as UTC beside them (hours apart, or one hour across a change of summer time)."""
+    def read(text: str) -> float:
+        when = _when(text)
+        if when is None:
+            raise ValueError("is not a date and time as the first row's")
+        if (when.tzinfo is not None) != offset:
+            raise ValueError("has a UTC offset, the first row's has none" if offset is False
+                             else "has no UTC offset, the first row's has one")
+        return date_seconds(text)
+    return read
 
 
 def read_log(file: str | Path, columns: list[str], dated: str | None = None) -> tuple[dict[str, np.ndarray], bool]:
@@ -171,9 +199,11 @@ def read_log(file: str | Path, columns: list[str], dated: str | None = None) -> 
                            f"the log's columns are {', '.join(header)} (name them with --time, --accel, --rates)")
     index = [header.index(c) for c in columns]
     first = _cells(lines[1][1]) if len(lines) > 1 else []
-    k = index[given.index(dated)] if dated in given else len(first)
-    dates = k < len(first) and not _numbers_only(first[k]) and date_seconds(first[k]) is not None
-    parsers = [_date_value if dates and j == k else float for j in index]
+    k = index[given.index(dated)] if dated in given else -1
+    when = _when(first[k]) if 0 <= k < len(first) and not _numbers_only(first[k]) else None
+    dates = when is not None
+    time_reader = _date_reader(when.tzinfo is not None) if dates else _time_number
+    parsers = [time_reader if j == k else _number for j in index]
     rows = []
     for number, line in lines[1:]:
         cells = next(csv.reader([line]))
@@ -182,9 +212,8 @@ def read_log(file: str | Path, columns: list[str], dated: str | None = None) -> 
             cell = cells[k].strip() if k < len(cells) else ""
             try:
                 values.append(parse(cell))
-            except ValueError:
-                what = "no value" if not cell else f"{cell!r} is not " + (
-                    "a date and time as the first row's" if parse is _date_value else "a number")
+            except ValueError as exc:
+                what = "no value" if not cell else f"{cell!r} {exc}"
                 raise ProfileError(f"{file}: line {number}: column {name!r}: {what}, in {line.strip()!r}") from None
         if not all(math.isfinite(v) for v in values):
             raise ProfileError(f"{file}: line {number}: not a finite number (NaN or inf) in {line.strip()!r}")
@@ -219,7 +248,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     """
     file = Path(file)
     _refuse_combinations(fmt, modulus, check, to_g, zero_rates, level)
-    origin, t, f, omega, dated = _readings(file, fmt)
+    origin, t, f, omega, dated, notes = _readings(file, fmt)
     logged = t  # the times with a reading, before the grid bridges the gaps between them
     R = convert.axes_rotation(fmt.axes)
     f = convert.turn_to_cabin(f * ACCEL_UNITS[fmt.accel_unit], R)
@@ -260,14 +289,15 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
         changes.append(f"rates less their bias ({rates}) deg/s in the cabin's x,y,z before any --level, read still "
                        f"from {convert.seconds(origin + bias.t0)} s (--zero-rates)")
     comments = _source_lines(file, fmt, span, f"{convert.filter_note(native, rate)}; convention check "
-                             f"{'passed' if check else 'skipped (--no-check)'}", changes, modulus)
+                             f"{'passed' if check else 'skipped (--no-check)'}", changes, modulus, dated)
     gap = longest_gap(logged, lo, lo + float(t[-1]))
     slow = native < 1.0 / csvfile.MS_MEDIAN_STEP  # a clock from 1970 in its unit (_check_time_unit)
     return path, comments + ([] if gap is None else [
         f"warning: no reading for {gap[0]:.3g} s from {_clock(origin + gap[1], dated)} of the log's time "
         f"({gap[0] / gap[2]:.0f} of its median steps of {gap[2]:.3g} s), bridged by a straight line"]) + (
         [f"warning: the log has a reading every {1 / native:.3g} s: what changes faster than {native / 2:.3g} Hz "
-         f"(a bump, a gear change, the onset of a brake) is not in it"] if slow else [])
+         f"(a bump, a gear change, the onset of a brake) is not in it"] if slow else []) + [
+        f"warning: {note}" for note in notes]
 
 
 def _clock(x: float, dated: bool) -> str:
@@ -278,11 +308,13 @@ def _clock(x: float, dated: bool) -> str:
     return datetime.fromtimestamp(x, timezone.utc).isoformat(timespec="milliseconds").replace(".000+", "+")
 
 
-def _read_clock(file: Path, fmt: LogFormat, columns: list[str]) -> tuple[float, dict[str, np.ndarray], bool]:
+def _read_clock(file: Path, fmt: LogFormat, columns: list[str],
+                both: bool = False) -> tuple[float, dict[str, np.ndarray], bool]:
     """(the first time [s of the log's clock], :func:`read_log` of the time column and ``columns``, whether
     the clock holds dates), the times in seconds from the first (counted in the log's own unit first: a
     nanosecond clock from 1970 keeps its digits). Refused where the time does not increase or is in a
-    unit other than declared (:func:`_check_time_unit`)."""
+    unit other than declared (:func:`_check_time_unit`; ``both``: the unit is declared for this file
+    and the accelerometer's both, and the refusal says so)."""
     data, dated = read_log(file, [fmt.time, *columns], dated=fmt.time)
     if dated and fmt.time_unit != "s":
         raise ProfileError(f"{file}: column {fmt.time!r} holds dates and times, read as seconds since 1970: "
@@ -295,45 +327,56 @@ def _read_clock(file: Path, fmt: LogFormat, columns: list[str]) -> tuple[float, 
         k = int(np.argmax(steps <= 0))
         raise ProfileError(f"{file}: column {fmt.time!r}: time {_clock(origin + t[k + 1], dated)} at data row "
                            f"{k + 2} does not increase (previous {_clock(origin + t[k], dated)})")
-    _check_time_unit(file, fmt, t, origin)
+    _check_time_unit(file, fmt, t, origin, "; --time-unit is the unit of both files' clocks" if both else "")
     return origin, data, dated
 
 
-def _readings(file: Path, fmt: LogFormat) -> tuple[float, np.ndarray, np.ndarray, np.ndarray | None, bool]:
+def _readings(file: Path, fmt: LogFormat) -> tuple[float, np.ndarray, np.ndarray, np.ndarray | None, bool, list[str]]:
     """(the first time [s of the log's clock], the times [s from it], forces (N, 3), rates (N, 3) or None,
-    whether the clock holds dates) of the log, in its units and axes; the rates from ``fmt.rates_file``
-    where it names one (:func:`with_rates_file`), and then the times those rates cover."""
+    whether the clock holds dates, warnings) of the log, in its units and axes; the rates from
+    ``fmt.rates_file`` where it names one (:func:`with_rates_file`), and then the times those rates cover."""
     own_rates = fmt.rates if fmt.rates is not None and fmt.rates_file is None else ()
     origin, data, dated = _read_clock(file, fmt, [*fmt.accel, *own_rates])
     t, f = data[fmt.time], np.column_stack([data[c] for c in fmt.accel])
     if fmt.rates_file is None:
-        return origin, t, f, np.column_stack([data[c] for c in own_rates]) if own_rates else None, dated
-    keep, omega = with_rates_file(file, fmt, origin, t, dated)
-    return origin + t[keep][0], t[keep] - t[keep][0], f[keep], omega, dated
+        return origin, t, f, np.column_stack([data[c] for c in own_rates]) if own_rates else None, dated, []
+    keep, omega, notes = with_rates_file(file, fmt, origin, t, dated)
+    return origin + t[keep][0], t[keep] - t[keep][0], f[keep], omega, dated, notes
 
 
 def with_rates_file(file: Path, fmt: LogFormat, origin: float, t: np.ndarray,
-                    dated: bool) -> tuple[np.ndarray, np.ndarray]:
+                    dated: bool) -> tuple[np.ndarray, np.ndarray, list[str]]:
     """(which of the accelerometer log's times ``t`` [s from ``origin``] the rates cover, the rates (K, 3)
-    at those times): ``fmt.rates_file``'s, interpolated linearly, over the span both logs cover (a phone
-    logger writes the accelerometer and the gyroscope to files of their own, each at its own instants).
-    Refused where the rates file's clock is not the log's (no common span of a second), or where it
-    has a gap of more than :data:`GAP_STEPS` of its median steps within that span."""
+    at those times, warnings): ``fmt.rates_file``'s, interpolated linearly, over the span both logs
+    cover (a phone logger writes the accelerometer and the gyroscope to files of their own, each at its
+    own instants; a clock of dates and one of seconds since 1970 are the same clock). Refused where it
+    is the log itself, where its clock is not the log's (no common span of a second), or where it has
+    a gap of more than :data:`GAP_STEPS` of its median steps within that span. A warning where it
+    covers less of the log than the log's first and last steps, or is read 2 Hz or slower."""
     other = Path(fmt.rates_file)
-    origin_r, rates, other_dated = _read_clock(other, fmt, list(fmt.rates))
+    if other.exists() and Path(file).exists() and other.resolve() == Path(file).resolve():
+        raise ProfileError(f"--rates-file {other}: is the accelerometer's log itself; name the gyroscope's file")
+    origin_r, rates, other_dated = _read_clock(other, fmt, list(fmt.rates), both=True)
     tr = rates[fmt.time] + (origin_r - origin)  # on the accelerometer log's count
     lo, hi = max(t[0], tr[0]), min(t[-1], tr[-1])
-    if dated != other_dated or not hi - lo >= 1.0:
+    where = lambda x: _clock(origin + x, dated)  # noqa: E731
+    if not hi - lo >= 1.0:
         raise ProfileError(f"{other}: its rates run from {_clock(origin_r, other_dated)} to "
                            f"{_clock(origin_r + rates[fmt.time][-1], other_dated)}, the log {file.name} from "
-                           f"{_clock(origin, dated)} to {_clock(origin + t[-1], dated)}: no common second; is "
-                           f"column {fmt.time!r} the same clock in both?")
+                           f"{where(0.0)} to {where(t[-1])}: no common second; is column {fmt.time!r} the same "
+                           f"clock in both?")
     gap = longest_gap(tr, lo, hi)
     if gap is not None:
-        raise ProfileError(f"{other}: no rate reading for {gap[0]:.3g} s from {_clock(origin + gap[1], dated)} "
+        raise ProfileError(f"{other}: no rate reading for {gap[0]:.3g} s from {where(gap[1])} "
                            f"({gap[0] / gap[2]:.0f} of its median steps of {gap[2]:.3g} s)")
     keep = (t >= lo) & (t <= hi)
-    return keep, np.column_stack([np.interp(t[keep], tr, rates[c]) for c in fmt.rates])
+    step, step_r = float(np.median(np.diff(t))), float(np.median(np.diff(tr)))
+    notes = [f"the rates of {other.name} cover {where(lo)} to {where(hi)} of the log's {where(0.0)} to "
+             f"{where(t[-1])}: the path is cut to them"] if lo - t[0] > step or t[-1] - hi > step else []
+    if step_r >= csvfile.MS_MEDIAN_STEP:
+        notes.append(f"{other.name} has a rate reading every {step_r:.3g} s: a turn's onset and end are "
+                     f"spread over that, out of step with the force")
+    return keep, np.column_stack([np.interp(t[keep], tr, rates[c]) for c in fmt.rates]), notes
 
 
 def _cropped(file: Path, t, X, start: float | None, end: float | None, origin: float, dated: bool = False):
@@ -345,8 +388,9 @@ def _cropped(file: Path, t, X, start: float | None, end: float | None, origin: f
     for option, when in (("--start", start), ("--end", end)):
         if when is not None and not -step <= float(when) - origin <= float(t[-1]) + step:
             given = _clock(when, dated) if dated else convert.seconds(when)
+            hint = f" (give {option} as a date and time, as the log's)" if dated and when < EPOCH_DATES[0] else ""
             raise ProfileError(f"{file}: {option} {given}: outside the log, which runs from "
-                               f"{_clock(origin, dated)} to {_clock(origin + t[-1], dated)} of its own clock")
+                               f"{_clock(origin, dated)} to {_clock(origin + t[-1], dated)} of its own clock{hint}")
     lo = 0.0 if start is None else float(start) - origin
     t, X = convert.crop(t, X, lo, None if end is None else float(end) - origin, str(file), origin)
     return lo, t, X
@@ -367,12 +411,12 @@ def _refuse_combinations(fmt: LogFormat, modulus: bool, check: bool, to_g: bool,
 
 
 def _source_lines(file: Path, fmt: LogFormat, span: str, filtered: str, changes: list[str],
-                  modulus: bool) -> list[str]:
+                  modulus: bool, dated: bool = False) -> list[str]:
     """The ``source:`` comment lines of an imported log: its columns and units, its axes and lever arm,
     the crop, the filter and the check, and what was changed in the readings."""
     rates = "none" if fmt.rates is None else f"{','.join(fmt.rates)} [{fmt.rate_unit}]" + (
         "" if fmt.rates_file is None else f" from {Path(fmt.rates_file).name}")
-    return [f"source: log {file.name}, columns time {fmt.time} [{fmt.time_unit}], accel "
+    return [f"source: log {file.name}, columns time {fmt.time} [{'date and time' if dated else fmt.time_unit}], accel "
             f"{','.join(fmt.accel)} [{fmt.accel_unit}], rates {rates}",
             f"source: axes {','.join(fmt.axes)} for the log's x,y,z -> cabin (right,forward,up); lever arm "
             f"sensor->head {','.join(f'{x:g}' for x in fmt.lever_arm)} m (log axes)",
@@ -465,7 +509,7 @@ def measured(grid, logged) -> np.ndarray:
     return nearest <= float(np.median(np.diff(logged))) * (1.0 + 1e-9)
 
 
-def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray, origin: float = 0.0) -> None:
+def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray, origin: float = 0.0, also: str = "") -> None:
     """Refuse a time column in a unit other than declared (:func:`_time_problem`, on the times in
     seconds ``t`` from the first, ``origin`` [s]): a unit 1000 times smaller (milliseconds declared as
     seconds), a span of days, or steps shorter than :data:`MIN_STEP` (microseconds declared as
@@ -478,7 +522,7 @@ def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray, origin: float = 
     where = f"{file}: column {fmt.time!r} [{fmt.time_unit}]"
     likely = next((unit for unit, seconds in TIME_UNITS.items()  # the first under which the check passes
                    if _time_problem(t * seconds / TIME_UNITS[fmt.time_unit]) is None), None)
-    fix = f"declare --time-unit {likely}" if likely else "check the column"
+    fix = (f"declare --time-unit {likely}" if likely else "check the column") + also
     if problem == "days":
         duration = float(t[-1] - t[0])
         raise ProfileError(f"{where} spans {duration:.3g} s ({duration / 86400:.3g} days), far longer than a "
@@ -488,7 +532,8 @@ def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray, origin: float = 
                            f"{1e-3 / float(np.median(np.diff(t))):.3g} kHz: {fix}")
     if fmt.time_unit == "s":
         raise ProfileError(f"{where} looks like milliseconds: {csvfile.describe_steps(t)}; a recording is sampled "
-                           f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: {fix}")
+                           f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: {fix} (a log truly read that seldom "
+                           f"is taken as such on a clock from 1970: add its start in seconds since 1970 to its times)")
     raise ProfileError(f"{where}: {csvfile.describe_steps(t)} read as {fmt.time_unit}; a recording is sampled "
                        f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: {fix}")
 
