@@ -382,7 +382,7 @@ def dataset_log(file, t, omega, f, axes, origin=1.4e9):
         out.write("#timestamp [ns],w_RS_S_x [rad s^-1],w_RS_S_y [rad s^-1],w_RS_S_z [rad s^-1],"
                   "a_RS_S_x [m s^-2],a_RS_S_y [m s^-2],a_RS_S_z [m s^-2]\n")
         for ti, w, a in zip(t, omega @ R, f @ R):
-            out.write(f"{round((origin + ti) * 1e9)}," + ",".join(repr(float(x)) for x in (*w, *a)) + "\n")
+            out.write(f"{round(origin * 1e9) + round(ti * 1e9)}," + ",".join(repr(float(x)) for x in (*w, *a)) + "\n")
     return file
 
 
@@ -403,8 +403,8 @@ def test_a_datasets_layout_reads_as_the_same_motion(tmp_path, capsys):
         out = tmp_path / "b.csv"
         assert main(["import", "log", str(log), "--time", time, *DATASET, "--overwrite", "--out", str(out)]) == 0
         a, b = profiles.load(tmp_path / "a.csv"), profiles.load(out)
-        np.testing.assert_allclose(b.t, a.t, atol=1e-9)
-        np.testing.assert_allclose(b.S_d, a.S_d, atol=1e-4)  # the ns clock as float64: 256 ns steps
+        np.testing.assert_allclose(b.t, a.t, atol=1e-12)  # the ns clock read as integers: as exact as the plain
+        np.testing.assert_allclose(b.S_d, a.S_d, atol=1e-9)
     assert "# source: crop 1400000000-1400000007.99 s" in out.read_text()
     argv = ["import", "log", str(log), "--time", "timestamp [ns]", *DATASET, "--out", str(tmp_path / "c.csv")]
     assert main(argv + ["--start", "1400000001.5", "--end", "1400000004"]) == 0

@@ -182,13 +182,15 @@ def _date_reader(offset: bool):
     return read
 
 
-def read_log(file: str | Path, columns: list[str], dated: str | None = None) -> tuple[dict[str, np.ndarray], bool]:
-    """The named columns of a CSV log as float arrays, keyed by the names given, and whether the column
-    ``dated`` holds ISO 8601 dates and times (:func:`date_seconds`; read as seconds since 1970) rather
-    than numbers, as its first row tells. ``#`` lines are comments; the first other line names the
-    columns, or the comment above it (:func:`data_lines`), where a name may be given with its ``#`` too. A
-    missing column, a cell that is not a number (or not a date where the first row's is), fewer than two
-    rows raise :class:`ProfileError` naming them (and the log's columns)."""
+def read_log(file: str | Path, columns: list[str], clock: str | None = None) -> tuple[dict[str, np.ndarray], bool]:
+    """The named columns of a CSV log as float arrays, keyed by the names given, and whether the time
+    column ``clock`` holds ISO 8601 dates and times (:func:`date_seconds`; read as seconds since 1970)
+    rather than numbers, as its first row tells. A clock of whole numbers (a count of nanoseconds from
+    1970) is read as exact integers (int64), so that its steps keep their last digit, which float64 loses
+    beyond 2^53. ``#`` lines are comments; the first other line names the columns, or the comment above it
+    (:func:`data_lines`), where a name may be given with its ``#`` too. A missing column, a cell that is
+    not a number (or not a date where the first row's is), fewer than two rows raise
+    :class:`ProfileError` naming them (and the log's columns)."""
     file = Path(file)
     lines = data_lines(file)
     header = _cells(lines[0][1])
@@ -199,12 +201,11 @@ def read_log(file: str | Path, columns: list[str], dated: str | None = None) -> 
                            f"the log's columns are {', '.join(header)} (name them with --time, --accel, --rates)")
     index = [header.index(c) for c in columns]
     first = _cells(lines[1][1]) if len(lines) > 1 else []
-    k = index[given.index(dated)] if dated in given else -1
-    when = _when(first[k]) if 0 <= k < len(first) and not _numbers_only(first[k]) else None
-    dates = when is not None
-    time_reader = _date_reader(when.tzinfo is not None) if dates else _time_number
-    parsers = [time_reader if j == k else _number for j in index]
-    rows = []
+    time = index[given.index(clock)] if clock in given else -1
+    when = _when(first[time]) if 0 <= time < len(first) and not _numbers_only(first[time]) else None
+    time_reader = _time_number if when is None else _date_reader(when.tzinfo is not None)
+    parsers = [time_reader if k == time else _number for k in index]
+    rows, counts = [], [] if when is None and time >= 0 else None
     for number, line in lines[1:]:
         cells = next(csv.reader([line]))
         values = []
@@ -218,10 +219,19 @@ def read_log(file: str | Path, columns: list[str], dated: str | None = None) -> 
         if not all(math.isfinite(v) for v in values):
             raise ProfileError(f"{file}: line {number}: not a finite number (NaN or inf) in {line.strip()!r}")
         rows.append(values)
+        if counts is not None:  # whole numbers so far
+            cell = cells[time].strip()
+            whole = cell.lstrip("+-").isdigit() and abs(int(cell)) < 2**62
+            counts = counts if whole else None
+            if whole:
+                counts.append(int(cell))
     if len(rows) < 2:
         raise ProfileError(f"{file}: needs at least two rows of data, found {len(rows)}")
     data = np.array(rows)
-    return {c: data[:, k] for k, c in enumerate(given)}, dates
+    read = {c: data[:, k] for k, c in enumerate(given)}
+    if counts is not None:
+        read[clock] = np.array(counts, dtype=np.int64)
+    return read, when is not None
 
 
 def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None = None,
@@ -311,11 +321,11 @@ def _clock(x: float, dated: bool) -> str:
 def _read_clock(file: Path, fmt: LogFormat, columns: list[str],
                 both: bool = False) -> tuple[float, dict[str, np.ndarray], bool]:
     """(the first time [s of the log's clock], :func:`read_log` of the time column and ``columns``, whether
-    the clock holds dates), the times in seconds from the first (counted in the log's own unit first: a
-    nanosecond clock from 1970 keeps its digits). Refused where the time does not increase or is in a
+    the clock holds dates), the times in seconds from the first (counted in the log's own unit first, in
+    integers where it counts whole units: a nanosecond clock from 1970 keeps its digits). Refused where the time does not increase or is in a
     unit other than declared (:func:`_check_time_unit`; ``both``: the unit is declared for this file
     and the accelerometer's both, and the refusal says so)."""
-    data, dated = read_log(file, [fmt.time, *columns], dated=fmt.time)
+    data, dated = read_log(file, [fmt.time, *columns], clock=fmt.time)
     if dated and fmt.time_unit != "s":
         raise ProfileError(f"{file}: column {fmt.time!r} holds dates and times, read as seconds since 1970: "
                            f"drop --time-unit {fmt.time_unit}")
