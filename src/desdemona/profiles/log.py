@@ -141,9 +141,7 @@ def date_seconds(text: str) -> float | None:
     ``2023-08-04T21:47:58.25Z``; one without a UTC offset is taken as UTC), or None where ``text`` is
     not one."""
     when = _when(text)
-    if when is None:
-        return None
-    return (when if when.tzinfo is not None else when.replace(tzinfo=timezone.utc)).timestamp()
+    return None if when is None else _seconds(when)
 
 
 def _when(text: str) -> datetime | None:
@@ -153,18 +151,18 @@ def _when(text: str) -> datetime | None:
         return None
 
 
-def _number(text: str) -> float:
-    try:
-        return float(text)
-    except ValueError:
-        raise ValueError("is not a number") from None
+def _seconds(when: datetime) -> float:
+    return (when if when.tzinfo is not None else when.replace(tzinfo=timezone.utc)).timestamp()
 
 
-def _time_number(text: str) -> float:
-    try:
-        return float(text)
-    except ValueError:
-        raise ValueError("is not a number, nor an ISO 8601 date and time (2023-08-04 17:47:58-04:00)") from None
+def _number_reader(reason: str):
+    """A cell's number, refused with ``reason`` where it is not one."""
+    def read(text: str) -> float:
+        try:
+            return float(text)
+        except ValueError:
+            raise ValueError(reason) from None
+    return read
 
 
 def _date_reader(offset: bool):
@@ -178,7 +176,7 @@ def _date_reader(offset: bool):
         if (when.tzinfo is not None) != offset:
             raise ValueError("has a UTC offset, the first row's has none" if offset is False
                              else "has no UTC offset, the first row's has one")
-        return date_seconds(text)
+        return _seconds(when)
     return read
 
 
@@ -203,8 +201,9 @@ def read_log(file: str | Path, columns: list[str], clock: str | None = None) -> 
     first = _cells(lines[1][1]) if len(lines) > 1 else []
     time = index[given.index(clock)] if clock in given else -1
     when = _when(first[time]) if 0 <= time < len(first) and not _numbers_only(first[time]) else None
-    time_reader = _time_number if when is None else _date_reader(when.tzinfo is not None)
-    parsers = [time_reader if k == time else _number for k in index]
+    time_reader = (_number_reader("is not a number, nor an ISO 8601 date and time (2023-08-04 17:47:58-04:00)")
+                   if when is None else _date_reader(when.tzinfo is not None))
+    parsers = [time_reader if k == time else _number_reader("is not a number") for k in index]
     rows, counts = [], [] if when is None and time >= 0 else None
     for number, line in lines[1:]:
         cells = next(csv.reader([line]))
@@ -322,9 +321,9 @@ def _read_clock(file: Path, fmt: LogFormat, columns: list[str],
                 both: bool = False) -> tuple[float, dict[str, np.ndarray], bool]:
     """(the first time [s of the log's clock], :func:`read_log` of the time column and ``columns``, whether
     the clock holds dates), the times in seconds from the first (counted in the log's own unit first, in
-    integers where it counts whole units: a nanosecond clock from 1970 keeps its digits). Refused where the time does not increase or is in a
-    unit other than declared (:func:`_check_time_unit`; ``both``: the unit is declared for this file
-    and the accelerometer's both, and the refusal says so)."""
+    integers where it counts whole units: a nanosecond clock from 1970 keeps its digits). Refused where
+    the time does not increase or is in a unit other than declared (:func:`_check_time_unit`; ``both``:
+    the unit is declared for this file and the accelerometer's both, and the refusal says so)."""
     data, dated = read_log(file, [fmt.time, *columns], clock=fmt.time)
     if dated and fmt.time_unit != "s":
         raise ProfileError(f"{file}: column {fmt.time!r} holds dates and times, read as seconds since 1970: "
