@@ -18,7 +18,7 @@ from __future__ import annotations
 import csv
 import math
 from dataclasses import dataclass, replace
-from datetime import datetime, timezone
+from datetime import datetime, timedelta, timezone
 from pathlib import Path
 
 import numpy as np
@@ -155,6 +155,14 @@ def _seconds(when: datetime) -> float:
     return (when if when.tzinfo is not None else when.replace(tzinfo=timezone.utc)).timestamp()
 
 
+def _micros(text: str) -> int:
+    """Whole microseconds since 1970 of a date and time that :func:`date_seconds` reads: exact, where a
+    float of seconds since 1970 keeps only a quarter of one."""
+    when = _when(text)
+    when = when if when.tzinfo is not None else when.replace(tzinfo=timezone.utc)
+    return (when - datetime(1970, 1, 1, tzinfo=timezone.utc)) // timedelta(microseconds=1)
+
+
 def _number_reader(reason: str):
     """A cell's number, refused with ``reason`` where it is not one."""
     def read(text: str) -> float:
@@ -182,10 +190,10 @@ def _date_reader(offset: bool):
 
 def read_log(file: str | Path, columns: list[str], clock: str | None = None) -> tuple[dict[str, np.ndarray], bool]:
     """The named columns of a CSV log as float arrays, keyed by the names given, and whether the time
-    column ``clock`` holds ISO 8601 dates and times (:func:`date_seconds`; read as seconds since 1970)
-    rather than numbers, as its first row tells. A clock of whole numbers (a count of nanoseconds from
-    1970) is read as exact integers (int64), so that its steps keep their last digit, which float64 loses
-    beyond 2^53. ``#`` lines are comments; the first other line names the columns, or the comment above it
+    column ``clock`` holds ISO 8601 dates and times (:func:`date_seconds`; read as whole microseconds
+    since 1970) rather than numbers, as its first row tells. A clock of whole numbers (a count of
+    nanoseconds from 1970) is read as exact integers (int64), so that its steps keep their last digit,
+    which float64 loses beyond 2^53. ``#`` lines are comments; the first other line names the columns, or the comment above it
     (:func:`data_lines`), where a name may be given with its ``#`` too. A missing column, a cell that is
     not a number (or not a date where the first row's is), fewer than two rows raise
     :class:`ProfileError` naming them (and the log's columns)."""
@@ -204,7 +212,7 @@ def read_log(file: str | Path, columns: list[str], clock: str | None = None) -> 
     time_reader = (_number_reader("is not a number, nor an ISO 8601 date and time (2023-08-04 17:47:58-04:00)")
                    if when is None else _date_reader(when.tzinfo is not None))
     parsers = [time_reader if k == time else _number_reader("is not a number") for k in index]
-    rows, counts = [], [] if when is None and time >= 0 else None
+    rows, counts = [], [] if time >= 0 else None
     for number, line in lines[1:]:
         cells = next(csv.reader([line]))
         values = []
@@ -218,12 +226,12 @@ def read_log(file: str | Path, columns: list[str], clock: str | None = None) -> 
         if not all(math.isfinite(v) for v in values):
             raise ProfileError(f"{file}: line {number}: not a finite number (NaN or inf) in {line.strip()!r}")
         rows.append(values)
-        if counts is not None:  # whole numbers so far
+        if counts is not None:  # whole numbers so far, or dates as whole microseconds
             cell = cells[time].strip()
-            whole = cell.lstrip("+-").isdigit() and abs(int(cell)) < 2**62
+            whole = when is not None or (cell.lstrip("+-").isdigit() and abs(int(cell)) < 2**62)
             counts = counts if whole else None
             if whole:
-                counts.append(int(cell))
+                counts.append(_micros(cell) if when is not None else int(cell))
     if len(rows) < 2:
         raise ProfileError(f"{file}: needs at least two rows of data, found {len(rows)}")
     data = np.array(rows)
@@ -328,7 +336,7 @@ def _read_clock(file: Path, fmt: LogFormat, columns: list[str],
     if dated and fmt.time_unit != "s":
         raise ProfileError(f"{file}: column {fmt.time!r} holds dates and times, read as seconds since 1970: "
                            f"drop --time-unit {fmt.time_unit}")
-    clock, unit = data[fmt.time], 1.0 if dated else TIME_UNITS[fmt.time_unit]
+    clock, unit = data[fmt.time], TIME_UNITS["us" if dated else fmt.time_unit]  # dates: whole microseconds
     origin, t = float(clock[0]) * unit, (clock - clock[0]) * unit
     data[fmt.time] = t
     steps = np.diff(t)
