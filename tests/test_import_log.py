@@ -717,3 +717,22 @@ def test_rates_from_a_second_file_read_as_one_log(tmp_path, capsys):
                             str(tmp_path / "x.csv")]) == 2
     assert "--rates-file holds the angular rates" in capsys.readouterr().err
     assert not (tmp_path / "x.csv").exists() and lines == gyro.read_text().splitlines()
+
+
+def test_an_iphones_inertial_force_is_turned_with_inertial(tmp_path, capsys):
+    """Apple's Core Motion (and Sensor Logger on an iPhone by default) gives the inertial force, -1 g up
+    at rest: every accelerometer sign turned, the rates as they are. No right-handed choice of axes turns
+    all three, so the check's refusal names --inertial, and with it the path is the plain log's."""
+    t, omega, f = motion()
+    axes = ("right", "up", "back")
+    plain = write_log(tmp_path / "plain.csv", t, omega, f, axes, "m/s2", "rad/s")
+    iphone = write_log(tmp_path / "iphone.csv", t, omega, -f, axes, "m/s2", "rad/s")
+    argv = ["--accel-unit", "m/s2", "--rate-unit", "rad/s", "--axes", ",".join(axes), "--out"]
+    assert main(["import", "log", str(plain), *argv, str(tmp_path / "a.csv")]) == 0
+    assert main(["import", "log", str(iphone), *argv, str(tmp_path / "b.csv")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "-1 g, the force points down" in err and "(an iPhone's): --inertial" in err
+    assert main(["import", "log", str(iphone), "--inertial", *argv, str(tmp_path / "b.csv")]) == 0
+    np.testing.assert_allclose(profiles.load(tmp_path / "b.csv").S_d, profiles.load(tmp_path / "a.csv").S_d,
+                               atol=1e-12)
+    assert "accel ax,ay,az [m/s2, inertial: sign turned]" in (tmp_path / "b.csv").read_text()

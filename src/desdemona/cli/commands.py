@@ -358,7 +358,7 @@ def run_import_log(args) -> int:
         raise UserError("--rate-unit deg/s or rad/s: the unit of the rate columns "
                         f"({','.join(rates)}); for a log without angular rates give --rates none (with --modulus)")
     fmt = log.LogFormat(args.time.strip(), names(args.accel), rates, args.accel_unit, args.rate_unit or "rad/s",
-                        args.time_unit, names(args.axes), lever_arm, args.rates_file)
+                        args.time_unit, names(args.axes), lever_arm, args.rates_file, args.inertial)
     path, comments = log.from_log(args.file, fmt, args.start, args.end, args.rate, args.modulus, args.check,
                                   args.to_g, args.zero_rates, args.level)
     _say_imported(convert.write_path(args.out, path, comments, args.overwrite), path)

@@ -266,6 +266,10 @@ def _add_import_parser(sub) -> None:
                          "gyroscope file beside its accelerometer's); its rates are interpolated onto FILE's "
                          "times, over the span both cover")
     lg.add_argument("--accel-unit", required=True, choices=("g", "m/s2"), dest="accel_unit")
+    lg.add_argument("--inertial", action="store_true",
+                    help="the accelerometer columns hold the inertial force, -1 g up at rest (an iPhone's Core "
+                         "Motion; Sensor Logger on an iPhone unless 'Standardise Units & Frames' is on): "
+                         "their sign is turned")
     lg.add_argument("--rate-unit", choices=("deg/s", "rad/s"), dest="rate_unit",
                     help="the unit of the --rates columns (required unless --rates none)")
     lg.add_argument("--time-unit", default="s", choices=("s", "ms", "us", "ns"), dest="time_unit",

@@ -252,13 +252,13 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
 
 
 def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0),
-                     tolerance: float = UP_TOLERANCE_DEG, tilt_fix: str = "") -> None:
+                     tolerance: float = UP_TOLERANCE_DEG, tilt_fix: str = "", down_fix: str = "") -> None:
     """Raise :class:`ProfileError` naming the likely mistake unless the still force reads +1 g up in
     the cabin frame: magnitude within :data:`MAGNITUDE_TOLERANCE` of g and direction within
     ``tolerance`` [deg] (:data:`UP_TOLERANCE_DEG`) of ``up``, the world's up in the cabin frame (cabin +z for a vehicle at rest
     or flying level; from the attitude where it is known; None: the magnitude alone, for a log whose
     axes do not matter). ``axes_hint`` adds how the axes were declared to the message, ``tilt_fix``
-    what mends a tilt of up to :data:`MAX_TILT_DEG`."""
+    what mends a tilt of up to :data:`MAX_TILT_DEG`, ``down_fix`` what mends a force that reads -1 g."""
     f = np.where(np.abs(still.f_cabin) < 1e-9, 0.0, still.f_cabin)  # round-off prints as 0, not 1e-173
     size = float(np.linalg.norm(f))
     where = f"still from {still.t0:.2f} s to {still.t1:.2f} s, " + (
@@ -286,7 +286,7 @@ def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0),
     hint = f" (declared {axes_hint})" if axes_hint else ""
     if angle >= 180.0 - tolerance:
         raise ProfileError(f"{where}: -1 g, the force points down: the vertical axis is up but declared "
-                           f"down (or the reverse)?{hint}")
+                           f"down (or the reverse)?{hint}{down_fix}")
     if angle < MAX_TILT_DEG:
         raise ProfileError(f"{where}: the force is {angle:.0f} deg from up: which axis is vertical, or is the "
                            f"sensor mounted at an angle?{hint}{tilt_fix}")

@@ -61,7 +61,10 @@ class LogFormat:
     axes : the cabin-frame direction of the log's x, y, z (``forward,right,down`` = vehicle body axes);
     lever_arm : (3,) [m] from the sensor to the head, in the log's axes;
     rates_file : a second CSV log that holds the rates, with a time column of the same name and unit
-    (a phone logger's, which writes each sensor to a file of its own: :func:`with_rates_file`).
+    (a phone logger's, which writes each sensor to a file of its own: :func:`with_rates_file`);
+    inertial : the accelerometer columns hold the inertial force, the specific force's opposite (-1 g
+    up at rest: Apple's Core Motion, and Sensor Logger on an iPhone unless its "Standardise Units &
+    Frames" is on). No choice of right-handed axes turns all three signs, so it is a setting of its own.
     """
 
     time: str = "t"
@@ -73,6 +76,7 @@ class LogFormat:
     axes: tuple[str, str, str] = ("forward", "right", "down")
     lever_arm: tuple[float, float, float] = (0.0, 0.0, 0.0)
     rates_file: str | None = None
+    inertial: bool = False
 
     def __post_init__(self):
         units = [("--accel-unit", self.accel_unit, ACCEL_UNITS), ("--time-unit", self.time_unit, TIME_UNITS)]
@@ -193,10 +197,10 @@ def read_log(file: str | Path, columns: list[str], clock: str | None = None) -> 
     column ``clock`` holds ISO 8601 dates and times (:func:`date_seconds`; read as whole microseconds
     since 1970) rather than numbers, as its first row tells. A clock of whole numbers (a count of
     nanoseconds from 1970) is read as exact integers (int64), so that its steps keep their last digit,
-    which float64 loses beyond 2^53. ``#`` lines are comments; the first other line names the columns, or the comment above it
-    (:func:`data_lines`), where a name may be given with its ``#`` too. A missing column, a cell that is
-    not a number (or not a date where the first row's is), fewer than two rows raise
-    :class:`ProfileError` naming them (and the log's columns)."""
+    which float64 loses beyond 2^53. ``#`` lines are comments; the first other line names the columns,
+    or the comment above it (:func:`data_lines`), where a name may be given with its ``#`` too. A
+    missing column, a cell that is not a number (or not a date where the first row's is), fewer than
+    two rows raise :class:`ProfileError` naming them (and the log's columns)."""
     file = Path(file)
     lines = data_lines(file)
     header = _cells(lines[0][1])
@@ -268,7 +272,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     origin, t, f, omega, dated, notes = _readings(file, fmt)
     logged = t  # the times with a reading, before the grid bridges the gaps between them
     R = convert.axes_rotation(fmt.axes)
-    f = convert.turn_to_cabin(f * ACCEL_UNITS[fmt.accel_unit], R)
+    f = convert.turn_to_cabin(f * (ACCEL_UNITS[fmt.accel_unit] * (-1.0 if fmt.inertial else 1.0)), R)
     omega = np.zeros_like(f) if omega is None else convert.turn_to_cabin(omega * RATE_UNITS[fmt.rate_unit], R)
     t, X = convert.uniform_grid(t, np.column_stack([omega, f]))
     native = 1.0 / float(np.median(np.diff(t)))
@@ -433,8 +437,10 @@ def _source_lines(file: Path, fmt: LogFormat, span: str, filtered: str, changes:
     the crop, the filter and the check, and what was changed in the readings."""
     rates = "none" if fmt.rates is None else f"{','.join(fmt.rates)} [{fmt.rate_unit}]" + (
         "" if fmt.rates_file is None else f" from {Path(fmt.rates_file).name}")
-    return [f"source: log {file.name}, columns time {fmt.time} [{'date and time' if dated else fmt.time_unit}], accel "
-            f"{','.join(fmt.accel)} [{fmt.accel_unit}], rates {rates}",
+    time = "date and time" if dated else fmt.time_unit
+    accel = fmt.accel_unit + (", inertial: sign turned" if fmt.inertial else "")
+    return [f"source: log {file.name}, columns time {fmt.time} [{time}], accel {','.join(fmt.accel)} [{accel}], "
+            f"rates {rates}",
             f"source: axes {','.join(fmt.axes)} for the log's x,y,z -> cabin (right,forward,up); lever arm "
             f"sensor->head {','.join(f'{x:g}' for x in fmt.lever_arm)} m (log axes)",
             f"source: crop {span} of the log's time (t = 0 here), {filtered}"
@@ -477,7 +483,9 @@ def _convention_checked(file: Path, fmt: LogFormat, t, X, logged, origin: float,
                                  up=None if fmt.rates is None else (0.0, 0.0, 1.0),
                                  tolerance=convert.MAX_TILT_DEG if level else convert.UP_TOLERANCE_DEG,
                                  tilt_fix="" if level else
-                                 f"; --level turns a sensor mounted at up to {convert.MAX_TILT_DEG:g} deg upright")
+                                 f"; --level turns a sensor mounted at up to {convert.MAX_TILT_DEG:g} deg upright",
+                                 down_fix="" if fmt.inertial else "; or the readings are the inertial force, -1 g "
+                                 "up at rest (an iPhone's): --inertial")
     except ProfileError as exc:
         raise ProfileError(f"{file}: {exc}") from None
     return still
