@@ -641,6 +641,13 @@ def test_a_slow_log_on_a_clock_from_1970_is_not_taken_for_milliseconds(tmp_path,
     assert np.max(np.abs(path.S_d[::10, 3] - f[:, 0])) < 0.05 * G  # through the filter at its native rate
     assert main(["import", "log", str(epoch), *args, "--rate", "2", "--out", str(tmp_path / "y.csv")]) == 2
     assert "--rate 2: give more than 2 samples per second" in capsys.readouterr().err
+    # declared as milliseconds it is a log of 0.06 s (the drive's hour, 6.3 s, passed the check too): a warning
+    assert main(["import", "log", str(epoch), *args, "--time-unit", "ms", "--no-check", "--out",
+                 str(tmp_path / "y.csv")]) == 0
+    err = capsys.readouterr().err
+    assert ("column 't' read as ms starts 1970-01-20T13:46:25.678+00:00; read as s it starts "
+            "2023-08-04T21:47:58+00:00: if its clock counts from 1970, declare --time-unit s") in err
+    (tmp_path / "y.csv").unlink()
     zero = write_log(tmp_path / "zero.csv", t, omega, f, axes, "m/s2", "rad/s")
     assert main(["import", "log", str(zero), *args, "--out", str(tmp_path / "z.csv")]) == 2
     err = capsys.readouterr().err

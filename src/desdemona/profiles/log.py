@@ -330,12 +330,14 @@ def _clock(x: float, dated: bool) -> str:
 
 
 def _read_clock(file: Path, fmt: LogFormat, columns: list[str],
-                both: bool = False) -> tuple[float, dict[str, np.ndarray], bool]:
+                both: bool = False) -> tuple[float, dict[str, np.ndarray], bool, list[str]]:
     """(the first time [s of the log's clock], :func:`read_log` of the time column and ``columns``, whether
-    the clock holds dates), the times in seconds from the first (counted in the log's own unit first, in
-    integers where it counts whole units: a nanosecond clock from 1970 keeps its digits). Refused where
-    the time does not increase or is in a unit other than declared (:func:`_check_time_unit`; ``both``:
-    the unit is declared for this file and the accelerometer's both, and the refusal says so)."""
+    the clock holds dates, warnings), the times in seconds from the first (counted in the log's own unit
+    first, in integers where it counts whole units: a nanosecond clock from 1970 keeps its digits).
+    Refused where the time does not increase or is in a unit other than declared
+    (:func:`_check_time_unit`; ``both``: the unit is declared for this file and the accelerometer's both,
+    and the refusal says so). A warning where the clock reads a date from 1970 in another unit only
+    (:func:`_unit_note`)."""
     data, dated = read_log(file, [fmt.time, *columns], clock=fmt.time)
     if dated and fmt.time_unit != "s":
         raise ProfileError(f"{file}: column {fmt.time!r} holds dates and times, read as seconds since 1970: "
@@ -349,7 +351,23 @@ def _read_clock(file: Path, fmt: LogFormat, columns: list[str],
         raise ProfileError(f"{file}: column {fmt.time!r}: time {_clock(origin + t[k + 1], dated)} at data row "
                            f"{k + 2} does not increase (previous {_clock(origin + t[k], dated)})")
     _check_time_unit(file, fmt, t, origin, "; --time-unit is the unit of both files' clocks" if both else "")
-    return origin, data, dated
+    return origin, data, dated, [] if dated else _unit_note(fmt, float(clock[0]))
+
+
+def _unit_note(fmt: LogFormat, first: float) -> list[str]:
+    """A warning where the log's first time ``first`` [its declared unit] is no date from 1970 in that unit
+    (:data:`EPOCH_DATES`) but is one in another: seconds since 1970 declared as milliseconds pass every
+    check of a log sampled once a second, read as a log a thousand times shorter. Not a refusal: a
+    clock since the sensor started may read so too."""
+    unit = TIME_UNITS[fmt.time_unit]
+    if EPOCH_DATES[0] <= first * unit <= EPOCH_DATES[1]:
+        return []
+    other = next((u for u, seconds in TIME_UNITS.items() if EPOCH_DATES[0] <= first * seconds <= EPOCH_DATES[1]), None)
+    if other is None:
+        return []
+    return [f"column {fmt.time!r} read as {fmt.time_unit} starts {_clock(first * unit, True)}; read as "
+            f"{other} it starts {_clock(first * TIME_UNITS[other], True)}: if its clock counts from 1970, declare "
+            f"--time-unit {other}"]
 
 
 def _readings(file: Path, fmt: LogFormat) -> tuple[float, np.ndarray, np.ndarray, np.ndarray | None, bool, list[str]]:
@@ -357,12 +375,12 @@ def _readings(file: Path, fmt: LogFormat) -> tuple[float, np.ndarray, np.ndarray
     whether the clock holds dates, warnings) of the log, in its units and axes; the rates from
     ``fmt.rates_file`` where it names one (:func:`with_rates_file`), and then the times those rates cover."""
     own_rates = fmt.rates if fmt.rates is not None and fmt.rates_file is None else ()
-    origin, data, dated = _read_clock(file, fmt, [*fmt.accel, *own_rates])
+    origin, data, dated, notes = _read_clock(file, fmt, [*fmt.accel, *own_rates])
     t, f = data[fmt.time], np.column_stack([data[c] for c in fmt.accel])
     if fmt.rates_file is None:
-        return origin, t, f, np.column_stack([data[c] for c in own_rates]) if own_rates else None, dated, []
-    keep, omega, notes = with_rates_file(file, fmt, origin, t, dated)
-    return origin + t[keep][0], t[keep] - t[keep][0], f[keep], omega, dated, notes
+        return origin, t, f, np.column_stack([data[c] for c in own_rates]) if own_rates else None, dated, notes
+    keep, omega, more = with_rates_file(file, fmt, origin, t, dated)
+    return origin + t[keep][0], t[keep] - t[keep][0], f[keep], omega, dated, notes + more
 
 
 def with_rates_file(file: Path, fmt: LogFormat, origin: float, t: np.ndarray,
@@ -377,7 +395,7 @@ def with_rates_file(file: Path, fmt: LogFormat, origin: float, t: np.ndarray,
     other = Path(fmt.rates_file)
     if other.exists() and Path(file).exists() and other.resolve() == Path(file).resolve():
         raise ProfileError(f"--rates-file {other}: is the accelerometer's log itself; name the gyroscope's file")
-    origin_r, rates, other_dated = _read_clock(other, fmt, list(fmt.rates), both=True)
+    origin_r, rates, other_dated, _ = _read_clock(other, fmt, list(fmt.rates), both=True)  # its clock's unit: the log's
     tr = rates[fmt.time] + (origin_r - origin)  # on the accelerometer log's count
     lo, hi = max(t[0], tr[0]), min(t[-1], tr[-1])
     where = lambda x: _clock(origin + x, dated)  # noqa: E731
