@@ -587,6 +587,7 @@ def test_a_log_stamped_with_dates_reads_as_the_same_motion(tmp_path, capsys):
     for extra, words in ((["--start", "2023-08-04 17:00:00-04:00"], "--start 2023-08-04T21:00:00+00:00: outside the "
                            "log, which runs from 2023-08-04T21:47:58+00:00 to 2023-08-04T21:48:05.990+00:00"),
                          (["--start", "3"], "of its own clock (give --start as a date and time, as the log's)"),
+                         (["--axes", "forward,right,down"], "still from 2023-08-04T21:47:5"),  # the check's, in UTC too
                          (["--start", "after lunch"], "'after lunch': give seconds, or a date and time"),
                          (["--time-unit", "ms"], "column 'time' holds dates and times, read as seconds since 1970: "
                           "drop --time-unit ms")):

@@ -252,16 +252,19 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
 
 
 def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0),
-                     tolerance: float = UP_TOLERANCE_DEG, tilt_fix: str = "", down_fix: str = "") -> None:
+                     tolerance: float = UP_TOLERANCE_DEG, tilt_fix: str = "", down_fix: str = "",
+                     when=None) -> None:
     """Raise :class:`ProfileError` naming the likely mistake unless the still force reads +1 g up in
     the cabin frame: magnitude within :data:`MAGNITUDE_TOLERANCE` of g and direction within
     ``tolerance`` [deg] (:data:`UP_TOLERANCE_DEG`) of ``up``, the world's up in the cabin frame (cabin +z for a vehicle at rest
     or flying level; from the attitude where it is known; None: the magnitude alone, for a log whose
     axes do not matter). ``axes_hint`` adds how the axes were declared to the message, ``tilt_fix``
-    what mends a tilt of up to :data:`MAX_TILT_DEG`, ``down_fix`` what mends a force that reads -1 g."""
+    what mends a tilt of up to :data:`MAX_TILT_DEG`, ``down_fix`` what mends a force that reads -1 g;
+    ``when`` prints a time of the still stretch (default: seconds to the hundredth)."""
     f = np.where(np.abs(still.f_cabin) < 1e-9, 0.0, still.f_cabin)  # round-off prints as 0, not 1e-173
     size = float(np.linalg.norm(f))
-    where = f"still from {still.t0:.2f} s to {still.t1:.2f} s, " + (
+    when = when or (lambda x: f"{x:.2f} s")
+    where = f"still from {when(still.t0)} to {when(still.t1)}, " + (
         f"the force reads {size:.3g} m/s^2" if up is None else
         f"the force reads ({f[0]:.3g}, {f[1]:.3g}, {f[2]:.3g}) m/s^2 in the cabin frame (x right, y forward, z up)")
     lo, hi = MAGNITUDE_TOLERANCE

@@ -280,7 +280,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     if not rate > 1.0 / csvfile.MS_MEDIAN_STEP:
         raise ProfileError(f"--rate {rate:g}: give more than {1.0 / csvfile.MS_MEDIAN_STEP:g} samples per second (a "
                            f"path sampled that slowly is read as one whose time is in milliseconds)")
-    bias = gyro_bias(file, fmt, t, X, rate, logged, origin) if zero_rates else None
+    bias = gyro_bias(file, fmt, t, X, rate, logged, origin, dated) if zero_rates else None
     if bias is not None:
         X[:, :3] -= bias.omega_cabin
     r_cabin = R @ np.asarray(fmt.lever_arm, dtype=float)
@@ -289,7 +289,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     t, X = convert.resample(t, X, rate)
     scale = 1.0
     if check:
-        still = _convention_checked(file, fmt, t, X, logged, origin, level)
+        still = _convention_checked(file, fmt, t, X, logged, origin, level, dated)
         if to_g:
             scale = G / float(np.linalg.norm(still.f_cabin))
             X[:, 3:] *= scale
@@ -308,7 +308,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     if bias is not None:
         rates = ", ".join(f"{math.degrees(x):.3g}" for x in bias.omega_cabin)
         changes.append(f"rates less their bias ({rates}) deg/s in the cabin's x,y,z before any --level, read still "
-                       f"from {convert.seconds(origin + bias.t0)} s (--zero-rates)")
+                       f"from {_clock(origin + bias.t0, dated)} (--zero-rates)")
     comments = _source_lines(file, fmt, span, f"{convert.filter_note(native, rate)}; convention check "
                              f"{'passed' if check else 'skipped (--no-check)'}", changes, modulus, dated)
     gap = longest_gap(logged, lo, lo + float(t[-1]))
@@ -465,7 +465,8 @@ def _source_lines(file: Path, fmt: LogFormat, span: str, filtered: str, changes:
             + "".join(f"; {change}" for change in changes) + ("; modulus |f| only" if modulus else "")]
 
 
-def gyro_bias(file: Path, fmt: LogFormat, t, X, rate: float, logged, origin: float) -> convert.Still:
+def gyro_bias(file: Path, fmt: LogFormat, t, X, rate: float, logged, origin: float,
+              dated: bool = False) -> convert.Still:
     """The first still stretch of the log's grid (``t``, ``X`` = omega, f in the cabin frame, before the
     anti-alias filter to ``rate`` [Hz]) read with the rates about their mean, the gyro's bias
     (:func:`.convert.find_still`, ``biased``): a resting MEMS gyro reads a few deg/s, which would be
@@ -477,12 +478,12 @@ def gyro_bias(file: Path, fmt: LogFormat, t, X, rate: float, logged, origin: flo
         raise ProfileError(f"{file}: --zero-rates: the log is nowhere still for {convert.STILL_SECONDS:g} s (a "
                            f"steady force, rates steady within {math.degrees(convert.STILL_RATE):g} deg/s of a mean "
                            f"below {math.degrees(convert.MAX_GYRO_BIAS):g} deg/s): no bias to read"
-                           f"{_rates_hint(fmt, tr, Xr, logged, origin)}")
+                           f"{_rates_hint(fmt, tr, Xr, logged, origin, dated)}")
     return still
 
 
 def _convention_checked(file: Path, fmt: LogFormat, t, X, logged, origin: float,
-                        level: bool = False) -> convert.Still:
+                        level: bool = False, dated: bool = False) -> convert.Still:
     """The still stretch of the log's grid (``t``, ``X`` = omega, f in the cabin frame), whose force
     the convention check has passed: +1 g up, or 1 g in whatever direction without rates, over the
     longest steady stretch (:func:`.convert.find_still`), never across a gap (:func:`measured`). With
@@ -492,9 +493,10 @@ def _convention_checked(file: Path, fmt: LogFormat, t, X, logged, origin: float,
     if still is None:
         steady, what = ("a steady force", "units") if fmt.rates is None else \
             (f"rates below {math.degrees(convert.STILL_RATE):g} deg/s and a steady force", "axes and units")
+        hint = _rates_hint(fmt, t, X, logged, origin, dated)
         raise ProfileError(f"{file}: the convention check cannot run: the log is nowhere still for "
-                           f"{convert.STILL_SECONDS:g} s ({steady}){_rates_hint(fmt, t, X, logged, origin)}; else "
-                           f"check its {what} by hand and add --no-check")
+                           f"{convert.STILL_SECONDS:g} s ({steady}){hint}; else check its {what} by hand and add "
+                           f"--no-check")
     try:
         convert.check_convention(replace(still, t0=origin + still.t0, t1=origin + still.t1),
                                  ",".join(fmt.axes) + " for the log's x,y,z",
@@ -503,13 +505,14 @@ def _convention_checked(file: Path, fmt: LogFormat, t, X, logged, origin: float,
                                  tilt_fix="" if level else
                                  f"; --level turns a sensor mounted at up to {convert.MAX_TILT_DEG:g} deg upright",
                                  down_fix="" if fmt.inertial else "; or the readings are the inertial force, -1 g "
-                                 "up at rest (an iPhone's): --inertial")
+                                 "up at rest (an iPhone's): --inertial",
+                                 when=(lambda x: _clock(x, True)) if dated else None)
     except ProfileError as exc:
         raise ProfileError(f"{file}: {exc}") from None
     return still
 
 
-def _rates_hint(fmt: LogFormat, t, X, logged, origin: float) -> str:
+def _rates_hint(fmt: LogFormat, t, X, logged, origin: float, dated: bool = False) -> str:
     """Why a log with rates may be nowhere still, where the rates say: a steady rate where the force is
     steady (a gyro's bias, for --zero-rates; beyond one, a turn or deg/s declared as rad/s), or rates
     that would be still in deg/s."""
@@ -519,7 +522,8 @@ def _rates_hint(fmt: LogFormat, t, X, logged, origin: float) -> str:
     steady = convert.find_still(t, X[:, :3], X[:, 3:], usable=usable, biased=True, max_bias=np.inf)
     if steady is not None:
         rates = ", ".join(f"{math.degrees(x):.3g}" for x in steady.omega_cabin)
-        where = f"; from {convert.seconds(origin + steady.t0)} s the force is steady and the rates read a steady ({rates}) deg/s"
+        where = (f"; from {_clock(origin + steady.t0, dated)} the force is steady and the rates read a steady "
+                 f"({rates}) deg/s")
         if np.linalg.norm(steady.omega_cabin) <= convert.MAX_GYRO_BIAS:
             return f"{where} (cabin x,y,z): a gyro's bias? --zero-rates takes it off"
         return (f"{where}, more than a gyro's bias ({math.degrees(convert.MAX_GYRO_BIAS):g} deg/s): a steady turn, "
