@@ -44,10 +44,9 @@ MIN_DEFAULT_RATE = 10.0
 GAP_STEPS = 4.0
 #: A log's median step shorter than this [s] (10 kHz) is a time unit declared too large.
 MIN_STEP = 1e-4
-#: The dates [s since 1970] a clock counting from 1970 reads in its declared unit: 2000-01-01 to
-#: 2100-01-01. A log whose first time is one of them is in that unit however slowly it is sampled (a
-#: phone's log of a drive, averaged to one row a second, stamped in seconds since 1970): in a unit 1000
-#: times off it would read January 1970 or the year 33,000.
+#: The dates [s since 1970] a clock from 1970 reads in its unit, 2000-01-01 to 2100-01-01: a log whose
+#: first time is one is in that unit however slowly sampled (a drive averaged to a row a second); in a
+#: unit 1000 times off it would read January 1970 or the year 33,000.
 EPOCH_DATES = (946684800.0, 4102444800.0)
 
 
@@ -145,7 +144,7 @@ def date_seconds(text: str) -> float | None:
     ``2023-08-04T21:47:58.25Z``; one without a UTC offset is taken as UTC), or None where ``text`` is
     not one."""
     when = _when(text)
-    return None if when is None else _seconds(when)
+    return None if when is None else _utc(when).timestamp()
 
 
 def _when(text: str) -> datetime | None:
@@ -155,16 +154,14 @@ def _when(text: str) -> datetime | None:
         return None
 
 
-def _seconds(when: datetime) -> float:
-    return (when if when.tzinfo is not None else when.replace(tzinfo=timezone.utc)).timestamp()
+def _utc(when: datetime) -> datetime:
+    return when if when.tzinfo is not None else when.replace(tzinfo=timezone.utc)
 
 
 def _micros(text: str) -> int:
     """Whole microseconds since 1970 of a date and time that :func:`date_seconds` reads: exact, where a
     float of seconds since 1970 keeps only a quarter of one."""
-    when = _when(text)
-    when = when if when.tzinfo is not None else when.replace(tzinfo=timezone.utc)
-    return (when - datetime(1970, 1, 1, tzinfo=timezone.utc)) // timedelta(microseconds=1)
+    return (_utc(_when(text)) - datetime(1970, 1, 1, tzinfo=timezone.utc)) // timedelta(microseconds=1)
 
 
 def _number_reader(reason: str):
@@ -188,7 +185,7 @@ def _date_reader(offset: bool):
         if (when.tzinfo is not None) != offset:
             raise ValueError("has a UTC offset, the first row's has none" if offset is False
                              else "has no UTC offset, the first row's has one")
-        return _seconds(when)
+        return _utc(when).timestamp()
     return read
 
 
@@ -355,10 +352,9 @@ def _read_clock(file: Path, fmt: LogFormat, columns: list[str],
 
 
 def _unit_note(fmt: LogFormat, first: float) -> list[str]:
-    """A warning where the log's first time ``first`` [its declared unit] is no date from 1970 in that unit
-    (:data:`EPOCH_DATES`) but is one in another: seconds since 1970 declared as milliseconds pass every
-    check of a log sampled once a second, read as a log a thousand times shorter. Not a refusal: a
-    clock since the sensor started may read so too."""
+    """A warning where the log's first time ``first`` [its declared unit] is no date (:data:`EPOCH_DATES`)
+    in that unit but is one in another: seconds since 1970 declared as milliseconds pass every check of
+    a long log, a thousand times too short. Not a refusal: a clock since the sensor started may too."""
     unit = TIME_UNITS[fmt.time_unit]
     if EPOCH_DATES[0] <= first * unit <= EPOCH_DATES[1]:
         return []
