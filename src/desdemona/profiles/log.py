@@ -158,10 +158,9 @@ def _utc(when: datetime) -> datetime:
     return when if when.tzinfo is not None else when.replace(tzinfo=timezone.utc)
 
 
-def _micros(text: str) -> int:
-    """Whole microseconds since 1970 of a date and time that :func:`date_seconds` reads: exact, where a
-    float of seconds since 1970 keeps only a quarter of one."""
-    return (_utc(_when(text)) - datetime(1970, 1, 1, tzinfo=timezone.utc)) // timedelta(microseconds=1)
+def _is_date(seconds: float) -> bool:
+    """Whether a time [s since 1970] is one of :data:`EPOCH_DATES`."""
+    return EPOCH_DATES[0] <= seconds <= EPOCH_DATES[1]
 
 
 def _number_reader(reason: str):
@@ -175,9 +174,10 @@ def _number_reader(reason: str):
 
 
 def _date_reader(offset: bool):
-    """A cell's seconds since 1970 (:func:`date_seconds`), refused where it is not a date and time, or where
-    it has a UTC offset and the first row's has not (``offset``), or the reverse: a column mixing the two
-    would read local times as UTC beside them (hours apart, or one hour across a change of summer time)."""
+    """A cell's whole microseconds since 1970 (as :func:`date_seconds` reads it; exact in a float64, where
+    seconds keep only a quarter of one), refused where it is not a date and time, or where it has a UTC
+    offset and the first row's has not (``offset``), or the reverse: a column mixing the two would read
+    local times as UTC beside them (hours apart, or one hour across a change of summer time)."""
     def read(text: str) -> float:
         when = _when(text)
         if when is None:
@@ -185,16 +185,16 @@ def _date_reader(offset: bool):
         if (when.tzinfo is not None) != offset:
             raise ValueError("has a UTC offset, the first row's has none" if offset is False
                              else "has no UTC offset, the first row's has one")
-        return _utc(when).timestamp()
+        return (_utc(when) - datetime(1970, 1, 1, tzinfo=timezone.utc)) // timedelta(microseconds=1)
     return read
 
 
 def read_log(file: str | Path, columns: list[str], clock: str | None = None) -> tuple[dict[str, np.ndarray], bool]:
     """The named columns of a CSV log as float arrays, keyed by the names given, and whether the time
     column ``clock`` holds ISO 8601 dates and times (:func:`date_seconds`; read as whole microseconds
-    since 1970) rather than numbers, as its first row tells. A clock of whole numbers (a count of
-    nanoseconds from 1970) is read as exact integers (int64), so that its steps keep their last digit,
-    which float64 loses beyond 2^53. ``#`` lines are comments; the first other line names the columns,
+    since 1970, :func:`_date_reader`) rather than numbers, as its first row tells. A clock of whole
+    numbers (a count of nanoseconds from 1970) is read as exact integers (int64), so that its steps keep
+    their last digit, which float64 loses beyond 2^53. ``#`` lines are comments; the first other line names the columns,
     or the comment above it (:func:`data_lines`), where a name may be given with its ``#`` too. A
     missing column, a cell that is not a number (or not a date where the first row's is), fewer than
     two rows raise :class:`ProfileError` naming them (and the log's columns)."""
@@ -213,7 +213,7 @@ def read_log(file: str | Path, columns: list[str], clock: str | None = None) -> 
     time_reader = (_number_reader("is not a number, nor an ISO 8601 date and time (2023-08-04 17:47:58-04:00)")
                    if when is None else _date_reader(when.tzinfo is not None))
     parsers = [time_reader if k == time else _number_reader("is not a number") for k in index]
-    rows, counts = [], [] if time >= 0 else None
+    rows, counts = [], [] if time >= 0 and when is None else None
     for number, line in lines[1:]:
         cells = next(csv.reader([line]))
         values = []
@@ -227,12 +227,12 @@ def read_log(file: str | Path, columns: list[str], clock: str | None = None) -> 
         if not all(math.isfinite(v) for v in values):
             raise ProfileError(f"{file}: line {number}: not a finite number (NaN or inf) in {line.strip()!r}")
         rows.append(values)
-        if counts is not None:  # whole numbers so far, or dates as whole microseconds
+        if counts is not None:  # whole numbers so far: kept exact beyond float64's 2^53
             cell = cells[time].strip()
-            whole = when is not None or (cell.lstrip("+-").isdigit() and abs(int(cell)) < 2**62)
-            counts = counts if whole else None
-            if whole:
-                counts.append(_micros(cell) if when is not None else int(cell))
+            count = int(cell) if cell.lstrip("+-").isdigit() else None
+            counts = counts if count is not None and abs(count) < 2**62 else None
+            if counts is not None:
+                counts.append(count)
     if len(rows) < 2:
         raise ProfileError(f"{file}: needs at least two rows of data, found {len(rows)}")
     data = np.array(rows)
@@ -356,9 +356,9 @@ def _unit_note(fmt: LogFormat, first: float) -> list[str]:
     in that unit but is one in another: seconds since 1970 declared as milliseconds pass every check of
     a long log, a thousand times too short. Not a refusal: a clock since the sensor started may too."""
     unit = TIME_UNITS[fmt.time_unit]
-    if EPOCH_DATES[0] <= first * unit <= EPOCH_DATES[1]:
+    if _is_date(first * unit):
         return []
-    other = next((u for u, seconds in TIME_UNITS.items() if EPOCH_DATES[0] <= first * seconds <= EPOCH_DATES[1]), None)
+    other = next((u for u, seconds in TIME_UNITS.items() if _is_date(first * seconds)), None)
     if other is None:
         return []
     return [f"column {fmt.time!r} read as {fmt.time_unit} starts {_clock(first * unit, True)}; read as "
@@ -560,7 +560,7 @@ def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray, origin: float = 
     rule passes. A log sampled at 2 Hz or slower whose clock reads a date (:data:`EPOCH_DATES`) is in
     its unit: its slowness is a warning of :func:`from_log`, not a unit."""
     problem = _time_problem(t)
-    if problem is None or (problem == "ms" and EPOCH_DATES[0] <= origin <= EPOCH_DATES[1]):
+    if problem is None or (problem == "ms" and _is_date(origin)):
         return
     where = f"{file}: column {fmt.time!r} [{fmt.time_unit}]"
     likely = next((unit for unit, seconds in TIME_UNITS.items()  # the first under which the check passes
