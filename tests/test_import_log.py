@@ -10,7 +10,7 @@ import pytest
 
 from desdemona import profiles
 from desdemona.cli import main
-from desdemona.profiles import convert
+from desdemona.profiles import clock, convert
 from desdemona.profiles.log import STANDARD_GRAVITY, LogFormat, from_log, head_force
 from desdemona.profiles.path import G, ProfileError
 
@@ -414,6 +414,43 @@ def test_a_datasets_layout_reads_as_the_same_motion(tmp_path, capsys):
     assert err.count("\n") == 1 and "--start 5: outside the log, which runs from 1400000000 s to 1400000007.99 s" in err
 
 
+@pytest.mark.parametrize("decimals", [3, 5])
+def test_seconds_from_1970_with_decimals_keep_every_sample(tmp_path, decimals):
+    """A clock of seconds since 1970 written with decimals (a spreadsheet's or pandas' export): float64
+    keeps a quarter of a microsecond there, so read as floats its steps wandered, the log was put on a
+    grid of their median and lost its last sample. Read as counts of the last decimal: the plain log's
+    path, every sample."""
+    t, omega, f = motion()
+    axes = ("up", "right", "forward")
+    plain = write_log(tmp_path / "plain.csv", t, omega, f, axes, "m/s2", "rad/s")
+    epoch = write_log(tmp_path / "epoch.csv", t, omega, f, axes, "m/s2", "rad/s")
+    rows = epoch.read_text().splitlines()
+    rows[2:] = [f"{1691185678.25 + k / RATE:.{decimals}f}," + row.split(",", 1)[1] for k, row in enumerate(rows[2:])]
+    epoch.write_text("\n".join(rows) + "\n")
+    paths = []
+    for log in (plain, epoch):
+        out = tmp_path / f"{log.stem}-path.csv"
+        assert main(["import", "log", str(log), "--accel-unit", "m/s2", "--rate-unit", "rad/s", "--axes",
+                     ",".join(axes), "--out", str(out)]) == 0
+        paths.append(profiles.load(out))
+    assert len(paths[1].t) == len(paths[0].t) == 800  # 200 Hz read, at most 100 Hz written
+    np.testing.assert_allclose(paths[1].t, paths[0].t, atol=1e-12)
+    np.testing.assert_allclose(paths[1].S_d, paths[0].S_d, atol=1e-9)
+
+
+def test_a_clock_is_counted_in_its_last_decimal():
+    counts = clock.Counts()
+    for cell in ("5", "5.25", "-0.5", "+7.1"):
+        counts.add(cell)
+    values, decimals = counts.counts()
+    assert decimals == 2 and values.tolist() == [500, 525, -50, 710] and values.dtype == np.int64
+    for odd in ("1.7e9", "0.1234567891", "12:00", "9" * 20):  # floats, more than nine decimals, no number, beyond int64
+        counts = clock.Counts()
+        for cell in ("1", odd):
+            counts.add(cell)
+        assert counts.counts() is None, odd
+
+
 def test_rows_without_a_header_are_refused(tmp_path, capsys):
     """Numbers where the header should be, with no comment above naming as many columns: one line."""
     t, omega, f = motion()
@@ -441,8 +478,8 @@ def test_a_time_unit_declared_wrong_is_refused_naming_the_right_one(tmp_path, ca
     the unit it is in; declared right it imports."""
     t = np.arange(0.0, 8.0, 0.01)
     omega, f = np.zeros((len(t), 3)), np.tile([0.0, 0.0, G], (len(t), 1))
-    for clock, declared, words in ((1e6, "ms", "read as ms"), (1e6, "ns", "sampled at 100 kHz"), (1e9, "s", "days")):
-        log = write_log(tmp_path / "log.csv", t * clock / 1000.0, omega, f, ("right", "forward", "up"), "m/s2",
+    for factor, declared, words in ((1e6, "ms", "read as ms"), (1e6, "ns", "sampled at 100 kHz"), (1e9, "s", "days")):
+        log = write_log(tmp_path / "log.csv", t * factor / 1000.0, omega, f, ("right", "forward", "up"), "m/s2",
                         "rad/s", "ms")
         argv = ["import", "log", str(log), "--axes", "right,forward,up", "--accel-unit", "m/s2", "--rate-unit",
                 "rad/s", "--out", str(tmp_path / "x.csv"), "--time-unit"]

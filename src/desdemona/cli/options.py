@@ -316,7 +316,7 @@ def _add_import_options(parser: argparse.ArgumentParser, clock: str, out_group=N
 
 def _time_or_date(text: str) -> float:
     """A time [s], or an ISO 8601 date and time as seconds since 1970 (a log stamped with dates)."""
-    from desdemona.profiles.log import date_seconds
+    from desdemona.profiles.clock import date_seconds
 
     try:
         return float(text)

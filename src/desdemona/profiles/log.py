@@ -18,12 +18,12 @@ from __future__ import annotations
 import csv
 import math
 from dataclasses import dataclass, replace
-from datetime import datetime, timedelta, timezone
 from pathlib import Path
 
 import numpy as np
 
-from desdemona.profiles import convert, csvfile
+from desdemona.profiles import clock, convert, csvfile
+from desdemona.profiles.clock import TIME_UNITS
 from desdemona.profiles.path import G, DesiredPath, ProfileError
 
 #: Standard gravity [m/s^2], what a sensor's "g" unit means (ISO 80000-3); the simulator's own gravity
@@ -31,9 +31,6 @@ from desdemona.profiles.path import G, DesiredPath, ProfileError
 STANDARD_GRAVITY = 9.80665
 ACCEL_UNITS = {"g": STANDARD_GRAVITY, "m/s2": 1.0, "m/s^2": 1.0}
 RATE_UNITS = {"deg/s": math.pi / 180.0, "rad/s": 1.0}
-#: Seconds per unit of a time column; ``us`` and ``ns`` are the clocks of IMU datasets and robot logs
-#: (EuRoC's and ROS's time stamps are nanoseconds since 1970).
-TIME_UNITS = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "ns": 1e-9}
 #: The written path's rate when none is given: the log's own, at most this [Hz]...
 MAX_DEFAULT_RATE = 100.0
 #: ... and at least this [Hz]: a slower log is interpolated to it. Every command reads a path sampled
@@ -44,10 +41,6 @@ MIN_DEFAULT_RATE = 10.0
 GAP_STEPS = 4.0
 #: A log's median step shorter than this [s] (10 kHz) is a time unit declared too large.
 MIN_STEP = 1e-4
-#: The dates [s since 1970] a clock from 1970 reads in its unit, 2000-01-01 to 2100-01-01: a log whose
-#: first time is one is in that unit however slowly sampled (a drive averaged to a row a second); in a
-#: unit 1000 times off it would read January 1970 or the year 33,000.
-EPOCH_DATES = (946684800.0, 4102444800.0)
 
 
 @dataclass(frozen=True)
@@ -139,65 +132,17 @@ def _numbers_only(line: str) -> bool:
     return True
 
 
-def date_seconds(text: str) -> float | None:
-    """Seconds since 1970 of an ISO 8601 date and time (``2023-08-04 17:47:58-04:00``,
-    ``2023-08-04T21:47:58.25Z``; one without a UTC offset is taken as UTC), or None where ``text`` is
-    not one."""
-    when = _when(text)
-    return None if when is None else _utc(when).timestamp()
-
-
-def _when(text: str) -> datetime | None:
-    try:
-        return datetime.fromisoformat(text.strip())
-    except ValueError:
-        return None
-
-
-def _utc(when: datetime) -> datetime:
-    return when if when.tzinfo is not None else when.replace(tzinfo=timezone.utc)
-
-
-def _is_date(seconds: float) -> bool:
-    """Whether a time [s since 1970] is one of :data:`EPOCH_DATES`."""
-    return EPOCH_DATES[0] <= seconds <= EPOCH_DATES[1]
-
-
-def _number_reader(reason: str):
-    """A cell's number, refused with ``reason`` where it is not one."""
-    def read(text: str) -> float:
-        try:
-            return float(text)
-        except ValueError:
-            raise ValueError(reason) from None
-    return read
-
-
-def _date_reader(offset: bool):
-    """A cell's whole microseconds since 1970 (as :func:`date_seconds` reads it; exact in a float64, where
-    seconds keep only a quarter of one), refused where it is not a date and time, or where it has a UTC
-    offset and the first row's has not (``offset``), or the reverse: a column mixing the two would read
-    local times as UTC beside them (hours apart, or one hour across a change of summer time)."""
-    def read(text: str) -> float:
-        when = _when(text)
-        if when is None:
-            raise ValueError("is not a date and time as the first row's")
-        if (when.tzinfo is not None) != offset:
-            raise ValueError("has a UTC offset, the first row's has none" if offset is False
-                             else "has no UTC offset, the first row's has one")
-        return (_utc(when) - datetime(1970, 1, 1, tzinfo=timezone.utc)) // timedelta(microseconds=1)
-    return read
-
-
-def read_log(file: str | Path, columns: list[str], clock: str | None = None) -> tuple[dict[str, np.ndarray], bool]:
-    """The named columns of a CSV log as float arrays, keyed by the names given, and whether the time
-    column ``clock`` holds ISO 8601 dates and times (:func:`date_seconds`; read as whole microseconds
-    since 1970, :func:`_date_reader`) rather than numbers, as its first row tells. A clock of whole
-    numbers (a count of nanoseconds from 1970) is read as exact integers (int64), so that its steps keep
-    their last digit, which float64 loses beyond 2^53. ``#`` lines are comments; the first other line names the columns,
-    or the comment above it (:func:`data_lines`), where a name may be given with its ``#`` too. A
-    missing column, a cell that is not a number (or not a date where the first row's is), fewer than
-    two rows raise :class:`ProfileError` naming them (and the log's columns)."""
+def read_log(file: str | Path, columns: list[str], time: str | None = None) -> tuple[dict[str, np.ndarray], bool, int]:
+    """The named columns of a CSV log as float arrays, keyed by the names given; whether the time column
+    ``time`` holds ISO 8601 dates and times (:func:`.clock.date_seconds`) rather than numbers, as its first
+    row tells; and in how many decimals of its unit it is counted. The time column is read exactly
+    (:mod:`.clock`): dates as whole microseconds since 1970 (6 decimals of a second), numbers written
+    with a decimal point or none as integer counts of their last decimal (``1691185678.25``: 2), where
+    float64 would lose the last digits of a clock from 1970; others as floats (0). ``#`` lines are
+    comments; the first other line names the columns, or the comment above it (:func:`data_lines`),
+    where a name may be given with its ``#`` too. A missing column, a cell that is not a number (or not
+    a date where the first row's is), fewer than two rows raise :class:`ProfileError` naming them (and
+    the log's columns)."""
     file = Path(file)
     lines = data_lines(file)
     header = _cells(lines[0][1])
@@ -208,12 +153,12 @@ def read_log(file: str | Path, columns: list[str], clock: str | None = None) -> 
                            f"the log's columns are {', '.join(header)} (name them with --time, --accel, --rates)")
     index = [header.index(c) for c in columns]
     first = _cells(lines[1][1]) if len(lines) > 1 else []
-    time = index[given.index(clock)] if clock in given else -1
-    when = _when(first[time]) if 0 <= time < len(first) and not _numbers_only(first[time]) else None
-    time_reader = (_number_reader("is not a number, nor an ISO 8601 date and time (2023-08-04 17:47:58-04:00)")
-                   if when is None else _date_reader(when.tzinfo is not None))
-    parsers = [time_reader if k == time else _number_reader("is not a number") for k in index]
-    rows, counts = [], [] if time >= 0 and when is None else None
+    column = index[given.index(time)] if time in given else -1
+    when = clock.when(first[column]) if 0 <= column < len(first) and not _numbers_only(first[column]) else None
+    time_reader = (clock.number_reader("is not a number, nor an ISO 8601 date and time (2023-08-04 17:47:58-04:00)")
+                   if when is None else clock.date_reader(when.tzinfo is not None))
+    parsers = [time_reader if k == column else clock.number_reader("is not a number") for k in index]
+    rows, counts = [], clock.Counts() if column >= 0 and when is None else None
     for number, line in lines[1:]:
         cells = next(csv.reader([line]))
         values = []
@@ -227,19 +172,16 @@ def read_log(file: str | Path, columns: list[str], clock: str | None = None) -> 
         if not all(math.isfinite(v) for v in values):
             raise ProfileError(f"{file}: line {number}: not a finite number (NaN or inf) in {line.strip()!r}")
         rows.append(values)
-        if counts is not None:  # whole numbers so far: kept exact beyond float64's 2^53
-            cell = cells[time].strip()
-            count = int(cell) if cell.lstrip("+-").isdigit() else None
-            counts = counts if count is not None and abs(count) < 2**62 else None
-            if counts is not None:
-                counts.append(count)
+        if counts is not None:
+            counts.add(cells[column].strip())
     if len(rows) < 2:
         raise ProfileError(f"{file}: needs at least two rows of data, found {len(rows)}")
     data = np.array(rows)
     read = {c: data[:, k] for k, c in enumerate(given)}
-    if counts is not None:
-        read[clock] = np.array(counts, dtype=np.int64)
-    return read, when is not None
+    exact = counts.counts() if counts is not None else None
+    if exact is not None:
+        read[time] = exact[0]
+    return read, when is not None, clock.DATE_DECIMALS if when is not None else 0 if exact is None else exact[1]
 
 
 def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None = None,
@@ -296,7 +238,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     lo, t, X = _cropped(file, t, X, start, end, origin, dated)
     convert.check_no_crash(origin + lo + t, X[:, 3:], str(file))
     a, b = origin + lo, origin + lo + float(t[-1])
-    span = f"{_clock(a, True)} to {_clock(b, True)}" if dated else f"{convert.seconds(a)}-{convert.seconds(b)} s"
+    span = f"{clock.text(a, True)} to {clock.text(b, True)}" if dated else f"{convert.seconds(a)}-{convert.seconds(b)} s"
     path = convert.make_path(file.stem, t, X[:, :3], X[:, 3:], f"log {file.name}, {span}", modulus)
     changes = [f"readings scaled by {scale:.4f} to read 1 g where still (--to-g)"] if to_g else []
     if level:
@@ -305,64 +247,55 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     if bias is not None:
         rates = ", ".join(f"{math.degrees(x):.3g}" for x in bias.omega_cabin)
         changes.append(f"rates less their bias ({rates}) deg/s in the cabin's x,y,z before any --level, read still "
-                       f"from {_clock(origin + bias.t0, dated)} (--zero-rates)")
+                       f"from {clock.text(origin + bias.t0, dated)} (--zero-rates)")
     comments = _source_lines(file, fmt, span, f"{convert.filter_note(native, rate)}; convention check "
                              f"{'passed' if check else 'skipped (--no-check)'}", changes, modulus, dated)
     gap = longest_gap(logged, lo, lo + float(t[-1]))
     slow = native < 1.0 / csvfile.MS_MEDIAN_STEP  # a clock from 1970 in its unit (_check_time_unit)
     return path, comments + ([] if gap is None else [
-        f"warning: no reading for {gap[0]:.3g} s from {_clock(origin + gap[1], dated)} of the log's time "
+        f"warning: no reading for {gap[0]:.3g} s from {clock.text(origin + gap[1], dated)} of the log's time "
         f"({gap[0] / gap[2]:.0f} of its median steps of {gap[2]:.3g} s), bridged by a straight line"]) + (
         [f"warning: the log has a reading every {1 / native:.3g} s: what changes faster than {native / 2:.3g} Hz "
          f"(a bump, a gear change, the onset of a brake) is not in it"] if slow else []) + [
         f"warning: {note}" for note in notes]
 
 
-def _clock(x: float, dated: bool) -> str:
-    """A time of the log's clock [s]: ``1403636599.75856 s``, or for a log stamped with dates and times
-    the UTC date and time, ``2023-08-04T21:47:58+00:00``."""
-    if not dated:
-        return f"{convert.seconds(x)} s"
-    return datetime.fromtimestamp(x, timezone.utc).isoformat(timespec="milliseconds").replace(".000+", "+")
-
-
 def _read_clock(file: Path, fmt: LogFormat, columns: list[str],
                 both: bool = False) -> tuple[float, dict[str, np.ndarray], bool, list[str]]:
     """(the first time [s of the log's clock], :func:`read_log` of the time column and ``columns``, whether
-    the clock holds dates, warnings), the times in seconds from the first (counted in the log's own unit
-    first, in integers where it counts whole units: a nanosecond clock from 1970 keeps its digits).
+    the clock holds dates, warnings), the times in seconds from the first (their differences taken in
+    the clock's exact counts first, :func:`.clock.seconds_from_first`).
     Refused where the time does not increase or is in a unit other than declared
     (:func:`_check_time_unit`; ``both``: the unit is declared for this file and the accelerometer's both,
     and the refusal says so). A warning where the clock reads a date from 1970 in another unit only
     (:func:`_unit_note`)."""
-    data, dated = read_log(file, [fmt.time, *columns], clock=fmt.time)
+    data, dated, decimals = read_log(file, [fmt.time, *columns], time=fmt.time)
     if dated and fmt.time_unit != "s":
         raise ProfileError(f"{file}: column {fmt.time!r} holds dates and times, read as seconds since 1970: "
                            f"drop --time-unit {fmt.time_unit}")
-    clock, unit = data[fmt.time], TIME_UNITS["us" if dated else fmt.time_unit]  # dates: whole microseconds
-    origin, t = float(clock[0]) * unit, (clock - clock[0]) * unit
+    origin, t = clock.seconds_from_first(data[fmt.time], decimals, fmt.time_unit)
     data[fmt.time] = t
     steps = np.diff(t)
     if np.any(steps <= 0):
         k = int(np.argmax(steps <= 0))
-        raise ProfileError(f"{file}: column {fmt.time!r}: time {_clock(origin + t[k + 1], dated)} at data row "
-                           f"{k + 2} does not increase (previous {_clock(origin + t[k], dated)})")
+        raise ProfileError(f"{file}: column {fmt.time!r}: time {clock.text(origin + t[k + 1], dated)} at data row "
+                           f"{k + 2} does not increase (previous {clock.text(origin + t[k], dated)})")
     _check_time_unit(file, fmt, t, origin, "; --time-unit is the unit of both files' clocks" if both else "")
-    return origin, data, dated, [] if dated else _unit_note(fmt, float(clock[0]))
+    return origin, data, dated, [] if dated else _unit_note(fmt, origin / TIME_UNITS[fmt.time_unit])
 
 
 def _unit_note(fmt: LogFormat, first: float) -> list[str]:
-    """A warning where the log's first time ``first`` [its declared unit] is no date (:data:`EPOCH_DATES`)
+    """A warning where the log's first time ``first`` [its declared unit] is no date (:data:`.clock.EPOCH_DATES`)
     in that unit but is one in another: seconds since 1970 declared as milliseconds pass every check of
     a long log, a thousand times too short. Not a refusal: a clock since the sensor started may too."""
     unit = TIME_UNITS[fmt.time_unit]
-    if _is_date(first * unit):
+    if clock.is_date(first * unit):
         return []
-    other = next((u for u, seconds in TIME_UNITS.items() if _is_date(first * seconds)), None)
+    other = next((u for u, seconds in TIME_UNITS.items() if clock.is_date(first * seconds)), None)
     if other is None:
         return []
-    return [f"column {fmt.time!r} read as {fmt.time_unit} starts {_clock(first * unit, True)}; read as "
-            f"{other} it starts {_clock(first * TIME_UNITS[other], True)}: if its clock counts from 1970, declare "
+    return [f"column {fmt.time!r} read as {fmt.time_unit} starts {clock.text(first * unit, True)}; read as "
+            f"{other} it starts {clock.text(first * TIME_UNITS[other], True)}: if its clock counts from 1970, declare "
             f"--time-unit {other}"]
 
 
@@ -394,10 +327,10 @@ def with_rates_file(file: Path, fmt: LogFormat, origin: float, t: np.ndarray,
     origin_r, rates, other_dated, _ = _read_clock(other, fmt, list(fmt.rates), both=True)  # its clock's unit: the log's
     tr = rates[fmt.time] + (origin_r - origin)  # on the accelerometer log's count
     lo, hi = max(t[0], tr[0]), min(t[-1], tr[-1])
-    where = lambda x: _clock(origin + x, dated)  # noqa: E731
+    where = lambda x: clock.text(origin + x, dated)  # noqa: E731
     if not hi - lo >= 1.0:
-        raise ProfileError(f"{other}: its rates run from {_clock(origin_r, other_dated)} to "
-                           f"{_clock(origin_r + rates[fmt.time][-1], other_dated)}, the log {file.name} from "
+        raise ProfileError(f"{other}: its rates run from {clock.text(origin_r, other_dated)} to "
+                           f"{clock.text(origin_r + rates[fmt.time][-1], other_dated)}, the log {file.name} from "
                            f"{where(0.0)} to {where(t[-1])}: no common second; is column {fmt.time!r} the same "
                            f"clock in both?")
     gap = longest_gap(tr, lo, hi)
@@ -422,10 +355,10 @@ def _cropped(file: Path, t, X, start: float | None, end: float | None, origin: f
     step = float(t[1] - t[0])
     for option, when in (("--start", start), ("--end", end)):
         if when is not None and not -step <= float(when) - origin <= float(t[-1]) + step:
-            given = _clock(when, dated) if dated else convert.seconds(when)
-            hint = f" (give {option} as a date and time, as the log's)" if dated and when < EPOCH_DATES[0] else ""
+            given = clock.text(when, dated) if dated else convert.seconds(when)
+            hint = f" (give {option} as a date and time, as the log's)" if dated and when < clock.EPOCH_DATES[0] else ""
             raise ProfileError(f"{file}: {option} {given}: outside the log, which runs from "
-                               f"{_clock(origin, dated)} to {_clock(origin + t[-1], dated)} of its own clock{hint}")
+                               f"{clock.text(origin, dated)} to {clock.text(origin + t[-1], dated)} of its own clock{hint}")
     lo = 0.0 if start is None else float(start) - origin
     t, X = convert.crop(t, X, lo, None if end is None else float(end) - origin, str(file), origin)
     return lo, t, X
@@ -502,7 +435,7 @@ def _convention_checked(file: Path, fmt: LogFormat, t, X, logged, origin: float,
                                  f"; --level turns a sensor mounted at up to {convert.MAX_TILT_DEG:g} deg upright",
                                  down_fix="" if fmt.inertial else "; or the readings are the inertial force, -1 g "
                                  "up at rest (an iPhone's): --inertial",
-                                 when=(lambda x: _clock(x, True)) if dated else None)
+                                 when=(lambda x: clock.text(x, True)) if dated else None)
     except ProfileError as exc:
         raise ProfileError(f"{file}: {exc}") from None
     return still
@@ -518,7 +451,7 @@ def _rates_hint(fmt: LogFormat, t, X, logged, origin: float, dated: bool = False
     steady = convert.find_still(t, X[:, :3], X[:, 3:], usable=usable, biased=True, max_bias=np.inf)
     if steady is not None:
         rates = ", ".join(f"{math.degrees(x):.3g}" for x in steady.omega_cabin)
-        where = (f"; from {_clock(origin + steady.t0, dated)} the force is steady and the rates read a steady "
+        where = (f"; from {clock.text(origin + steady.t0, dated)} the force is steady and the rates read a steady "
                  f"({rates}) deg/s")
         if np.linalg.norm(steady.omega_cabin) <= convert.MAX_GYRO_BIAS:
             return f"{where} (cabin x,y,z): a gyro's bias? --zero-rates takes it off"
@@ -557,10 +490,10 @@ def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray, origin: float = 
     seconds ``t`` from the first, ``origin`` [s]): a unit 1000 times smaller (milliseconds declared as
     seconds), a span of days, or steps shorter than :data:`MIN_STEP` (microseconds declared as
     nanoseconds: a log of 16 ms at 200 kHz). The refusal names the first unit under which the same
-    rule passes. A log sampled at 2 Hz or slower whose clock reads a date (:data:`EPOCH_DATES`) is in
+    rule passes. A log sampled at 2 Hz or slower whose clock reads a date (:data:`.clock.EPOCH_DATES`) is in
     its unit: its slowness is a warning of :func:`from_log`, not a unit."""
     problem = _time_problem(t)
-    if problem is None or (problem == "ms" and _is_date(origin)):
+    if problem is None or (problem == "ms" and clock.is_date(origin)):
         return
     where = f"{file}: column {fmt.time!r} [{fmt.time_unit}]"
     likely = next((unit for unit, seconds in TIME_UNITS.items()  # the first under which the check passes
