@@ -485,7 +485,7 @@ def test_a_time_unit_declared_wrong_is_refused_naming_the_right_one(tmp_path, ca
                 "rad/s", "--out", str(tmp_path / "x.csv"), "--time-unit"]
         assert main(argv + [declared]) == 2
         err = capsys.readouterr().err
-        right = {1e6: "us", 1e9: "ns"}[clock]
+        right = {1e6: "us", 1e9: "ns"}[factor]
         assert err.count("\n") == 1 and words in err and f"declare --time-unit {right}" in err
         assert not (tmp_path / "x.csv").exists()
         assert main(argv + [right, "--overwrite"]) == 0
