@@ -624,6 +624,8 @@ def test_a_log_stamped_with_dates_reads_as_the_same_motion(tmp_path, capsys):
     for extra, words in ((["--start", "2023-08-04 17:00:00-04:00"], "--start 2023-08-04T21:00:00+00:00: outside the "
                            "log, which runs from 2023-08-04T21:47:58+00:00 to 2023-08-04T21:48:05.990+00:00"),
                          (["--start", "3"], "of its own clock (give --start as a date and time, as the log's)"),
+                         (["--start", "2023-08-04T21:48:03Z", "--end", "2023-08-04T21:48:00Z"], "--start 2023-08-04T21:48"
+                          ":03+00:00 and --end 2023-08-04T21:48:00+00:00: the end must be after the start"),
                          (["--axes", "forward,right,down"], "still from 2023-08-04T21:47:5"),  # the check's, in UTC too
                          (["--start", "after lunch"], "'after lunch': give seconds, or a date and time"),
                          (["--time-unit", "ms"], "column 'time' holds dates and times, read as seconds since 1970: "

@@ -144,21 +144,21 @@ def seconds(x: float) -> str:
     return f"{float(x):.6f}".rstrip("0").rstrip(".")
 
 
-def crop(t, X, start: float | None, end: float | None, what: str,
-         origin: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+def crop(t, X, start: float | None, end: float | None, what: str, told=None) -> tuple[np.ndarray, np.ndarray]:
     """The samples with ``start <= t <= end`` [s] (None: from the first, to the last), time shifted so
-    that the crop starts at 0. Fewer than two samples raises :class:`ProfileError`, its times told
-    ``origin`` [s] later (where ``t`` counts from a log's first time)."""
+    that the crop starts at 0. Fewer than two samples, or an end not after the start, raises
+    :class:`ProfileError`, its times written by ``told`` (a time of ``t`` to text; None: ``5.5 s``; a
+    log's import writes them on its own clock, as the user gave them)."""
     t = np.asarray(t, dtype=float)
+    told = told or (lambda x: f"{seconds(x)} s")
     lo = t[0] if start is None else float(start)
     hi = t[-1] if end is None else float(end)
     if start is not None and end is not None and not hi > lo:
-        raise ProfileError(f"--start {seconds(origin + lo)} and --end {seconds(origin + hi)}: the end must be after "
-                           f"the start")
+        raise ProfileError(f"--start {told(lo)} and --end {told(hi)}: the end must be after the start")
     keep = (t >= lo - 1e-6) & (t <= hi + 1e-6)  # a time printed to the microsecond (:func:`seconds`) is on its sample
     if np.count_nonzero(keep) < 2:
-        raise ProfileError(f"{what}: nothing between {seconds(origin + lo)} s and {seconds(origin + hi)} s (it runs "
-                           f"from {seconds(origin + t[0])} s to {seconds(origin + t[-1])} s)")
+        raise ProfileError(f"{what}: nothing between {told(lo)} and {told(hi)} (it runs from {told(t[0])} to "
+                           f"{told(t[-1])})")
     return t[keep] - lo, np.asarray(X)[keep]
 
 

@@ -360,7 +360,8 @@ def _cropped(file: Path, t, X, start: float | None, end: float | None, origin: f
             raise ProfileError(f"{file}: {option} {given}: outside the log, which runs from "
                                f"{clock.text(origin, dated)} to {clock.text(origin + t[-1], dated)} of its own clock{hint}")
     lo = 0.0 if start is None else float(start) - origin
-    t, X = convert.crop(t, X, lo, None if end is None else float(end) - origin, str(file), origin)
+    t, X = convert.crop(t, X, lo, None if end is None else float(end) - origin, str(file),
+                        lambda x: clock.text(origin + x, dated))
     return lo, t, X
 
 
