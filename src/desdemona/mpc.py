@@ -33,11 +33,11 @@ import numpy as np
 from desdemona._casadi import call
 from desdemona.classical import still_home
 from desdemona.model import Model
-from desdemona.perception import VestibularModel
+from desdemona.perception import THRESHOLDS, VestibularModel
 from desdemona.plan import (REST_RATE, Plan, State, advance, braking_jerk, homing_rate, settled_rate,
                             stopping_extent)
 from desdemona.problem import ProblemOptions
-from desdemona.profiles import ALIGNED_WEIGHTS, DesiredPath, at_least_g, vertical_force
+from desdemona.profiles import ALIGNED_WEIGHTS, G, DesiredPath, at_least_g, vertical_force
 from desdemona.simulate import TOLERANCE
 from desdemona.realtime import RealTimeIteration
 from desdemona.transcription import CueingProblem
@@ -77,6 +77,8 @@ class MPCOptions:
     None: its on-line default with the real-time iteration, where the spin was found, and 0 with IPOPT,
     whose thesis-timing rows of ``benchmarks/online.py`` it moved by up to 12 %, "Gimbals' lock");
     spin_up : fraction of the yaw's acceleration limit with which a still yaw is seeded (:meth:`MPC._leave_rest`), 0: off.
+    spin_weight : with a perception model, the weight of the spin about the occupant's vertical as it
+    is (:attr:`~desdemona.problem.ProblemOptions.spin_weight`; 0: none).
 
     rti_step : the share of each real-time iteration's QP step taken from the previous plan
     (:class:`~desdemona.realtime.RealTimeIteration`; 1 from a fresh seed); None: 0.5 where the cabin
@@ -132,6 +134,7 @@ class MPCOptions:
     rotation_ceiling: float | None = None
     null_weight: float | None = None
     wall: float = 0.0
+    spin_weight: float = 0.0
 
     def __post_init__(self):
         if self.method not in ("auto", "rti", "nlp"):
@@ -279,11 +282,13 @@ class MPC:
             stoppable=True, braking=options.braking, brake_step=options.step, perception=options.perception, initial_filter="given",
             steps=None if np.all(steps == options.step) else tuple(steps),
             jerk_weight=options.jerk_weight, rotation_band=options.rotation_band,
-            rotation_ceiling=options.rotation_ceiling, null_weight=null_weight, wall=options.wall)
+            rotation_ceiling=options.rotation_ceiling, null_weight=null_weight, wall=options.wall,
+            spin_weight=options.spin_weight)
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         if self.problem.nz:  # the horizon's perception map is built now, not in the session's first cycle
             self.problem.perceive(np.zeros((self.problem.N * self.problem.m, 6)))
         self.limits, self._limit_use = model.limits, model.step_limit_use(options.step)
+        self._turning_buys = True  # whether the last preview asks for what a turning arm gives (_asks_turning)
         self.z = self.z_d = self._z_d_next = None  # filter states of the felt and the desired path, the desired one step on
         self._rti = RealTimeIteration(self.problem, options.qp_solver) if options.plan_method == "rti" else None
         self.smooth = self.problem.smooth
@@ -313,6 +318,7 @@ class MPC:
             self.z = self.problem.filter.steady_state(self.model.S(q, qd, a))
         t, values = self._preview_arrays(preview)
         reason = self._preview_problem(t, values)
+        self._turning_buys = not reason and self._asks_turning(values)
         self._z_d_next = None
         plan = None
         if not reason:
@@ -526,7 +532,7 @@ class MPC:
         degrees, not switched: a seed switched to a spin-up whenever a slow turn dipped below the
         threshold kicked every joint each time ("Damped real-time iteration").
         """
-        if 0 not in self.model.config.free or self.options.spin_up == 0.0:
+        if 0 not in self.model.config.free or self.options.spin_up == 0.0 or not self._turning_buys:
             return u
         k = self.model.config.free.index(0)
         rates = qd[k] + np.cumsum(u[:, k] * self.problem.steps)
@@ -537,6 +543,17 @@ class MPC:
         spin = (1.0 if qd[k] >= 0 else -1.0) * self.options.spin_up * self.limits.acceleration[k]
         u[:, k] += stillness * (spin - u[:, k])
         return u
+
+    def _asks_turning(self, values) -> bool:
+        """Whether the preview ``values`` (:meth:`_preview_arrays`) asks for what a turning arm could give:
+        on a configuration that follows the modulus, more than g by the vertical force's perception
+        threshold somewhere; elsewhere always. A modulus of g or less is made at least as well with the
+        arm still, and a spin-up seeded on every cycle of such a stretch drew the real-time iteration's
+        plans into a spin of the cabin that grew for minutes ("A steady spin of the cabin on `dfs`")."""
+        if not self.model.config.takes_modulus:
+            return True
+        modulus = values if values.ndim == 1 else np.linalg.norm(values[:, 3:], axis=1)
+        return bool(np.max(modulus) > G + THRESHOLDS[5])
 
     def _safe(self, q, qd, qdd, jerk) -> bool:
         """Every limit over the coming step with this command, to the independent check's tolerance."""

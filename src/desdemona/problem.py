@@ -149,6 +149,13 @@ class ProblemOptions:
         plans let that motion run up to the joints' rate limit (the outer gimbal at 180 deg/s and
         6 kW on a recorded sortie on ``dfs``). None: :data:`NULL_WEIGHT` on-line (``parametric``) on the
         configurations whose cabin follows the force (``dfs``), else 0 ("Gimbals' lock").
+    spin_weight : with a perception model, the weight of the rotation about the occupant's vertical
+        (``wz``) as it is, against none, as a share of its channel's weight: the canals stop feeling a
+        steady spin within seconds, so a cost on the felt rotation alone leaves a spin where it is,
+        and a controller that sees only its horizon built one up on a recorded car drive (the cabin at
+        100-180 deg/s for minutes, the modulus no longer followed). A washout towards no spin; 0
+        (the default): none. A session (:func:`desdemona.session.online`) takes
+        :data:`~desdemona.session.SPIN_WEIGHT` on ``dfs`` ("A steady spin of the cabin on `dfs`").
     """
 
     h_u: float = 0.05
@@ -178,6 +185,7 @@ class ProblemOptions:
     rotation_band: float | None = None
     rotation_ceiling: float | None = None
     null_weight: float | None = None
+    spin_weight: float = 0.0
 
     def __post_init__(self):
         if not (math.isfinite(self.h_u) and self.h_u > 0):
@@ -199,12 +207,15 @@ class ProblemOptions:
                              f"than one and needs a uniform grid")
         if self.initial == "given" and self.initial_state is None:
             raise ValueError("initial = 'given' needs initial_state = (q0, qd0)")
-        for name in ("wall", "unweighted", "null_weight", "rotation_band", "rotation_ceiling"):  # all but wall: None for none
-            value = getattr(self, name)
-            if (value is not None or name == "wall") and not (math.isfinite(value) and value >= 0):
+        for name in ("wall", "spin_weight", "unweighted", "null_weight", "rotation_band", "rotation_ceiling"):
+            value = getattr(self, name)  # the last four: None for none
+            if (value is not None or name in ("wall", "spin_weight")) and not (math.isfinite(value) and value >= 0):
                 raise ValueError(f"{name} = {value!r}: must be a number >= 0")
             if name.startswith("rotation") and value is not None and self.perception is None:
                 raise ValueError(f"{name} = {value!r}: needs a perception model (it is on the felt rotation)")
+        if self.spin_weight and self.perception is None:
+            raise ValueError(f"spin_weight = {self.spin_weight!r}: needs a perception model (without one the "
+                             f"rotation is weighed as it is)")
         if not (self.regularisation >= 0 and 0 <= self.margin < 0.5):
             raise ValueError("regularisation must be >= 0 and margin in [0, 0.5)")
 
@@ -498,6 +509,8 @@ class Formulation:
                 for width, weight in bands:  # the felt rotation's error beyond the band (the ceiling), again
                     beyond = ca.fmax(error[:3] - width, 0.0) + ca.fmin(error[:3] + width, 0.0)
                     residuals.append(ca.sqrt(weight * h_u / m * inv_T) * root_w[:3] * beyond)
+                if o.spin_weight > 0:  # the spin about the occupant's vertical as it is, felt or not
+                    residuals.append(ca.sqrt(o.spin_weight * h_u / m * inv_T) * root_w[2] * values[j][2])
                 z = A @ z + B @ values[j]
         if o.wall > 0 and lim.bounded:
             residuals += [ca.sqrt(trapezoid[j] * h_u * inv_T) * self._wall(positions[j], o.wall) for j in range(points)]

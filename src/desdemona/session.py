@@ -53,6 +53,10 @@ ROTATION_BAND, ALIGNED_ROTATION_BAND = 1.0, 5.0
 #: An on-line session's felt-rotation ceiling [perception thresholds] (:attr:`MPCOptions.rotation_ceiling`)
 #: with a perception model ("Felt rotation ceiling").
 ROTATION_CEILING = 20.0
+#: An on-line session's weight of the spin about the occupant's vertical as it is, felt or not, on a
+#: configuration whose cabin follows the force (``dfs``), as a share of the yaw channel's
+#: (:attr:`MPCOptions.spin_weight`, "A steady spin of the cabin on `dfs`").
+SPIN_WEIGHT = 0.1
 
 
 @dataclass(frozen=True)
@@ -217,7 +221,7 @@ def default_rotation_band(config) -> float:
 def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, horizon: float | None = None,
            reach: float | None = None, step: float = 0.02, predictor: str = "perfect",
            reference: DesiredPath | None = None, forecast=None, perception="auto", rotation_band="auto",
-           rotation_ceiling="auto", **timing) -> Session:
+           rotation_ceiling="auto", spin_weight="auto", **timing) -> Session:
     """The session of ``online``: the cued path and its :class:`~desdemona.online.OnlineOptions`.
 
     horizon : how far the preview reaches [s], None: :func:`~desdemona.mpc.default_horizon`
@@ -246,6 +250,11 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
         rotation_band = None if perception is None else default_rotation_band(model.config)
     if rotation_ceiling == "auto":
         rotation_ceiling = None if perception is None else ROTATION_CEILING
+    if spin_weight == "auto":
+        spin_weight = SPIN_WEIGHT if perception is not None and model.config.aligned else 0.0
+    if not (math.isfinite(spin_weight) and spin_weight >= 0) or spin_weight and perception is None:
+        raise ChoiceError(f"--spin-weight {spin_weight:g}: a number >= 0, and with a perception model (none with "
+                          f"--perception none, nor on dfs-yaw)")
     for option, value in (("band", rotation_band), ("ceiling", rotation_ceiling)):
         if value is not None and not (math.isfinite(value) and value >= 0):
             raise ChoiceError(f"--rotation-{option} {value:g}: must be a finite number of perception thresholds >= 0")
@@ -284,7 +293,8 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     weighted, wall = cost(path, model, choices), _wall(choices)
     try:
         mpc = MPCOptions(horizon=horizon, step=step, reach=reach, perception=perception, rotation_band=rotation_band,
-                         rotation_ceiling=rotation_ceiling, wall=wall, **weighted, **timing)
+                         rotation_ceiling=rotation_ceiling, wall=wall, spin_weight=spin_weight, **weighted,
+                         **timing)
     except ValueError as exc:
         raise ChoiceError(f"--replan: {exc}") from None
     size = sizing.check_fits_online(path, model.config, mpc)

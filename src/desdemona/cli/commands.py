@@ -210,19 +210,19 @@ def run_batch(args) -> int:
 
 
 def _felt_choices(args) -> dict:
-    """``online``'s --perception, --rotation-band and --rotation-ceiling as :func:`desdemona.session.online`
-    takes them."""
+    """``online``'s --perception, --rotation-band, --rotation-ceiling and --spin-weight as
+    :func:`desdemona.session.online` takes them."""
     choices = {}
     if args.perception is not None:
         choices["perception"] = None if args.perception == "none" else perception_models.get_model(args.perception)
-    for name in ("rotation_band", "rotation_ceiling"):
+    for name in ("rotation_band", "rotation_ceiling", "spin_weight"):
         value = getattr(args, name)
         if value is not None:
             try:
-                choices[name] = None if value == "none" else float(value)
+                choices[name] = (0.0 if name == "spin_weight" else None) if value == "none" else float(value)
             except ValueError:
-                raise UserError(f"--{name.replace('_', '-')} {value!r}: a number of perception thresholds, "
-                                f"or none") from None
+                what = "a weight" if name == "spin_weight" else "a number of perception thresholds"
+                raise UserError(f"--{name.replace('_', '-')} {value!r}: {what}, or none") from None
     return choices
 
 

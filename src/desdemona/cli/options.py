@@ -156,6 +156,11 @@ def build_parser() -> argparse.ArgumentParser:
                              "thresholds weighs 110 times its weight (100 on top of the band's 10), a soft "
                              "ceiling: the arm spins up no faster than felt as that much false rotation; "
                              "none: no ceiling (default: 20)")
+    online.add_argument("--spin-weight", default=None, metavar="W", dest="spin_weight",
+                        help="with a perception model: the weight of the cabin's spin about the occupant's "
+                             "vertical as it is, a share of the yaw channel's: the canals stop feeling a "
+                             "steady spin, and without this a plan may keep one for minutes; none: 0 "
+                             "(default: 0.1 on dfs, none elsewhere)")
     online.add_argument("--method", choices=("auto", "rti", "nlp"), default="auto",
                         help="rti: one QP per plan (fast); nlp: IPOPT to convergence; auto: rti when a "
                              "plan is made every step, nlp when --replan spans several steps, as the "
