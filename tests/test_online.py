@@ -966,7 +966,8 @@ def test_the_gimbals_null_motion_is_what_s_does_not_see():
     axes is -sin q5 (against the model's S at random attitudes); the term is zero away from the lock
     and for the motion the occupant feels, only where all three gimbals are free, and by default
     on-line on dfs with the real-time iteration alone (where it was measured)."""
-    from desdemona.problem import NULL_WEIGHT, Formulation, gimbal_null_rate
+    from desdemona.kinematics import gimbal_null_rate
+    from desdemona.problem import NULL_WEIGHT, Formulation
 
     model = Model(config="dfs")
     free, rest = model.config.free, np.zeros(4)

@@ -37,7 +37,7 @@ from desdemona.perception import THRESHOLDS, VestibularModel
 from desdemona.plan import (REST_RATE, Plan, State, advance, braking_jerk, homing_rate, settled_rate,
                             stopping_extent)
 from desdemona.problem import ProblemOptions
-from desdemona.profiles import ALIGNED_WEIGHTS, G, DesiredPath, at_least_g, vertical_force
+from desdemona.profiles import ALIGNED_WEIGHTS, DesiredPath, above_g, at_least_g, vertical_force
 from desdemona.simulate import TOLERANCE
 from desdemona.realtime import RealTimeIteration
 from desdemona.transcription import CueingProblem
@@ -58,54 +58,48 @@ HOMING_AFTER = 2.0
 class MPCOptions:
     """What the controller plans and how (thesis chapter 7).
 
-    horizon : T_h [s], how far the preview reaches; step : h [s], the grid of the plan (its
-    accelerations are held this long); replan : T_c [s], the period at which a new plan is computed,
-    a whole number of steps (default: every step); delay : simulate the computation time as the thesis
-    does (7.1, figure 7.2): the plan computed during [t, t + T_c] from the state at t is applied from
-    t + T_c, so it starts from the state predicted there; deadline : compute budget per plan [s]
-    (default: T_c); substeps, regularisation, margin, weights, jerk_weight, wall, rotation_band,
-    rotation_ceiling (the felt rotation beyond so many thresholds weighs more): as in
-    :class:`~desdemona.problem.ProblemOptions` (jerk_weight None:
-    :func:`~desdemona.problem.default_jerk_weight` on-line); braking : fraction of the acceleration
-    limit assumed for stopping; method : "rti" (real-time iteration: one Gauss-Newton QP per plan,
-    linearised at the shifted previous plan, solved by CasADi's ``qp_solver`` plugin), "nlp" (IPOPT
-    to convergence, warm-started, at most ``max_iter`` iterations) or "auto" (see
-    :attr:`plan_method`); perception : minimise the perceived difference through this vestibular model
-    (chapter 6): the controller then carries the filter states of what the person has felt and of
-    what they should have felt from step to step; null_weight : the weight of the gimbals' rates that
-    turn the cabin not at all, near the inner gimbal's lock (:attr:`~desdemona.problem.ProblemOptions.null_weight`;
-    None: its on-line default with the real-time iteration, where the spin was found, and 0 with IPOPT,
-    whose thesis-timing rows of ``benchmarks/online.py`` it moved by up to 12 %, "Gimbals' lock");
-    spin_up : fraction of the yaw's acceleration limit with which a still yaw is seeded (:meth:`MPC._leave_rest`), 0: off.
-    spin_weight : with a perception model, the weight of the spin about the occupant's vertical as it
-    is (:attr:`~desdemona.problem.ProblemOptions.spin_weight`; 0: none).
+    horizon : T_h [s], how far the preview reaches; step : h [s], the grid of the plan (its accelerations are held
+    this long); replan : T_c [s], the period at which a new plan is computed, a whole number of steps (default:
+    every step); delay : simulate the computation time as the thesis does (7.1, figure 7.2): the plan computed
+    during [t, t + T_c] from the state at t is applied from t + T_c, so it starts from the state predicted there;
+    deadline : compute budget per plan [s] (default: T_c); substeps, regularisation, margin, weights, jerk_weight,
+    wall, rotation_band, rotation_ceiling (the felt rotation beyond so many thresholds weighs more), spin_weight: as
+    in :class:`~desdemona.problem.ProblemOptions` (jerk_weight None: :func:`~desdemona.problem.default_jerk_weight`
+    on-line); braking : fraction of the acceleration limit assumed for stopping; method : "rti" (real-time
+    iteration: one Gauss-Newton QP per plan, linearised at the shifted previous plan, solved by CasADi's
+    ``qp_solver`` plugin), "nlp" (IPOPT to convergence, warm-started, at most ``max_iter`` iterations) or "auto"
+    (see :attr:`plan_method`); perception : minimise the perceived difference through this vestibular model (chapter
+    6): the controller then carries the filter states of what the person has felt and of what they should have felt
+    from step to step; null_weight : the weight of the gimbals' rates that turn the cabin not at all, near the inner
+    gimbal's lock (:attr:`~desdemona.problem.ProblemOptions.null_weight`; None: its on-line default with the
+    real-time iteration, where the spin was found, and 0 with IPOPT, whose thesis-timing rows of
+    ``benchmarks/online.py`` it moved by up to 12 %, "Gimbals' lock"); spin_up : fraction of the yaw's acceleration
+    limit with which a still yaw is seeded (:meth:`MPC._leave_rest`), 0: off.
 
     rti_step : the share of each real-time iteration's QP step taken from the previous plan
-    (:class:`~desdemona.realtime.RealTimeIteration`; 1 from a fresh seed); None: 0.5 where the cabin
-    turns about the vertical but cannot tilt (``yaw-track-cabin``), else 1. The Gauss-Newton model
-    leaves out the curvature of large residuals: where a sustained force is out of reach, turning the
-    small force the arm can hold towards it overshoots, and one full step a cycle swings the plan from
-    one side of the optimum to the other, cycle after cycle. A cabin that tilts reaches most sustained
-    forces with gravity; there (``full``), as on ``dfs`` and ``yaw-track``, the plan hardly swings,
-    and half steps lagged a fast target or led the plan, now and then, to a QP without a solution
-    ("Damped real-time iteration").
+    (:class:`~desdemona.realtime.RealTimeIteration`; 1 from a fresh seed); None: 0.5 where the cabin turns about the
+    vertical but cannot tilt (``yaw-track-cabin``), else 1. The Gauss-Newton model leaves out the curvature of large
+    residuals: where a sustained force is out of reach, turning the small force the arm can hold towards it
+    overshoots, and one full step a cycle swings the plan from one side of the optimum to the other, cycle after
+    cycle. A cabin that tilts reaches most sustained forces with gravity; there (``full``), as on ``dfs`` and
+    ``yaw-track``, the plan hardly swings, and half steps lagged a fast target or led the plan, now and then, to a
+    QP without a solution ("Damped real-time iteration").
 
-    tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon (None: ``step``
-    throughout), twice as long beyond ``far`` seconds (None: ``tail_step`` to the end; "auto":
-    :data:`FAR` where the cabin tilts, as on ``full``, else to the end): what the plan does in a second
-    matters only through where it leaves the machine, and it is re-planned long before then ("Coarse
-    tail of the plan"). On ``yaw-track-cabin``, whose cycle is short anyway, the damped iteration swung
-    the yaw of a steady turn with the doubled tail (1.17 reversals a second against 0.04).
-    fine_step : the plan's step [s] over the first ``fine`` seconds after the first re-plan period and
-    one step more, rounded to whole steps (None: ``step``): at 100 Hz (``step`` 0.01) a 2 s plan has 37
+    tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon (None: ``step`` throughout),
+    twice as long beyond ``far`` seconds (None: ``tail_step`` to the end; "auto": :data:`FAR` where the cabin tilts,
+    as on ``full``, else to the end): what the plan does in a second matters only through where it leaves the
+    machine, and it is re-planned long before then ("Coarse tail of the plan"). On ``yaw-track-cabin``, whose cycle
+    is short anyway, the damped iteration swung the yaw of a steady turn with the doubled tail (1.17 reversals a
+    second against 0.04). fine_step : the plan's step [s] over the first ``fine`` seconds after the first re-plan
+    period and one step more, rounded to whole steps (None: ``step``): at 100 Hz (``step`` 0.01) a 2 s plan has 37
     intervals instead of 56, the felt force within 1 % on the corpus ("Fine part of the plan").
 
-    reach : how far each plan looks [s], at least ``horizon`` (None: the horizon). Beyond the horizon,
-    where nothing is known, the desired path is taken as held at its last previewed value: an end cost
-    (eq. 3.8's K) that prices where the plan leaves the machine by what holding the path would cost from
-    there; a short horizon needs it where the machine takes longer than the horizon to get where a cue
-    wants it ("Reach beyond the horizon"). The thesis takes K = 0 for the dfs (7.3). A session reaches
-    at least :func:`default_horizon` (:func:`desdemona.session.online`).
+    reach : how far each plan looks [s], at least ``horizon`` (None: the horizon). Beyond the horizon, where nothing
+    is known, the desired path is taken as held at its last previewed value: an end cost (eq. 3.8's K) that prices
+    where the plan leaves the machine by what holding the path would cost from there; a short horizon needs it where
+    the machine takes longer than the horizon to get where a cue wants it ("Reach beyond the horizon"). The thesis
+    takes K = 0 for the dfs (7.3). A session reaches at least :func:`default_horizon`
+    (:func:`desdemona.session.online`).
     """
 
     horizon: float = 2.0
@@ -282,13 +276,11 @@ class MPC:
             stoppable=True, braking=options.braking, brake_step=options.step, perception=options.perception, initial_filter="given",
             steps=None if np.all(steps == options.step) else tuple(steps),
             jerk_weight=options.jerk_weight, rotation_band=options.rotation_band,
-            rotation_ceiling=options.rotation_ceiling, null_weight=null_weight, wall=options.wall,
-            spin_weight=options.spin_weight)
+            rotation_ceiling=options.rotation_ceiling, null_weight=null_weight, wall=options.wall, spin_weight=options.spin_weight)
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         if self.problem.nz:  # the horizon's perception map is built now, not in the session's first cycle
             self.problem.perceive(np.zeros((self.problem.N * self.problem.m, 6)))
         self.limits, self._limit_use = model.limits, model.step_limit_use(options.step)
-        self._turning_buys = True  # whether the last preview asks for what a turning arm gives (_asks_turning)
         self.z = self.z_d = self._z_d_next = None  # filter states of the felt and the desired path, the desired one step on
         self._rti = RealTimeIteration(self.problem, options.qp_solver) if options.plan_method == "rti" else None
         self.smooth = self.problem.smooth
@@ -318,12 +310,12 @@ class MPC:
             self.z = self.problem.filter.steady_state(self.model.S(q, qd, a))
         t, values = self._preview_arrays(preview)
         reason = self._preview_problem(t, values)
-        self._turning_buys = not reason and self._asks_turning(values)
         self._z_d_next = None
         plan = None
         if not reason:
             self.present = values[0].copy() if values.ndim == 2 else None  # S_d now: the brake's home (homing)
-            plan, success, elapsed, *_ = self._solve(q, qd, a, self._data(t, values))
+            turning = not self.model.config.takes_modulus or above_g(values, THRESHOLDS[5])  # _leave_rest's
+            plan, success, elapsed, *_ = self._solve(q, qd, a, self._data(t, values), turning=turning)
             plan = self._per_step(*plan)
             if not success:
                 reason, plan = "solver failed", None
@@ -454,14 +446,14 @@ class MPC:
         self._z_d_next = states[prob.m * self.options.replan_steps]  # after this cycle's sub-steps
         return prob.with_steps(y_d.reshape(prob.N, -1).T)
 
-    def _solve(self, q, qd, a, data, method: str | None = None, place: bool = False):
+    def _solve(self, q, qd, a, data, method: str | None = None, place: bool = False, turning: bool = True):
         """One warm-started solve from (q, qd, a) by ``method`` (default the options'); with ``place``
-        the start's positions are free within their limits (``q`` is then only the guess's start).
-        Returns a :class:`_Solved`."""
+        the start's positions are free within their limits (``q`` is then only the guess's start);
+        ``turning``: the preview asks for what a turning arm gives (:meth:`_leave_rest`). Returns a :class:`_Solved`."""
         prob = self.problem
         method = method or self.options.plan_method
         u = self._shifted_plan(prob) if self.plan is not None else np.zeros((prob.N, self.model.n))
-        u = self._leave_rest(qd, u)
+        u = self._leave_rest(qd, u) if turning else u
         share = self.rti_step if self.plan is not None else 1.0  # the whole step from a fresh seed
         # RTI: a consistent point, not clipped
         x, controls = prob.guess(q, qd, u, a, clip=method != "rti", filters=self.z if prob.nz else None)
@@ -530,9 +522,11 @@ class MPC:
         (in the direction it already turns), the more the stiller it is: the linearisation then sees
         what turning would give, and the solve decides whether to turn ("Spin-up from rest"). Drawn by
         degrees, not switched: a seed switched to a spin-up whenever a slow turn dipped below the
-        threshold kicked every joint each time ("Damped real-time iteration").
+        threshold kicked every joint each time ("Damped real-time iteration"). Not where the preview asks
+        for a modulus of g or less (:meth:`_solve`'s ``turning``): seeded on every cycle of a quiet stretch,
+        the plans span the cabin up for minutes ("A steady spin of the cabin on `dfs`").
         """
-        if 0 not in self.model.config.free or self.options.spin_up == 0.0 or not self._turning_buys:
+        if 0 not in self.model.config.free or self.options.spin_up == 0.0:
             return u
         k = self.model.config.free.index(0)
         rates = qd[k] + np.cumsum(u[:, k] * self.problem.steps)
@@ -543,17 +537,6 @@ class MPC:
         spin = (1.0 if qd[k] >= 0 else -1.0) * self.options.spin_up * self.limits.acceleration[k]
         u[:, k] += stillness * (spin - u[:, k])
         return u
-
-    def _asks_turning(self, values) -> bool:
-        """Whether the preview ``values`` (:meth:`_preview_arrays`) asks for what a turning arm could give:
-        on a configuration that follows the modulus, more than g by the vertical force's perception
-        threshold somewhere; elsewhere always. A modulus of g or less is made at least as well with the
-        arm still, and a spin-up seeded on every cycle of such a stretch drew the real-time iteration's
-        plans into a spin of the cabin that grew for minutes ("A steady spin of the cabin on `dfs`")."""
-        if not self.model.config.takes_modulus:
-            return True
-        modulus = values if values.ndim == 1 else np.linalg.norm(values[:, 3:], axis=1)
-        return bool(np.max(modulus) > G + THRESHOLDS[5])
 
     def _safe(self, q, qd, qdd, jerk) -> bool:
         """Every limit over the coming step with this command, to the independent check's tolerance."""

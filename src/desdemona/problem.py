@@ -50,6 +50,7 @@ from typing import Literal
 import casadi as ca
 import numpy as np
 
+from desdemona.kinematics import gimbal_null_rate
 from desdemona.perception import VestibularModel
 from desdemona.plan import STOP_EPS, STOP_LAG, advance, settled_rate, settled_rates, stopping_reach
 from desdemona.model import Model
@@ -145,17 +146,13 @@ class ProblemOptions:
         than felt as that much rotation ("Felt rotation ceiling").
     null_weight : where the three gimbals are free, the weight of their rates that turn the cabin not at
         all: at the inner gimbal's lock (q5 = +-90 deg) the outer gimbal and the cabin turning against
-        each other (:func:`gimbal_null_rate`), a motion no channel of S sees. Without it a controller's
+        each other (:func:`~desdemona.kinematics.gimbal_null_rate`), a motion no channel of S sees. Without it a controller's
         plans let that motion run up to the joints' rate limit (the outer gimbal at 180 deg/s and
         6 kW on a recorded sortie on ``dfs``). None: :data:`NULL_WEIGHT` on-line (``parametric``) on the
         configurations whose cabin follows the force (``dfs``), else 0 ("Gimbals' lock").
-    spin_weight : with a perception model, the weight of the rotation about the occupant's vertical
-        (``wz``) as it is, against none, as a share of its channel's weight: the canals stop feeling a
-        steady spin within seconds, so a cost on the felt rotation alone leaves a spin where it is,
-        and a controller that sees only its horizon built one up on a recorded car drive (the cabin at
-        100-180 deg/s for minutes, the modulus no longer followed). A washout towards no spin; 0
-        (the default): none. A session (:func:`desdemona.session.online`) takes
-        :data:`~desdemona.session.SPIN_WEIGHT` on ``dfs`` ("A steady spin of the cabin on `dfs`").
+    spin_weight : with a perception model, the weight of the spin about the occupant's vertical as it is
+        (against none), as a share of its channel's: a steady spin the canals no longer feel still costs
+        ("A steady spin of the cabin on `dfs`"). 0: none; a session takes :data:`~desdemona.session.SPIN_WEIGHT` on ``dfs``.
     """
 
     h_u: float = 0.05
@@ -211,11 +208,8 @@ class ProblemOptions:
             value = getattr(self, name)  # the last four: None for none
             if (value is not None or name in ("wall", "spin_weight")) and not (math.isfinite(value) and value >= 0):
                 raise ValueError(f"{name} = {value!r}: must be a number >= 0")
-            if name.startswith("rotation") and value is not None and self.perception is None:
-                raise ValueError(f"{name} = {value!r}: needs a perception model (it is on the felt rotation)")
-        if self.spin_weight and self.perception is None:
-            raise ValueError(f"spin_weight = {self.spin_weight!r}: needs a perception model (without one the "
-                             f"rotation is weighed as it is)")
+            if (name.startswith("rotation") or name == "spin_weight" and value) and value is not None and self.perception is None:
+                raise ValueError(f"{name} = {value!r}: needs a perception model (it is on the rotation felt or not)")
         if not (self.regularisation >= 0 and 0 <= self.margin < 0.5):
             raise ValueError("regularisation must be >= 0 and margin in [0, 0.5)")
 
@@ -229,19 +223,6 @@ def default_jerk_weight(config, online: bool = False) -> float:
     if not config.aligned:
         return 1.0
     return 3.0 if online else 5.0
-
-
-def gimbal_null_rate(q, qd, free) -> ca.SX | None:
-    """The part of the outer gimbal's and the cabin's rates that turns the cabin not at all, weighed by
-    how near the inner gimbal is to its lock: c^2 (qd4 - c qd6) / 2, where c = -sin q5 is the cosine
-    between the outer gimbal's axis and the cabin's (consecutive axes of the chain are perpendicular,
-    appendix A). At the lock (c = +-1) the two axes line up and qd4 = -c qd6 turns the cabin by
-    nothing; away from it (c = 0) the term vanishes. None unless all three gimbals are free."""
-    if not all(j in free for j in (3, 4, 5)):
-        return None
-    outer, inner, cabin = (free.index(j) for j in (3, 4, 5))
-    c = -ca.sin(q[inner])
-    return c ** 2 * (qd[outer] - c * qd[cabin]) / 2
 
 
 @dataclass(frozen=True, eq=False)

@@ -218,6 +218,32 @@ def default_rotation_band(config) -> float:
     return ALIGNED_ROTATION_BAND if config.aligned else ROTATION_BAND
 
 
+def _felt(model: Model, perception, rotation_band, rotation_ceiling, spin_weight) -> dict:
+    """:func:`online`'s perception model and its weights of the rotation, "auto" resolved and checked, as
+    :class:`MPCOptions` takes them."""
+    if perception == "auto":  # "Canals in the on-line cost"; on dfs "On-line with `hold` on `dfs`, ..."
+        perception = None if model.config.modulus_cost else canals_model()
+    if model.config.modulus_cost and perception is not None:
+        raise ChoiceError("--perception applies to the full path S, not to the dfs modulus")
+    if rotation_band == "auto":
+        rotation_band = None if perception is None else default_rotation_band(model.config)
+    if rotation_ceiling == "auto":
+        rotation_ceiling = None if perception is None else ROTATION_CEILING
+    if spin_weight == "auto":
+        spin_weight = SPIN_WEIGHT if perception is not None and model.config.aligned else 0.0
+    if not (math.isfinite(spin_weight) and spin_weight >= 0) or spin_weight and perception is None:
+        raise ChoiceError(f"--spin-weight {spin_weight:g}: a number >= 0, and with a perception model (none with "
+                          f"--perception none, nor on dfs-yaw)")
+    for option, value in (("band", rotation_band), ("ceiling", rotation_ceiling)):
+        if value is not None and not (math.isfinite(value) and value >= 0):
+            raise ChoiceError(f"--rotation-{option} {value:g}: must be a finite number of perception thresholds >= 0")
+        if value is not None and perception is None:
+            raise ChoiceError(f"--rotation-{option} {value:g}: the felt rotation needs a perception model (none with "
+                              f"--perception none, nor on dfs-yaw); drop it or give --rotation-{option} none")
+    return dict(perception=perception, rotation_band=rotation_band, rotation_ceiling=rotation_ceiling,
+                spin_weight=spin_weight)
+
+
 def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, horizon: float | None = None,
            reach: float | None = None, step: float = 0.02, predictor: str = "perfect",
            reference: DesiredPath | None = None, forecast=None, perception="auto", rotation_band="auto",
@@ -242,25 +268,7 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     from desdemona.mpc import MPCOptions, default_horizon
     from desdemona.online import OnlineOptions
 
-    if perception == "auto":  # "Canals in the on-line cost"; on dfs "On-line with `hold` on `dfs`, ..."
-        perception = None if model.config.modulus_cost else canals_model()
-    if model.config.modulus_cost and perception is not None:
-        raise ChoiceError("--perception applies to the full path S, not to the dfs modulus")
-    if rotation_band == "auto":
-        rotation_band = None if perception is None else default_rotation_band(model.config)
-    if rotation_ceiling == "auto":
-        rotation_ceiling = None if perception is None else ROTATION_CEILING
-    if spin_weight == "auto":
-        spin_weight = SPIN_WEIGHT if perception is not None and model.config.aligned else 0.0
-    if not (math.isfinite(spin_weight) and spin_weight >= 0) or spin_weight and perception is None:
-        raise ChoiceError(f"--spin-weight {spin_weight:g}: a number >= 0, and with a perception model (none with "
-                          f"--perception none, nor on dfs-yaw)")
-    for option, value in (("band", rotation_band), ("ceiling", rotation_ceiling)):
-        if value is not None and not (math.isfinite(value) and value >= 0):
-            raise ChoiceError(f"--rotation-{option} {value:g}: must be a finite number of perception thresholds >= 0")
-        if value is not None and perception is None:
-            raise ChoiceError(f"--rotation-{option} {value:g}: the felt rotation needs a perception model (none with "
-                              f"--perception none, nor on dfs-yaw); drop it or give --rotation-{option} none")
+    felt = _felt(model, perception, rotation_band, rotation_ceiling, spin_weight)
     if reference is not None and (reference.S_d is None) != (path.S_d is None):
         raise ChoiceError(f"--reference {reference.name}: its channels ({'t,M' if reference.S_d is None else 'S'}) "
                          f"differ from the path's")
@@ -292,9 +300,7 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
                          else "--reference is used only with --predictor route")
     weighted, wall = cost(path, model, choices), _wall(choices)
     try:
-        mpc = MPCOptions(horizon=horizon, step=step, reach=reach, perception=perception, rotation_band=rotation_band,
-                         rotation_ceiling=rotation_ceiling, wall=wall, spin_weight=spin_weight, **weighted,
-                         **timing)
+        mpc = MPCOptions(horizon=horizon, step=step, reach=reach, wall=wall, **felt, **weighted, **timing)
     except ValueError as exc:
         raise ChoiceError(f"--replan: {exc}") from None
     size = sizing.check_fits_online(path, model.config, mpc)

@@ -20,13 +20,13 @@ from desdemona.profiles.jsbsim import from_jsbsim
 from desdemona.profiles.log import LogFormat, from_log
 from desdemona.profiles.path import (ALIGNED_ROTATION_WEIGHT, ALIGNED_WEIGHTS, CHANNELS, MAX_ANGULAR_VELOCITY,
                                      MAX_SPECIFIC_FORCE, MODULUS_COLUMNS, PATH_COLUMNS, G, DesiredPath,
-                                     ProfileError, along_vertical, at_least_g, modulus_version,
+                                     ProfileError, above_g, along_vertical, at_least_g, modulus_version,
                                      vertical_force)
 from desdemona.profiles.weights import WEIGHT_CHOICES, weights_for
 
 __all__ = ["ALIGNED_ROTATION_WEIGHT", "ALIGNED_WEIGHTS", "CHANNELS", "G", "LogFormat", "MAX_ANGULAR_VELOCITY",
            "MAX_SPECIFIC_FORCE", "MODULUS_COLUMNS", "PATH_COLUMNS", "PROFILES", "RATE_NOISE_PER_FORCE_NOISE",
-           "THRESHOLDS", "WEIGHT_CHOICES", "DesiredPath", "ProfileError", "along_vertical", "at_least_g", "car_lap",
+           "THRESHOLDS", "WEIGHT_CHOICES", "DesiredPath", "ProfileError", "above_g", "along_vertical", "at_least_g", "car_lap",
            "catapult", "cosine", "cosine_sweep", "dfs_catapult", "from_jsbsim", "from_log", "get_profile", "load",
            "modulus_version", "pulses", "read_csv", "recorded_version", "roller_coaster", "vertical_force",
            "weights_for", "write_csv"]

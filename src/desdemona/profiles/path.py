@@ -150,3 +150,10 @@ def at_least_g(values) -> np.ndarray:
     up = np.tile([0.0, 0.0, 1.0], (int(weak.sum()), 1))
     f[weak] = np.where(size[weak, None] > 0, f[weak] * (G / np.where(size[weak] > 0, size[weak], 1.0))[:, None], G * up)
     return values
+
+
+def above_g(values, by: float) -> bool:
+    """Whether a modulus (K,) or the force of S (K, 6) is longer than G by more than ``by`` [m/s^2]
+    somewhere."""
+    values = np.asarray(values, dtype=float)
+    return bool(np.max(values if values.ndim == 1 else np.linalg.norm(values[:, 3:], axis=1)) > G + by)
