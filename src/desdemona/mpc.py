@@ -58,48 +58,52 @@ HOMING_AFTER = 2.0
 class MPCOptions:
     """What the controller plans and how (thesis chapter 7).
 
-    horizon : T_h [s], how far the preview reaches; step : h [s], the grid of the plan (its accelerations are held
-    this long); replan : T_c [s], the period at which a new plan is computed, a whole number of steps (default:
-    every step); delay : simulate the computation time as the thesis does (7.1, figure 7.2): the plan computed
-    during [t, t + T_c] from the state at t is applied from t + T_c, so it starts from the state predicted there;
-    deadline : compute budget per plan [s] (default: T_c); substeps, regularisation, margin, weights, jerk_weight,
-    wall, rotation_band, rotation_ceiling (the felt rotation beyond so many thresholds weighs more), spin_weight: as
-    in :class:`~desdemona.problem.ProblemOptions` (jerk_weight None: :func:`~desdemona.problem.default_jerk_weight`
-    on-line); braking : fraction of the acceleration limit assumed for stopping; method : "rti" (real-time
-    iteration: one Gauss-Newton QP per plan, linearised at the shifted previous plan, solved by CasADi's
-    ``qp_solver`` plugin), "nlp" (IPOPT to convergence, warm-started, at most ``max_iter`` iterations) or "auto"
-    (see :attr:`plan_method`); perception : minimise the perceived difference through this vestibular model (chapter
-    6): the controller then carries the filter states of what the person has felt and of what they should have felt
-    from step to step; null_weight : the weight of the gimbals' rates that turn the cabin not at all, near the inner
-    gimbal's lock (:attr:`~desdemona.problem.ProblemOptions.null_weight`; None: its on-line default with the
-    real-time iteration, where the spin was found, and 0 with IPOPT, whose thesis-timing rows of
-    ``benchmarks/online.py`` it moved by up to 12 %, "Gimbals' lock"); spin_up : fraction of the yaw's acceleration
-    limit with which a still yaw is seeded (:meth:`MPC._leave_rest`), 0: off.
+    horizon : T_h [s], how far the preview reaches; step : h [s], the grid of the plan (its
+    accelerations are held this long); replan : T_c [s], the period at which a new plan is computed,
+    a whole number of steps (default: every step); delay : simulate the computation time as the thesis
+    does (7.1, figure 7.2): the plan computed during [t, t + T_c] from the state at t is applied from
+    t + T_c, so it starts from the state predicted there; deadline : compute budget per plan [s]
+    (default: T_c); substeps, regularisation, margin, weights, spin_weight, jerk_weight, wall, rotation_band,
+    rotation_ceiling (the felt rotation beyond so many thresholds weighs more): as in
+    :class:`~desdemona.problem.ProblemOptions` (jerk_weight None:
+    :func:`~desdemona.problem.default_jerk_weight` on-line); braking : fraction of the acceleration
+    limit assumed for stopping; method : "rti" (real-time iteration: one Gauss-Newton QP per plan,
+    linearised at the shifted previous plan, solved by CasADi's ``qp_solver`` plugin), "nlp" (IPOPT
+    to convergence, warm-started, at most ``max_iter`` iterations) or "auto" (see
+    :attr:`plan_method`); perception : minimise the perceived difference through this vestibular model
+    (chapter 6): the controller then carries the filter states of what the person has felt and of
+    what they should have felt from step to step; null_weight : the weight of the gimbals' rates that
+    turn the cabin not at all, near the inner gimbal's lock (:attr:`~desdemona.problem.ProblemOptions.null_weight`;
+    None: its on-line default with the real-time iteration, where the spin was found, and 0 with IPOPT,
+    whose thesis-timing rows of ``benchmarks/online.py`` it moved by up to 12 %, "Gimbals' lock");
+    spin_up : fraction of the yaw's acceleration limit with which a still yaw is seeded (:meth:`MPC._leave_rest`), 0: off.
 
     rti_step : the share of each real-time iteration's QP step taken from the previous plan
-    (:class:`~desdemona.realtime.RealTimeIteration`; 1 from a fresh seed); None: 0.5 where the cabin turns about the
-    vertical but cannot tilt (``yaw-track-cabin``), else 1. The Gauss-Newton model leaves out the curvature of large
-    residuals: where a sustained force is out of reach, turning the small force the arm can hold towards it
-    overshoots, and one full step a cycle swings the plan from one side of the optimum to the other, cycle after
-    cycle. A cabin that tilts reaches most sustained forces with gravity; there (``full``), as on ``dfs`` and
-    ``yaw-track``, the plan hardly swings, and half steps lagged a fast target or led the plan, now and then, to a
-    QP without a solution ("Damped real-time iteration").
+    (:class:`~desdemona.realtime.RealTimeIteration`; 1 from a fresh seed); None: 0.5 where the cabin
+    turns about the vertical but cannot tilt (``yaw-track-cabin``), else 1. The Gauss-Newton model
+    leaves out the curvature of large residuals: where a sustained force is out of reach, turning the
+    small force the arm can hold towards it overshoots, and one full step a cycle swings the plan from
+    one side of the optimum to the other, cycle after cycle. A cabin that tilts reaches most sustained
+    forces with gravity; there (``full``), as on ``dfs`` and ``yaw-track``, the plan hardly swings,
+    and half steps lagged a fast target or led the plan, now and then, to a QP without a solution
+    ("Damped real-time iteration").
 
-    tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon (None: ``step`` throughout),
-    twice as long beyond ``far`` seconds (None: ``tail_step`` to the end; "auto": :data:`FAR` where the cabin tilts,
-    as on ``full``, else to the end): what the plan does in a second matters only through where it leaves the
-    machine, and it is re-planned long before then ("Coarse tail of the plan"). On ``yaw-track-cabin``, whose cycle
-    is short anyway, the damped iteration swung the yaw of a steady turn with the doubled tail (1.17 reversals a
-    second against 0.04). fine_step : the plan's step [s] over the first ``fine`` seconds after the first re-plan
-    period and one step more, rounded to whole steps (None: ``step``): at 100 Hz (``step`` 0.01) a 2 s plan has 37
+    tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon (None: ``step``
+    throughout), twice as long beyond ``far`` seconds (None: ``tail_step`` to the end; "auto":
+    :data:`FAR` where the cabin tilts, as on ``full``, else to the end): what the plan does in a second
+    matters only through where it leaves the machine, and it is re-planned long before then ("Coarse
+    tail of the plan"). On ``yaw-track-cabin``, whose cycle is short anyway, the damped iteration swung
+    the yaw of a steady turn with the doubled tail (1.17 reversals a second against 0.04).
+    fine_step : the plan's step [s] over the first ``fine`` seconds after the first re-plan period and
+    one step more, rounded to whole steps (None: ``step``): at 100 Hz (``step`` 0.01) a 2 s plan has 37
     intervals instead of 56, the felt force within 1 % on the corpus ("Fine part of the plan").
 
-    reach : how far each plan looks [s], at least ``horizon`` (None: the horizon). Beyond the horizon, where nothing
-    is known, the desired path is taken as held at its last previewed value: an end cost (eq. 3.8's K) that prices
-    where the plan leaves the machine by what holding the path would cost from there; a short horizon needs it where
-    the machine takes longer than the horizon to get where a cue wants it ("Reach beyond the horizon"). The thesis
-    takes K = 0 for the dfs (7.3). A session reaches at least :func:`default_horizon`
-    (:func:`desdemona.session.online`).
+    reach : how far each plan looks [s], at least ``horizon`` (None: the horizon). Beyond the horizon,
+    where nothing is known, the desired path is taken as held at its last previewed value: an end cost
+    (eq. 3.8's K) that prices where the plan leaves the machine by what holding the path would cost from
+    there; a short horizon needs it where the machine takes longer than the horizon to get where a cue
+    wants it ("Reach beyond the horizon"). The thesis takes K = 0 for the dfs (7.3). A session reaches
+    at least :func:`default_horizon` (:func:`desdemona.session.online`).
     """
 
     horizon: float = 2.0
@@ -268,15 +272,13 @@ class MPC:
         placeholder = DesiredPath("preview", t, None if model.config.modulus_cost else np.zeros((len(t), 6)),
                                   weights=weights or (ALIGNED_WEIGHTS if model.config.aligned else (1.0,) * 6),
                                   modulus=np.zeros(len(t)) if model.config.modulus_cost else None)
-        null_weight = options.null_weight if options.null_weight is not None or options.plan_method == "rti" else 0.0
-        problem_options = ProblemOptions(
-            h_u=options.step, substeps=options.substeps, initial="given",
+        problem_options = ProblemOptions(h_u=options.step, substeps=options.substeps, initial="given",
             initial_state=(np.zeros(model.n), np.zeros(model.n)), regularisation=options.regularisation,
-            margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6,
-            stoppable=True, braking=options.braking, brake_step=options.step, perception=options.perception, initial_filter="given",
-            steps=None if np.all(steps == options.step) else tuple(steps),
-            jerk_weight=options.jerk_weight, rotation_band=options.rotation_band,
-            rotation_ceiling=options.rotation_ceiling, null_weight=null_weight, wall=options.wall, spin_weight=options.spin_weight)
+            margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6, stoppable=True,
+            braking=options.braking, brake_step=options.step, perception=options.perception, initial_filter="given",
+            steps=None if np.all(steps == options.step) else tuple(steps), jerk_weight=options.jerk_weight,
+            rotation_band=options.rotation_band, rotation_ceiling=options.rotation_ceiling, wall=options.wall, spin_weight=options.spin_weight,
+            null_weight=options.null_weight if options.null_weight is not None or options.plan_method == "rti" else 0.0)
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         if self.problem.nz:  # the horizon's perception map is built now, not in the session's first cycle
             self.problem.perceive(np.zeros((self.problem.N * self.problem.m, 6)))
@@ -515,16 +517,14 @@ class MPC:
     def _leave_rest(self, qd, u) -> np.ndarray:
         """The seed ``u`` (N, n), with a spin-up of the yaw where it would otherwise stay still.
 
-        Zero yaw rate is a stationary point of the cue: the centripetal terms and the modulus have no
-        gradient there, so a solve linearised at a still yaw returns a still yaw forever, and a run
-        from rest never turns the arm. Where the yaw's fastest rate over the seed is below
-        ``REST_RATE``, the seed's yaw acceleration is drawn towards ``options.spin_up`` times its limit
-        (in the direction it already turns), the more the stiller it is: the linearisation then sees
-        what turning would give, and the solve decides whether to turn ("Spin-up from rest"). Drawn by
-        degrees, not switched: a seed switched to a spin-up whenever a slow turn dipped below the
-        threshold kicked every joint each time ("Damped real-time iteration"). Not where the preview asks
-        for a modulus of g or less (:meth:`_solve`'s ``turning``): seeded on every cycle of a quiet stretch,
-        the plans span the cabin up for minutes ("A steady spin of the cabin on `dfs`").
+        Zero yaw rate is a stationary point of the cue: the centripetal terms and the modulus have no gradient
+        there, so a solve linearised at a still yaw returns a still yaw forever, and a run from rest never turns the
+        arm. Where the yaw's fastest rate over the seed is below ``REST_RATE``, the seed's yaw acceleration is drawn
+        towards ``options.spin_up`` times its limit (in the direction it already turns), the more the stiller it is:
+        the linearisation then sees what turning would give, and the solve decides whether to turn ("Spin-up from
+        rest"). Drawn by degrees, not switched: a seed switched to a spin-up whenever a slow turn dipped below the
+        threshold kicked every joint each time ("Damped real-time iteration"). Not seeded where the preview asks for
+        a modulus of g or less (:meth:`_solve`'s ``turning``, "A steady spin of the cabin on `dfs`").
         """
         if 0 not in self.model.config.free or self.options.spin_up == 0.0:
             return u
