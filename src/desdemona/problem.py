@@ -208,8 +208,11 @@ class ProblemOptions:
             value = getattr(self, name)  # the last four: None for none
             if (value is not None or name in ("wall", "spin_weight")) and not (math.isfinite(value) and value >= 0):
                 raise ValueError(f"{name} = {value!r}: must be a number >= 0")
-            if (name.startswith("rotation") or name == "spin_weight" and value) and value is not None and self.perception is None:
-                raise ValueError(f"{name} = {value!r}: needs a perception model (it is on the rotation felt or not)")
+            if name.startswith("rotation") and value is not None and self.perception is None:
+                raise ValueError(f"{name} = {value!r}: needs a perception model (it is on the felt rotation)")
+        if self.spin_weight and self.perception is None:
+            raise ValueError(f"spin_weight = {self.spin_weight!r}: needs a perception model (without one the "
+                             f"rotation is weighed as it is)")
         if not (self.regularisation >= 0 and 0 <= self.margin < 0.5):
             raise ValueError("regularisation must be >= 0 and margin in [0, 0.5)")
 

@@ -231,6 +231,7 @@ def _felt(model: Model, perception, rotation_band, rotation_ceiling, spin_weight
         rotation_ceiling = None if perception is None else ROTATION_CEILING
     if spin_weight == "auto":
         spin_weight = SPIN_WEIGHT if perception is not None and model.config.aligned else 0.0
+    spin_weight = spin_weight or 0.0  # None: no weight, as the band's and the ceiling's None
     if not (math.isfinite(spin_weight) and spin_weight >= 0) or spin_weight and perception is None:
         raise ChoiceError(f"--spin-weight {spin_weight:g}: a number >= 0, and with a perception model (none with "
                           f"--perception none, nor on dfs-yaw)")
@@ -262,7 +263,8 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     :attr:`MPCOptions.rotation_band` [thresholds], "auto": :func:`default_rotation_band` with a
     perception model; rotation_ceiling : the same of
     :attr:`MPCOptions.rotation_ceiling`, "auto": :data:`ROTATION_CEILING` with a perception model ("Felt
-    rotation ceiling"); ``timing``: the other
+    rotation ceiling"); spin_weight : :attr:`MPCOptions.spin_weight` (None: 0), "auto": :data:`SPIN_WEIGHT`
+    with a perception model where the cabin follows the force (``dfs``), else 0; ``timing``: the other
     :class:`MPCOptions` fields (replan, delay, deadline, method, tail_step).
     """
     from desdemona.mpc import MPCOptions, default_horizon

@@ -219,7 +219,7 @@ def _felt_choices(args) -> dict:
         value = getattr(args, name)
         if value is not None:
             try:
-                choices[name] = (0.0 if name == "spin_weight" else None) if value == "none" else float(value)
+                choices[name] = None if value == "none" else float(value)
             except ValueError:
                 what = "a weight" if name == "spin_weight" else "a number of perception thresholds"
                 raise UserError(f"--{name.replace('_', '-')} {value!r}: {what}, or none") from None
