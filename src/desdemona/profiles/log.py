@@ -281,20 +281,21 @@ def _read_clock(file: Path, fmt: LogFormat, columns: list[str],
         raise ProfileError(f"{file}: column {fmt.time!r}: time {clock.text(origin + t[k + 1], dated)} at data row "
                            f"{k + 2} does not increase (previous {clock.text(origin + t[k], dated)})")
     _check_time_unit(file, fmt, t, origin, "; --time-unit is the unit of both files' clocks" if both else "")
-    return origin, data, dated, [] if dated else _unit_note(fmt, origin / TIME_UNITS[fmt.time_unit])
+    return origin, data, dated, [] if dated else _unit_note(fmt, origin)
 
 
-def _unit_note(fmt: LogFormat, first: float) -> list[str]:
-    """A warning where the log's first time ``first`` [its declared unit] is no date (:data:`.clock.EPOCH_DATES`)
-    in that unit but is one in another: seconds since 1970 declared as milliseconds pass every check of
-    a long log, a thousand times too short. Not a refusal: a clock since the sensor started may too."""
-    unit = TIME_UNITS[fmt.time_unit]
-    if clock.is_date(first * unit):
+def _unit_note(fmt: LogFormat, origin: float) -> list[str]:
+    """A warning where the log's first time, ``origin`` [s] as read in its declared unit, is no date
+    (:data:`.clock.EPOCH_DATES`) but would be one in another unit: seconds since 1970 declared as
+    milliseconds pass every check of a long log, a thousand times too short. Not a refusal: a clock since
+    the sensor started may too."""
+    if clock.is_date(origin):
         return []
+    first = origin / TIME_UNITS[fmt.time_unit]  # the number the column holds
     other = next((u for u, seconds in TIME_UNITS.items() if clock.is_date(first * seconds)), None)
     if other is None:
         return []
-    return [f"column {fmt.time!r} read as {fmt.time_unit} starts {clock.text(first * unit, True)}; read as "
+    return [f"column {fmt.time!r} read as {fmt.time_unit} starts {clock.text(origin, True)}; read as "
             f"{other} it starts {clock.text(first * TIME_UNITS[other], True)}: if its clock counts from 1970, declare "
             f"--time-unit {other}"]
 
