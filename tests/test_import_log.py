@@ -659,11 +659,12 @@ def test_a_cell_that_cannot_be_read_is_named_by_its_column(tmp_path, capsys):
     assert not (tmp_path / "x.csv").exists()
 
 
-def test_a_slow_log_on_a_clock_from_1970_is_not_taken_for_milliseconds(tmp_path, capsys):
+def test_a_slow_log_on_a_clock_from_1970_or_declared_is_not_taken_for_milliseconds(tmp_path, capsys):
     """A phone's log of a drive averaged to a row a second, stamped in seconds since 1970: in its unit
     (in milliseconds its clock would read January 1970), imported with a warning and interpolated to
-    10 Hz, which every command reads. The same rows from t = 0 are still taken for milliseconds, and a
-    path asked at 2 Hz or slower is refused."""
+    10 Hz, which every command reads. The same rows from t = 0 are taken for milliseconds unless
+    --time-unit s is declared, and then give the same path; a clock declared in seconds that steps
+    10 s is still refused as milliseconds, and a path asked at 2 Hz or slower is refused."""
     t = np.arange(0.0, 61.0)
     turn, brake = bump(t, 10.0, 30.0), bump(t, 35.0, 50.0)
     omega = np.column_stack([0 * t, 0 * t, 0.2 * turn])
@@ -691,8 +692,18 @@ def test_a_slow_log_on_a_clock_from_1970_is_not_taken_for_milliseconds(tmp_path,
     zero = write_log(tmp_path / "zero.csv", t, omega, f, axes, "m/s2", "rad/s")
     assert main(["import", "log", str(zero), *args, "--out", str(tmp_path / "z.csv")]) == 2
     err = capsys.readouterr().err
-    assert "looks like milliseconds" in err and "add its start in seconds since 1970 to its times" in err
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["drive.csv", "x.csv", "zero.csv"]
+    assert "looks like milliseconds" in err and "at most every 2 s: declare --time-unit s" in err
+    # declared in seconds, the same clock from 0 is taken as such: the path of the clock from 1970
+    assert main(["import", "log", str(zero), *args, "--time-unit", "s", "--out", str(tmp_path / "z.csv")]) == 0
+    assert "warning: the log has a reading every 1 s" in capsys.readouterr().err
+    np.testing.assert_array_equal(profiles.load(tmp_path / "z.csv").S_d, path.S_d)
+    # ... up to a step of 2 s: a clock of milliseconds declared as seconds steps further
+    ms = write_log(tmp_path / "ms.csv", t * 10.0, omega, f, axes, "m/s2", "rad/s")
+    assert main(["import", "log", str(ms), *args, "--time-unit", "s", "--out", str(tmp_path / "m.csv")]) == 2
+    err = capsys.readouterr().err
+    assert "looks like milliseconds: 61 samples every 10 s" in err and "declare --time-unit ms" in err
+    assert "declare --time-unit s" not in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["drive.csv", "ms.csv", "x.csv", "z.csv", "zero.csv"]
 
 
 def phone_logs(folder, t, omega, f, axes, shift=0.004, origin=1707663721.0):

@@ -277,9 +277,11 @@ def _add_import_parser(sub) -> None:
                          "their sign is turned")
     lg.add_argument("--rate-unit", choices=("deg/s", "rad/s"), dest="rate_unit",
                     help="the unit of the --rates columns (required unless --rates none)")
-    lg.add_argument("--time-unit", default="s", choices=("s", "ms", "us", "ns"), dest="time_unit",
+    lg.add_argument("--time-unit", choices=("s", "ms", "us", "ns"), dest="time_unit",
                     help="(default: s; ns for a dataset's nanosecond stamps, EuRoC's or ROS's; a column of "
-                         "ISO 8601 dates and times, 2023-08-04 17:47:58-04:00, is read as such)")
+                         "ISO 8601 dates and times, 2023-08-04 17:47:58-04:00, is read as such; a clock "
+                         "that steps 0.5 s or more is taken for milliseconds unless it reads a date or s "
+                         "is declared, up to a step of 2 s)")
     lg.add_argument("--axes", default="forward,right,down", metavar="X,Y,Z",
                     help="direction of the log's x,y,z: each one of forward/back/right/left/up/down, "
                          "right-handed (default: forward,right,down, vehicle body axes)")

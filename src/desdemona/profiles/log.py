@@ -39,6 +39,10 @@ MIN_DEFAULT_RATE = 10.0
 #: A gap between two readings longer than this many of the log's median steps is bridged by
 #: interpolation with a warning (a phone's log of a coaster ride missed 0.79 s at 59 ms a reading).
 GAP_STEPS = 4.0
+#: A clock declared in seconds (``--time-unit s``) is taken as such up to this median step [s] (a phone's
+#: log of a row a second), where an undeclared one looks like milliseconds from 0.5 s on; a slower one
+#: cannot hold a motion worth cueing, and is more likely milliseconds declared wrong.
+MAX_DECLARED_STEP = 2.0
 #: A log's median step shorter than this [s] (10 kHz) is a time unit declared too large.
 MIN_STEP = 1e-4
 
@@ -49,7 +53,9 @@ class LogFormat:
 
     time : the time column; accel, rates : three column names each (the log's x, y, z), rates None
     for a log without angular rates (the modulus form only, :func:`from_log`);
-    accel_unit : ``g`` or ``m/s2``; rate_unit : ``deg/s`` or ``rad/s``; time_unit : ``s``, ``ms``, ``us`` or ``ns``;
+    accel_unit : ``g`` or ``m/s2``; rate_unit : ``deg/s`` or ``rad/s``; time_unit : ``s``, ``ms``, ``us`` or ``ns``,
+    None for seconds not declared: only a declared ``s`` takes a clock that steps 0.5 s or more as seconds
+    (:func:`_check_time_unit`);
     axes : the cabin-frame direction of the log's x, y, z (``forward,right,down`` = vehicle body axes);
     lever_arm : (3,) [m] from the sensor to the head, in the log's axes;
     rates_file : a second CSV log that holds the rates, with a time column of the same name and unit
@@ -64,14 +70,19 @@ class LogFormat:
     rates: tuple[str, str, str] | None = ("p", "q", "r")
     accel_unit: str = "m/s2"
     rate_unit: str = "rad/s"
-    time_unit: str = "s"
+    time_unit: str | None = None
     axes: tuple[str, str, str] = ("forward", "right", "down")
     lever_arm: tuple[float, float, float] = (0.0, 0.0, 0.0)
     rates_file: str | None = None
     inertial: bool = False
 
+    @property
+    def clock_unit(self) -> str:
+        """The time column's unit, declared or not (``s``)."""
+        return self.time_unit or "s"
+
     def __post_init__(self):
-        units = [("--accel-unit", self.accel_unit, ACCEL_UNITS), ("--time-unit", self.time_unit, TIME_UNITS)]
+        units = [("--accel-unit", self.accel_unit, ACCEL_UNITS), ("--time-unit", self.clock_unit, TIME_UNITS)]
         columns = [("--accel", self.accel)]
         if self.rates is not None:  # None: a log without angular rates
             units.append(("--rate-unit", self.rate_unit, RATE_UNITS))
@@ -270,10 +281,10 @@ def _read_clock(file: Path, fmt: LogFormat, columns: list[str],
     and the refusal says so). A warning where the clock reads a date from 1970 in another unit only
     (:func:`_unit_note`)."""
     data, dated, decimals = read_log(file, [fmt.time, *columns], time=fmt.time)
-    if dated and fmt.time_unit != "s":
+    if dated and fmt.clock_unit != "s":
         raise ProfileError(f"{file}: column {fmt.time!r} holds dates and times, read as seconds since 1970: "
-                           f"drop --time-unit {fmt.time_unit}")
-    origin, t = clock.seconds_from_first(data[fmt.time], decimals, fmt.time_unit)
+                           f"drop --time-unit {fmt.clock_unit}")
+    origin, t = clock.seconds_from_first(data[fmt.time], decimals, fmt.clock_unit)
     data[fmt.time] = t
     steps = np.diff(t)
     if np.any(steps <= 0):
@@ -291,11 +302,11 @@ def _unit_note(fmt: LogFormat, origin: float) -> list[str]:
     the sensor started may too."""
     if clock.is_date(origin):
         return []
-    first = origin / TIME_UNITS[fmt.time_unit]  # the number the column holds
+    first = origin / TIME_UNITS[fmt.clock_unit]  # the number the column holds
     other = next((u for u, seconds in TIME_UNITS.items() if clock.is_date(first * seconds)), None)
     if other is None:
         return []
-    return [f"column {fmt.time!r} read as {fmt.time_unit} starts {clock.text(origin, True)}; read as "
+    return [f"column {fmt.time!r} read as {fmt.clock_unit} starts {clock.text(origin, True)}; read as "
             f"{other} it starts {clock.text(first * TIME_UNITS[other], True)}: if its clock counts from 1970, declare "
             f"--time-unit {other}"]
 
@@ -386,7 +397,7 @@ def _source_lines(file: Path, fmt: LogFormat, span: str, filtered: str, changes:
     the crop, the filter and the check, and what was changed in the readings."""
     rates = "none" if fmt.rates is None else f"{','.join(fmt.rates)} [{fmt.rate_unit}]" + (
         "" if fmt.rates_file is None else f" from {Path(fmt.rates_file).name}")
-    time = "date and time" if dated else fmt.time_unit
+    time = "date and time" if dated else fmt.clock_unit
     accel = fmt.accel_unit + (", inertial: sign turned" if fmt.inertial else "")
     return [f"source: log {file.name}, columns time {fmt.time} [{time}], accel {','.join(fmt.accel)} [{accel}], "
             f"rates {rates}",
@@ -492,27 +503,29 @@ def _check_time_unit(file: Path, fmt: LogFormat, t: np.ndarray, origin: float = 
     seconds ``t`` from the first, ``origin`` [s]): a unit 1000 times smaller (milliseconds declared as
     seconds), a span of days, or steps shorter than :data:`MIN_STEP` (microseconds declared as
     nanoseconds: a log of 16 ms at 200 kHz). The refusal names the first unit under which the same
-    rule passes. A log sampled at 2 Hz or slower whose clock reads a date (:data:`.clock.EPOCH_DATES`) is in
-    its unit: its slowness is a warning of :func:`from_log`, not a unit."""
+    rule passes. A log sampled at 2 Hz or slower whose clock reads a date (:data:`.clock.EPOCH_DATES`),
+    or whose unit is declared and steps at most :data:`MAX_DECLARED_STEP`, is in its unit: its slowness
+    is a warning of :func:`from_log`, not a unit."""
     problem = _time_problem(t)
-    if problem is None or (problem == "ms" and clock.is_date(origin)):
+    declared = fmt.time_unit is not None and float(np.median(np.diff(t))) <= MAX_DECLARED_STEP
+    if problem is None or (problem == "ms" and (clock.is_date(origin) or declared)):
         return
-    where = f"{file}: column {fmt.time!r} [{fmt.time_unit}]"
+    where = f"{file}: column {fmt.time!r} [{fmt.clock_unit}]"
     likely = next((unit for unit, seconds in TIME_UNITS.items()  # the first under which the check passes
-                   if _time_problem(t * seconds / TIME_UNITS[fmt.time_unit]) is None), None)
+                   if _time_problem(t * seconds / TIME_UNITS[fmt.clock_unit]) is None), None)
     fix = (f"declare --time-unit {likely}" if likely else "check the column") + also
     if problem == "days":
         duration = float(t[-1] - t[0])
         raise ProfileError(f"{where} spans {duration:.3g} s ({duration / 86400:.3g} days), far longer than a "
                            f"session (minutes): wrong time column? Else {fix}")
     if problem == "fast":
-        raise ProfileError(f"{where}: {csvfile.describe_steps(t)} read as {fmt.time_unit}, sampled at "
+        raise ProfileError(f"{where}: {csvfile.describe_steps(t)} read as {fmt.clock_unit}, sampled at "
                            f"{1e-3 / float(np.median(np.diff(t))):.3g} kHz: {fix}")
-    if fmt.time_unit == "s":
+    if fmt.clock_unit == "s":
         raise ProfileError(f"{where} looks like milliseconds: {csvfile.describe_steps(t)}; a recording is sampled "
-                           f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: {fix} (a log truly read that seldom "
-                           f"is taken as such on a clock from 1970: add its start in seconds since 1970 to its times)")
-    raise ProfileError(f"{where}: {csvfile.describe_steps(t)} read as {fmt.time_unit}; a recording is sampled "
+                           f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: {fix}" + ("" if fmt.time_unit else
+                           f" (a log truly read that seldom, at most every {MAX_DECLARED_STEP:g} s: declare --time-unit s)"))
+    raise ProfileError(f"{where}: {csvfile.describe_steps(t)} read as {fmt.clock_unit}; a recording is sampled "
                        f"faster than {1 / csvfile.MS_MEDIAN_STEP:g} Hz: {fix}")
 
 
