@@ -2,6 +2,7 @@
 convention check names the likely mistake; bad input is one message, exit 2, nothing written."""
 
 import math
+import os
 import re
 from datetime import datetime, timedelta
 
@@ -753,11 +754,14 @@ def test_rates_from_a_second_file_read_as_one_log(tmp_path, capsys):
         assert main(argv[:4] + [str(tmp_path / bad)] + argv[5:] + [str(tmp_path / "x.csv")]) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and words in err
-    for out in (str(gyro), str(accel)):  # without --overwrite too: the refusal that holds
+    os.link(accel, tmp_path / "linked.csv")  # the same file under another name
+    for out in (str(gyro), str(accel), str(tmp_path / "linked.csv")):  # without --overwrite too: the refusal that holds
         assert main(argv + [out]) == 2
         assert "is the log being read" in capsys.readouterr().err
-    assert main(argv[:4] + [str(accel)] + argv[5:] + [str(tmp_path / "x.csv")]) == 2
-    assert "is the accelerometer's log itself; name the gyroscope's file" in capsys.readouterr().err
+    for same in (accel, tmp_path / "linked.csv"):
+        assert main(argv[:4] + [str(same)] + argv[5:] + [str(tmp_path / "x.csv")]) == 2
+        assert "is the accelerometer's log itself; name the gyroscope's file" in capsys.readouterr().err
+    (tmp_path / "linked.csv").unlink()
     # a gyroscope read for part of the log, or once a second: imported, with a warning
     for name, kept, words in (("part.csv", [lines[0]] + lines[1001:], "the rates of part.csv cover 1707663726.004 s "
                                "to 1707663728.995 s of the log's 1707663721 s to 1707663728.995 s: the path is cut"),

@@ -26,3 +26,12 @@ def beside(out: str | Path):
     finally:
         if os.path.exists(tmp):
             os.unlink(tmp)
+
+
+def same_file(a: str | Path, b: str | Path) -> bool:
+    """Whether ``a`` and ``b`` are one file that exists, under whatever names (a symbolic or a hard link,
+    a relative path): :func:`os.path.samefile`, False where either does not exist."""
+    try:
+        return os.path.samefile(a, b)
+    except OSError:
+        return False

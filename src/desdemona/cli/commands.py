@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona import guard, profiles, session, sizing
+from desdemona import files, guard, profiles, session, sizing
 from desdemona import perception as perception_models
 from desdemona.cli.exits import EXIT_NOT_CONVERGED, EXIT_UNSAFE, EXIT_USAGE, UserError
 from desdemona.configs import get_configuration
@@ -345,7 +345,7 @@ def run_import_log(args) -> int:
     from desdemona.profiles import convert, log
 
     for given in (args.file, args.rates_file):
-        if given is not None and Path(given).exists() and Path(given).resolve() == Path(args.out).resolve():
+        if given is not None and files.same_file(given, args.out):
             raise UserError(f"--out {args.out}: is the log being read ({given}); choose another file")
     convert.check_out(args.out, args.overwrite)
     try:

@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
+from desdemona import files
 from desdemona.profiles import clock, convert, csvfile
 from desdemona.profiles.clock import TIME_UNITS
 from desdemona.profiles.path import G, DesiredPath, ProfileError
@@ -334,7 +335,7 @@ def with_rates_file(file: Path, fmt: LogFormat, origin: float, t: np.ndarray,
     a gap of more than :data:`GAP_STEPS` of its median steps within that span. A warning where it
     covers less of the log than the log's first and last steps, or is read 2 Hz or slower."""
     other = Path(fmt.rates_file)
-    if other.exists() and Path(file).exists() and other.resolve() == Path(file).resolve():
+    if files.same_file(other, file):
         raise ProfileError(f"--rates-file {other}: is the accelerometer's log itself; name the gyroscope's file")
     origin_r, rates, other_dated, _ = _read_clock(other, fmt, list(fmt.rates), both=True)  # its clock's unit: the log's
     tr = rates[fmt.time] + (origin_r - origin)  # on the accelerometer log's count
