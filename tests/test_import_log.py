@@ -80,6 +80,39 @@ def test_every_convention_gives_the_same_path(tmp_path):
     assert "# source: log log2.csv" in text and "up,left,back" in text and "convention check passed" in text
 
 
+def test_semicolons_tabs_and_decimal_commas_give_the_same_path(tmp_path, capsys):
+    """A log exported with semicolons and decimal commas (a European spreadsheet's, phyphox's "CSV
+    (Semicolon, decimal comma)"), or with tabs, quoted names with spaces and parentheses, gives the same
+    path as with commas; a bad cell is still named by its line and column."""
+    t, omega, f = motion()
+    names = ("Time (s)", "Acceleration x (m/s^2)", "Acceleration y (m/s^2)", "Acceleration z (m/s^2)",
+             "Gyroscope x (rad/s)", "Gyroscope y (rad/s)", "Gyroscope z (rad/s)")
+    plain = write_log(tmp_path / "plain.csv", t, omega, f, ("right", "forward", "up"), "m/s2", "rad/s", names=names)
+    lines = plain.read_text().splitlines()
+    quoted = ";".join(f'"{n}"' for n in names)
+    (tmp_path / "semi.csv").write_text("\n".join([lines[0], quoted] + [
+        line.replace(",", ";").replace(".", ",") for line in lines[2:]]) + "\n")
+    (tmp_path / "tab.csv").write_text("\n".join([lines[0], quoted.replace(";", "\t")] + [
+        line.replace(",", "\t") for line in lines[2:]]) + "\n")
+    assert "0,01;" in (tmp_path / "semi.csv").read_text()
+    args = ["--time", names[0], "--accel", ",".join(names[1:4]), "--rates", ",".join(names[4:]),
+            "--axes", "right,forward,up", "--accel-unit", "m/s2", "--rate-unit", "rad/s"]
+    paths = []
+    for name in ("plain", "semi", "tab"):
+        assert main(["import", "log", str(tmp_path / f"{name}.csv"), *args, "--out", str(tmp_path / f"{name}-path.csv")]) == 0
+        paths.append(profiles.load(tmp_path / f"{name}-path.csv"))
+    for path in paths[1:]:
+        np.testing.assert_array_equal(path.t, paths[0].t)
+        np.testing.assert_array_equal(path.S_d, paths[0].S_d)
+    capsys.readouterr()
+    bad = (tmp_path / "semi.csv").read_text().splitlines()
+    bad[9] = bad[9].replace(";", ";x", 1)
+    (tmp_path / "bad.csv").write_text("\n".join(bad) + "\n")
+    assert main(["import", "log", str(tmp_path / "bad.csv"), *args, "--out", str(tmp_path / "x.csv")]) == 2
+    err = capsys.readouterr().err
+    assert "line 10: column 'Acceleration x (m/s^2)': 'x" in err and not (tmp_path / "x.csv").exists()
+
+
 def test_crop_and_modulus(tmp_path):
     t, omega, f = motion()
     log = write_log(tmp_path / "log.csv", t, omega, f, ("forward", "right", "down"), "m/s2", "rad/s")

@@ -16,7 +16,9 @@ convention check (where the log is still the force reads +1 g up; without rates,
 from __future__ import annotations
 
 import csv
+import io
 import math
+import re
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -44,6 +46,10 @@ GAP_STEPS = 4.0
 #: log of a row a second), where an undeclared one looks like milliseconds from 0.5 s on; a slower one
 #: cannot hold a motion worth cueing, and is more likely milliseconds declared wrong.
 MAX_DECLARED_STEP = 2.0
+#: A log's cells are split by one of these (:func:`comma_lines`).
+DELIMITERS = (",", ";", "\t")
+#: A number written with a decimal comma, in a log whose cells are not split by commas.
+_DECIMAL_COMMA = re.compile(r"^([+-]?\d*),(\d+(?:[eE][+-]?\d+)?)$")
 #: A log's median step shorter than this [s] (10 kHz) is a time unit declared too large.
 MIN_STEP = 1e-4
 
@@ -105,15 +111,16 @@ def data_lines(file: Path) -> list[tuple[int, str]]:
     """(line number, text) of a UTF-8 CSV's lines other than blank ones and ``#`` comments; the first is
     its header. Where the first such line is all numbers, the header is the nearest ``#`` comment above it
     that names as many columns (a dataset's ``#timestamp [ns],w_RS_S_x [rad s^-1],...``), its ``#``
-    dropped. A file that cannot be read, is not UTF-8, holds no line or no header raises
-    :class:`ProfileError`."""
+    dropped. Cells split by semicolons or tabs, their numbers perhaps with a decimal comma (a European
+    spreadsheet's or phyphox's export), are given as commas and points (:func:`comma_lines`). A file
+    that cannot be read, is not UTF-8, holds no line or no header raises :class:`ProfileError`."""
     try:
         text = file.read_bytes().decode("utf-8-sig")
     except OSError as exc:
         raise ProfileError(f"{file}: cannot read: {exc.strerror or exc}") from None
     except UnicodeDecodeError:
         raise ProfileError(f"{file}: not UTF-8 text; save it as UTF-8 CSV") from None
-    numbered = list(enumerate(text.splitlines(), start=1))
+    numbered = comma_lines(list(enumerate(text.splitlines(), start=1)))
     lines = [(i, line) for i, line in numbered if line.strip() and not line.lstrip().startswith("#")]
     if not lines:
         raise ProfileError(f"{file}: no header and no data")
@@ -131,8 +138,33 @@ def data_lines(file: Path) -> list[tuple[int, str]]:
     return lines
 
 
-def _cells(line: str) -> list[str]:
-    return [c.strip() for c in next(csv.reader([line]), [])]
+def _cells(line: str, delimiter: str = ",") -> list[str]:
+    return [c.strip() for c in next(csv.reader([line], delimiter=delimiter), [])]
+
+
+def comma_lines(numbered: list[tuple[int, str]]) -> list[tuple[int, str]]:
+    """The (line number, text) of a CSV's lines, as they are where commas split its cells; else written
+    anew with commas, and a decimal comma in a number as a point. The delimiter is the one of ``,``,
+    ``;`` and a tab that splits the first two lines other than blank ones and ``#`` comments into as many
+    cells, and into the most (a comma where none splits them into two or more)."""
+    first = [line for _, line in numbered if line.strip() and not line.lstrip().startswith("#")][:2]
+    counts = {d: {len(_cells(line, d)) for line in first} for d in DELIMITERS}
+    delimiter = max(DELIMITERS, key=lambda d: (len(counts[d]) == 1 and max(counts[d], default=0) > 1,
+                                               max(counts[d], default=0), d == ","))
+    if delimiter == "," or not (len(counts[delimiter]) == 1 and max(counts[delimiter]) > 1):
+        return numbered
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="")
+    rewritten = []
+    for number, line in numbered:
+        if line.strip():
+            cells = [_DECIMAL_COMMA.sub(r"\1.\2", c) for c in _cells(line, delimiter)]
+            out.seek(0)
+            out.truncate()
+            writer.writerow(cells)
+            line = out.getvalue()
+        rewritten.append((number, line))
+    return rewritten
 
 
 def _numbers_only(line: str) -> bool:
