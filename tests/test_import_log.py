@@ -90,7 +90,7 @@ def test_semicolons_tabs_and_decimal_commas_give_the_same_path(tmp_path, capsys)
     plain = write_log(tmp_path / "plain.csv", t, omega, f, ("right", "forward", "up"), "m/s2", "rad/s", names=names)
     lines = plain.read_text().splitlines()
     quoted = ";".join(f'"{n}"' for n in names)
-    (tmp_path / "semi.csv").write_text("\n".join([lines[0], quoted] + [
+    (tmp_path / "semi.csv").write_text("\n".join(["# exported by phyphox, 2026", quoted] + [
         line.replace(",", ";").replace(".", ",") for line in lines[2:]]) + "\n")
     (tmp_path / "tab.csv").write_text("\n".join([lines[0], quoted.replace(";", "\t")] + [
         line.replace(",", "\t") for line in lines[2:]]) + "\n")

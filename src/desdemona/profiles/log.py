@@ -144,25 +144,28 @@ def _cells(line: str, delimiter: str = ",") -> list[str]:
 
 def comma_lines(numbered: list[tuple[int, str]]) -> list[tuple[int, str]]:
     """The (line number, text) of a CSV's lines, as they are where commas split its cells; else written
-    anew with commas, and a decimal comma in a number as a point. The delimiter is the one of ``,``,
-    ``;`` and a tab that splits the first two lines other than blank ones and ``#`` comments into as many
-    cells, and into the most (a comma where none splits them into two or more)."""
+    anew with commas (a ``#`` comment's text after its ``#``), a decimal comma in a number as a point.
+    The delimiter is the one of ``,``, ``;`` and a tab that splits the first two lines other than blank
+    ones and ``#`` comments into as many cells, and into the most (a comma where none makes two)."""
     first = [line for _, line in numbered if line.strip() and not line.lstrip().startswith("#")][:2]
-    counts = {d: {len(_cells(line, d)) for line in first} for d in DELIMITERS}
-    delimiter = max(DELIMITERS, key=lambda d: (len(counts[d]) == 1 and max(counts[d], default=0) > 1,
-                                               max(counts[d], default=0), d == ","))
-    if delimiter == "," or not (len(counts[delimiter]) == 1 and max(counts[delimiter]) > 1):
+
+    def cells(delimiter):  # how many cells the first lines have, split by ``delimiter``; 0: not as many
+        counts = {len(_cells(line, delimiter)) for line in first}
+        return counts.pop() if len(counts) == 1 else 0
+
+    delimiter = max(DELIMITERS, key=lambda d: (cells(d), d == ","))
+    if delimiter == "," or cells(delimiter) < 2:
         return numbered
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="")
     rewritten = []
     for number, line in numbered:
+        mark = "#" if line.lstrip().startswith("#") else ""
         if line.strip():
-            cells = [_DECIMAL_COMMA.sub(r"\1.\2", c) for c in _cells(line, delimiter)]
             out.seek(0)
             out.truncate()
-            writer.writerow(cells)
-            line = out.getvalue()
+            writer.writerow([_DECIMAL_COMMA.sub(r"\1.\2", c) for c in _cells(line.lstrip()[len(mark):], delimiter)])
+            line = mark + out.getvalue()
         rewritten.append((number, line))
     return rewritten
 
