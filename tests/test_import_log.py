@@ -179,6 +179,15 @@ def test_kinematic_acceleration_is_not_specific_force(tmp_path, capsys):
     assert main(["import", "log", str(log), "--axes", "right,forward,up", "--accel-unit", "m/s2", "--rate-unit",
                  "rad/s", "--out", str(tmp_path / "x.csv")]) == 2
     assert "kinematic acceleration, not specific force?" in capsys.readouterr().err
+    # without rates the check reads the longest steady stretch: here a held 0.3 g brake, not the rest
+    t = np.arange(0.0, 12.0, 1.0 / RATE)
+    brake = np.clip(t - 1.0, 0.0, 1.0) - np.clip(t - 9.0, 0.0, 1.0)
+    f = np.column_stack([0 * t, -0.3 * G * brake, 0 * t])
+    log = write_log(tmp_path / "linear.csv", t, 0 * f, f, ("right", "forward", "up"), "m/s2", "rad/s")
+    assert main(["import", "log", str(log), "--rates", "none", "--modulus", "--accel-unit", "m/s2", "--out",
+                 str(tmp_path / "x.csv")]) == 2
+    err = capsys.readouterr().err
+    assert "|f| = 0.30 g, far below 1 g at rest: kinematic acceleration" in err and "TotalAcceleration.csv" in err
 
 
 def test_left_handed_axes_are_refused(tmp_path, capsys):
@@ -576,6 +585,25 @@ def test_a_sensor_mounted_at_an_angle_is_levelled(tmp_path):
     assert "turned by 15 deg so that the force reads straight up" in (tmp_path / "level.csv").read_text()
 
 
+def test_level_reads_the_rest_not_a_later_steady_acceleration(tmp_path, capsys):
+    """A car at rest for 3 s, then speeding up at a steady 1.5 m/s^2 for 5 s with no turn: to an
+    accelerometer as still as a rest on a slope, and here stiller (the rest's readings are noisy, the
+    pull's not). --level reads the rest, the first still stretch, and warns of the other, 8.7 deg off."""
+    t = np.arange(0.0, 14.0, 1.0 / RATE)
+    pull = np.clip(t - 3.5, 0.0, 1.0) - np.clip(t - 9.5, 0.0, 1.0)  # up by 4.5 s, down after 9.5 s
+    omega = np.zeros((len(t), 3))
+    f = np.column_stack([0 * t, 1.5 * pull, G + 0 * t])
+    rest = (t < 3.0)[:, None] * np.random.default_rng(3).normal(0.0, 0.05, (len(t), 3))
+    log = dataset_log(tmp_path / "imu.csv", t, omega, f + rest, ("up", "right", "forward"))
+    assert main(["import", "log", str(log), "--time", "timestamp [ns]", *DATASET, "--level",
+                 "--out", str(tmp_path / "x.csv")]) == 0
+    path = profiles.load(tmp_path / "x.csv")
+    assert np.abs(path.S_d[(path.t > 5.0) & (path.t < 9.0), 3:] - [0.0, 1.5, G]).max() < 0.01
+    err = capsys.readouterr().err
+    angle = re.search(r"the first still stretch; from 1400000004.\d+ s to \S+ s it is as still but reads ([0-9.]+) deg", err)
+    assert float(angle[1]) == pytest.approx(math.degrees(math.atan(1.5 / G)), abs=0.05)
+
+
 def test_zero_rates_reads_the_rest_not_a_later_steady_curve(tmp_path):
     """A car at rest for 3 s, then a long steady curve (2.9 deg/s, 0.13 g): the curve is as steady as
     the rest, its rate as constant as a bias. --zero-rates reads the rest, the first still stretch, and
@@ -826,7 +854,14 @@ def test_an_iphones_inertial_force_is_turned_with_inertial(tmp_path, capsys):
     assert main(["import", "log", str(plain), *argv, str(tmp_path / "a.csv")]) == 0
     assert main(["import", "log", str(iphone), *argv, str(tmp_path / "b.csv")]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "-1 g, the force points down" in err and "(an iPhone's): --inertial" in err
+    assert err.count("\n") == 1 and "-1 g, the force points down" in err and "(an iPhone's Core Motion): --inertial" in err
+    assert "the default" not in err
+    # a phone lying flat, read in the default axes (forward,right,down): its own axes named first
+    phone = write_log(tmp_path / "phone.csv", t, omega, f, ("right", "forward", "up"), "m/s2", "rad/s")
+    assert main(["import", "log", str(phone), *argv[:4], "--out", str(tmp_path / "c.csv")]) == 2
+    err = capsys.readouterr().err
+    assert ("(declared forward,right,down for the log's x,y,z, the default, a vehicle's body axes; a phone lying "
+            "flat, screen up, its top forward: --axes right,forward,up); or, where the axes are right") in err
     assert main(["import", "log", str(iphone), "--inertial", *argv, str(tmp_path / "b.csv")]) == 0
     np.testing.assert_allclose(profiles.load(tmp_path / "b.csv").S_d, profiles.load(tmp_path / "a.csv").S_d,
                                atol=1e-12)

@@ -198,7 +198,8 @@ class Still:
 
 
 def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=None,
-               longest: bool = False, biased: bool = False, max_bias: float | None = None) -> Still | None:
+               longest: bool = False, biased: bool = False, max_bias: float | None = None,
+               first: bool = False, every: bool = False) -> Still | list[Still] | None:
     """The stillest stretch of at least :data:`STILL_SECONDS` where the rates are near zero
     (|omega| < ``max_rate`` [rad/s]) and the force nearly constant (RMS about its mean below
     :data:`STILL_SPREAD` of its size plus :data:`STILL_SPREAD_ABS`), or None. Uniform ``t`` [s]; the
@@ -213,7 +214,12 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
     [rad/s] (None: :data:`MAX_GYRO_BIAS`; a gyro's bias: EuRoC's read 4.6 deg/s at rest); the Still
     carries that mean. The stillest second of the first such stretch: a steady turn is as steady as a
     rest, its rate as constant as a bias, and a log starts at rest more often than in a steady turn
-    (a 2.9 deg/s curve after a 3 s rest was taken for the rest)."""
+    (a 2.9 deg/s curve after a 3 s rest was taken for the rest).
+
+    ``first``: the stillest second of the first such stretch, without a bias: a steady acceleration
+    with no turn is as still to an accelerometer as a rest on a slope (a car's 1.5 m/s^2 for 5 s was
+    taken for the rest, for ``--level``). ``every``: the stillest second of each such stretch, in time
+    order (a list, empty where none is)."""
     t = np.asarray(t, dtype=float)
     step = float(np.median(np.diff(t)))
     w = int(round(STILL_SECONDS / step)) + 1
@@ -239,16 +245,19 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
     if usable is not None:
         still &= np.lib.stride_tricks.sliding_window_view(np.asarray(usable, dtype=bool), w).all(axis=1)
     if not np.any(still):
-        return None
-    if longest or biased:  # only the windows of the longest (biased: the first) run of still ones
-        edges = np.flatnonzero(np.diff(np.concatenate([[0], still.astype(int), [0]])))
-        starts, ends = edges[::2], edges[1::2]  # runs of still windows [start, end)
-        j = 0 if biased else int(np.argmax(ends - starts))
-        still = np.zeros_like(still)
-        still[starts[j]:ends[j]] = True
+        return [] if every else None
+    edges = np.flatnonzero(np.diff(np.concatenate([[0], still.astype(int), [0]])))
+    starts, ends = edges[::2], edges[1::2]  # runs of still windows [start, end)
     score = np.where(still, spread / (size + STILL_SPREAD_ABS) + windows_rate / max_rate, np.inf)
-    k = int(np.argmin(score))
-    return Still(float(t[k]), float(t[k + w - 1]), mean[k], omega_mean[k])
+    best = [a + int(np.argmin(score[a:b])) for a, b in zip(starts, ends)]  # the stillest window of each run
+    if every:
+        picked = best
+    elif longest or biased or first:  # the longest (biased, first: the first) run of still windows
+        picked = [best[0 if biased or first else int(np.argmax(ends - starts))]]
+    else:
+        picked = [int(np.argmin(score))]
+    found = [Still(float(t[k]), float(t[k + w - 1]), mean[k], omega_mean[k]) for k in picked]
+    return found if every else found[0]
 
 
 def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0),
@@ -275,9 +284,11 @@ def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0),
     if lo * G <= ratio <= hi * G:
         raise ProfileError(f"{where}: |f| = {size:.3g} m/s^2, 9.81 g: the accelerations are in m/s^2 but "
                            f"declared as g? (--accel-unit m/s2)")
-    if ratio < 0.2:
-        raise ProfileError(f"{where}: about 0 at rest: kinematic acceleration, not specific force? The log "
-                           f"must hold accelerometer readings (specific force, +1 g up at rest)")
+    if ratio < 0.5:
+        raise ProfileError(f"{where}: |f| = {ratio:.2f} g, far below 1 g at rest: kinematic acceleration, not "
+                           f"specific force? (gravity taken out: a phone's linear acceleration, Sensor Logger's "
+                           f"Accelerometer.csv) The log must hold accelerometer readings (specific force, +1 g "
+                           f"up at rest: Sensor Logger's TotalAcceleration.csv)")
     if not lo <= ratio <= hi:
         raise ProfileError(f"{where}: |f| = {ratio:.2f} g at rest, not 1 g: wrong accelerometer unit or scale?")
     if up is None:

@@ -6,6 +6,7 @@ from __future__ import annotations
 import csv
 import io
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -13,6 +14,12 @@ import numpy as np
 from desdemona.profiles.path import (MAX_ANGULAR_VELOCITY, MAX_SPECIFIC_FORCE, MODULUS_COLUMNS, PATH_COLUMNS,
                                      DesiredPath, ProfileError)
 from desdemona.profiles.weights import _weight_numbers
+
+
+#: A log's cells are split by one of these (:func:`comma_lines`).
+DELIMITERS = (",", ";", "\t")
+#: A number written with a decimal comma, in a log whose cells are not split by commas.
+_DECIMAL_COMMA = re.compile(r"^([+-]?\d*),(\d+(?:[eE][+-]?\d+)?)$")
 
 
 def read_csv(path: str | Path) -> DesiredPath:
@@ -183,3 +190,36 @@ def write_csv(path_or_file, path: DesiredPath, comments=()) -> None:
         for t, row in zip(path.t, path.S_d):
             buffer.write(",".join(repr(float(x)) for x in (t, *row)) + "\n")
     Path(path_or_file).write_text(buffer.getvalue())
+
+
+def cells(line: str, delimiter: str = ",") -> list[str]:
+    """The cells of one CSV line, split by ``delimiter``, their blanks stripped."""
+    return [c.strip() for c in next(csv.reader([line], delimiter=delimiter), [])]
+
+
+def comma_lines(numbered: list[tuple[int, str]]) -> list[tuple[int, str]]:
+    """The (line number, text) of a CSV's lines, as they are where commas split its cells; else written
+    anew with commas (a ``#`` comment's text after its ``#``), a decimal comma in a number as a point.
+    The delimiter is the one of ``,``, ``;`` and a tab that splits the first two lines other than blank
+    ones and ``#`` comments into as many cells, and into the most (a comma where none makes two)."""
+    first = [line for _, line in numbered if line.strip() and not line.lstrip().startswith("#")][:2]
+
+    def width(delimiter):  # how many cells the first lines have, split by ``delimiter``; 0: not as many
+        counts = {len(cells(line, delimiter)) for line in first}
+        return counts.pop() if len(counts) == 1 else 0
+
+    delimiter = max(DELIMITERS, key=lambda d: (width(d), d == ","))
+    if delimiter == "," or width(delimiter) < 2:
+        return numbered
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="")
+    rewritten = []
+    for number, line in numbered:
+        mark = "#" if line.lstrip().startswith("#") else ""
+        if line.strip():
+            out.seek(0)
+            out.truncate()
+            writer.writerow([_DECIMAL_COMMA.sub(r"\1.\2", c) for c in cells(line.lstrip()[len(mark):], delimiter)])
+            line = mark + out.getvalue()
+        rewritten.append((number, line))
+    return rewritten

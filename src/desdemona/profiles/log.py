@@ -16,9 +16,7 @@ convention check (where the log is still the force reads +1 g up; without rates,
 from __future__ import annotations
 
 import csv
-import io
 import math
-import re
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -46,10 +44,9 @@ GAP_STEPS = 4.0
 #: log of a row a second), where an undeclared one looks like milliseconds from 0.5 s on; a slower one
 #: cannot hold a motion worth cueing, and is more likely milliseconds declared wrong.
 MAX_DECLARED_STEP = 2.0
-#: A log's cells are split by one of these (:func:`comma_lines`).
-DELIMITERS = (",", ";", "\t")
-#: A number written with a decimal comma, in a log whose cells are not split by commas.
-_DECIMAL_COMMA = re.compile(r"^([+-]?\d*),(\d+(?:[eE][+-]?\d+)?)$")
+#: With ``--level``, the force of a still stretch other than the first that reads more than this [deg]
+#: from up after levelling is warned of (:func:`_level_note`).
+LEVEL_AGREEMENT = 2.0
 #: A log's median step shorter than this [s] (10 kHz) is a time unit declared too large.
 MIN_STEP = 1e-4
 
@@ -112,7 +109,7 @@ def data_lines(file: Path) -> list[tuple[int, str]]:
     its header. Where the first such line is all numbers, the header is the nearest ``#`` comment above it
     that names as many columns (a dataset's ``#timestamp [ns],w_RS_S_x [rad s^-1],...``), its ``#``
     dropped. Cells split by semicolons or tabs, their numbers perhaps with a decimal comma (a European
-    spreadsheet's or phyphox's export), are given as commas and points (:func:`comma_lines`). A file
+    spreadsheet's or phyphox's export), are given as commas and points (:func:`.csvfile.comma_lines`). A file
     that cannot be read, is not UTF-8, holds no line or no header raises :class:`ProfileError`."""
     try:
         text = file.read_bytes().decode("utf-8-sig")
@@ -120,60 +117,28 @@ def data_lines(file: Path) -> list[tuple[int, str]]:
         raise ProfileError(f"{file}: cannot read: {exc.strerror or exc}") from None
     except UnicodeDecodeError:
         raise ProfileError(f"{file}: not UTF-8 text; save it as UTF-8 CSV") from None
-    numbered = comma_lines(list(enumerate(text.splitlines(), start=1)))
+    numbered = csvfile.comma_lines(list(enumerate(text.splitlines(), start=1)))
     lines = [(i, line) for i, line in numbered if line.strip() and not line.lstrip().startswith("#")]
     if not lines:
         raise ProfileError(f"{file}: no header and no data")
     first, row = lines[0]
     if _numbers_only(row):  # no header line: a comment above may name the columns (EuRoC's "#timestamp [ns],...")
         comments = [(i, line.lstrip()[1:]) for i, line in reversed(numbered[:first - 1]) if line.strip()]
-        named = [(i, c) for i, c in comments if len(_cells(c)) > 1 and not _numbers_only(c)]
-        header = next(((i, c) for i, c in named if len(_cells(c)) == len(_cells(row))), None)
+        named = [(i, c) for i, c in comments if len(csvfile.cells(c)) > 1 and not _numbers_only(c)]
+        header = next(((i, c) for i, c in named if len(csvfile.cells(c)) == len(csvfile.cells(row))), None)
         if header is None:
-            near = f": the '#' comment at line {named[0][0]} names {len(_cells(named[0][1]))} columns, the rows have " \
-                f"{len(_cells(row))}" if named else ""
+            near = f": the '#' comment at line {named[0][0]} names {len(csvfile.cells(named[0][1]))} columns, the rows have " \
+                f"{len(csvfile.cells(row))}" if named else ""
             raise ProfileError(f"{file}: line {first}: numbers where the header should be{near}; the first line "
                                f"that is not a '#' comment, or a '#' comment above the rows, must name the columns")
         lines[0:0] = [header]
     return lines
 
 
-def _cells(line: str, delimiter: str = ",") -> list[str]:
-    return [c.strip() for c in next(csv.reader([line], delimiter=delimiter), [])]
-
-
-def comma_lines(numbered: list[tuple[int, str]]) -> list[tuple[int, str]]:
-    """The (line number, text) of a CSV's lines, as they are where commas split its cells; else written
-    anew with commas (a ``#`` comment's text after its ``#``), a decimal comma in a number as a point.
-    The delimiter is the one of ``,``, ``;`` and a tab that splits the first two lines other than blank
-    ones and ``#`` comments into as many cells, and into the most (a comma where none makes two)."""
-    first = [line for _, line in numbered if line.strip() and not line.lstrip().startswith("#")][:2]
-
-    def cells(delimiter):  # how many cells the first lines have, split by ``delimiter``; 0: not as many
-        counts = {len(_cells(line, delimiter)) for line in first}
-        return counts.pop() if len(counts) == 1 else 0
-
-    delimiter = max(DELIMITERS, key=lambda d: (cells(d), d == ","))
-    if delimiter == "," or cells(delimiter) < 2:
-        return numbered
-    out = io.StringIO()
-    writer = csv.writer(out, lineterminator="")
-    rewritten = []
-    for number, line in numbered:
-        mark = "#" if line.lstrip().startswith("#") else ""
-        if line.strip():
-            out.seek(0)
-            out.truncate()
-            writer.writerow([_DECIMAL_COMMA.sub(r"\1.\2", c) for c in _cells(line.lstrip()[len(mark):], delimiter)])
-            line = mark + out.getvalue()
-        rewritten.append((number, line))
-    return rewritten
-
-
 def _numbers_only(line: str) -> bool:
     """Whether every cell of a CSV line reads as a number (a row of data, not a header)."""
     try:
-        [float(c) for c in _cells(line)]
+        [float(c) for c in csvfile.cells(line)]
     except ValueError:
         return False
     return True
@@ -192,14 +157,14 @@ def read_log(file: str | Path, columns: list[str], time: str | None = None) -> t
     the log's columns)."""
     file = Path(file)
     lines = data_lines(file)
-    header = _cells(lines[0][1])
+    header = csvfile.cells(lines[0][1])
     given, columns = columns, [c[1:].strip() if c not in header and c.startswith("#") else c for c in columns]
     missing = [c for c in columns if c not in header]
     if missing:
         raise ProfileError(f"{file}: no column{'s' if len(missing) > 1 else ''} {', '.join(map(repr, missing))}; "
                            f"the log's columns are {', '.join(header)} (name them with --time, --accel, --rates)")
     index = [header.index(c) for c in columns]
-    first = _cells(lines[1][1]) if len(lines) > 1 else []
+    first = csvfile.cells(lines[1][1]) if len(lines) > 1 else []
     column = index[given.index(time)] if time in given else -1
     when = clock.when(first[column]) if 0 <= column < len(first) and not _numbers_only(first[column]) else None
     time_reader = (clock.number_reader("is not a number, nor an ISO 8601 date and time (2023-08-04 17:47:58-04:00)")
@@ -282,6 +247,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
         if level:
             turn = convert.levelling(still.f_cabin)
             X = np.column_stack([X[:, :3] @ turn.T, X[:, 3:] @ turn.T])
+            notes = notes + _level_note(t, X, still, logged, origin, dated, turn)
     lo, t, X = _cropped(file, t, X, start, end, origin, dated)
     convert.check_no_crash(origin + lo + t, X[:, 3:], str(file))
     a, b = origin + lo, origin + lo + float(t[-1])
@@ -466,8 +432,10 @@ def _convention_checked(file: Path, fmt: LogFormat, t, X, logged, origin: float,
     the convention check has passed: +1 g up, or 1 g in whatever direction without rates, over the
     longest steady stretch (:func:`.convert.find_still`), never across a gap (:func:`measured`). With
     ``level`` the force may lie up to :data:`.convert.MAX_TILT_DEG` from up (a sensor mounted at an
-    angle; without it :data:`.convert.UP_TOLERANCE_DEG`, a vehicle parked on a slope)."""
-    still = convert.find_still(t, X[:, :3], X[:, 3:], usable=measured(t, logged), longest=fmt.rates is None)
+    angle; without it :data:`.convert.UP_TOLERANCE_DEG`, a vehicle parked on a slope), and the stretch
+    is the first still one (a log starts at rest; a steady acceleration is as still, ``first``)."""
+    still = convert.find_still(t, X[:, :3], X[:, 3:], usable=measured(t, logged), longest=fmt.rates is None,
+                               first=level)
     if still is None:
         steady, what = ("a steady force", "units") if fmt.rates is None else \
             (f"rates below {math.degrees(convert.STILL_RATE):g} deg/s and a steady force", "axes and units")
@@ -477,17 +445,36 @@ def _convention_checked(file: Path, fmt: LogFormat, t, X, logged, origin: float,
                            f"--no-check")
     try:
         convert.check_convention(replace(still, t0=origin + still.t0, t1=origin + still.t1),
-                                 ",".join(fmt.axes) + " for the log's x,y,z",
+                                 ",".join(fmt.axes) + " for the log's x,y,z" + (
+                                     ", the default, a vehicle's body axes; a phone lying flat, screen up, its "
+                                     "top forward: --axes right,forward,up" if fmt.axes == LogFormat.axes else ""),
                                  up=None if fmt.rates is None else (0.0, 0.0, 1.0),
                                  tolerance=convert.MAX_TILT_DEG if level else convert.UP_TOLERANCE_DEG,
                                  tilt_fix="" if level else
                                  f"; --level turns a sensor mounted at up to {convert.MAX_TILT_DEG:g} deg upright",
-                                 down_fix="" if fmt.inertial else "; or the readings are the inertial force, -1 g "
-                                 "up at rest (an iPhone's): --inertial",
+                                 down_fix="" if fmt.inertial else "; or, where the axes are right, the readings "
+                                 "are the inertial force, -1 g up at rest (an iPhone's Core Motion): --inertial",
                                  when=(lambda x: clock.text(x, True)) if dated else None)
     except ProfileError as exc:
         raise ProfileError(f"{file}: {exc}") from None
     return still
+
+
+def _level_note(t, X, still: convert.Still, logged, origin: float, dated: bool, turn) -> list[str]:
+    """A warning where a still stretch of the levelled log (``X``, turned by ``turn``) other than the
+    first, which ``--level`` read (``still``), reads more than :data:`LEVEL_AGREEMENT` from straight up:
+    the farthest of them. One of the two is a steady acceleration or a slope, not the rest."""
+    others = convert.find_still(t, X[:, :3], X[:, 3:], usable=measured(t, logged), every=True)
+    off = [(math.degrees(math.acos(min(1.0, float(s.f_cabin[2] / np.linalg.norm(s.f_cabin))))), s) for s in others]
+    angle, other = max(off, key=lambda pair: pair[0], default=(0.0, None))
+    if angle <= LEVEL_AGREEMENT:
+        return []
+    tilt = math.degrees(math.acos(min(1.0, float(turn[2, 2]))))
+    when = lambda x: clock.text(origin + x, dated)  # noqa: E731
+    return [f"--level turned the log by {tilt:.3g} deg to read straight up from {when(still.t0)} to "
+            f"{when(still.t1)}, the first still stretch; from {when(other.t0)} to {when(other.t1)} it is as "
+            f"still but reads {angle:.3g} deg from up: one of them is a steady acceleration or a slope, not "
+            f"the rest (crop the log with --start to begin at rest)"]
 
 
 def _rates_hint(fmt: LogFormat, t, X, logged, origin: float, dated: bool = False) -> str:
