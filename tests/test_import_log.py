@@ -113,6 +113,23 @@ def test_semicolons_tabs_and_decimal_commas_give_the_same_path(tmp_path, capsys)
     assert "line 10: column 'Acceleration x (m/s^2)': 'x" in err and not (tmp_path / "x.csv").exists()
 
 
+def test_an_x_plane_data_file_reads_as_the_same_motion(tmp_path):
+    """X-Plane's Data.txt: cells split by '|' and padded, names that hold a comma ('Gload,axial'),
+    given to --accel and --rates separated by ';': the same path as the plain log."""
+    t, omega, f = motion()
+    axes = ("forward", "right", "down")
+    plain = write_log(tmp_path / "plain.csv", t, omega, f, axes, "g", "rad/s")
+    names = ["_real,_time", "Gload,axial", "Gload,_side", "Gload,norml", "____P,rad/s", "____Q,rad/s", "____R,rad/s"]
+    rows = [line.split(",") for line in plain.read_text().splitlines()[2:]]
+    (tmp_path / "Data.txt").write_text("".join(f"{n:>14}|" for n in names) + " \n" + "".join(
+        "".join(f"{cell:>14}|" for cell in row) + " \n" for row in rows))
+    args = ["--accel-unit", "g", "--rate-unit", "rad/s", "--axes", ",".join(axes)]
+    assert main(["import", "log", str(plain), *args, "--out", str(tmp_path / "a.csv")]) == 0
+    assert main(["import", "log", str(tmp_path / "Data.txt"), *args, "--time", names[0], "--accel",
+                 ";".join(names[1:4]), "--rates", ";".join(names[4:]), "--out", str(tmp_path / "b.csv")]) == 0
+    np.testing.assert_array_equal(profiles.load(tmp_path / "b.csv").S_d, profiles.load(tmp_path / "a.csv").S_d)
+
+
 def test_crop_and_modulus(tmp_path):
     t, omega, f = motion()
     log = write_log(tmp_path / "log.csv", t, omega, f, ("forward", "right", "down"), "m/s2", "rad/s")

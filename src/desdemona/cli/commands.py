@@ -352,7 +352,7 @@ def run_import_log(args) -> int:
         lever_arm = tuple(float(x) for x in args.lever_arm.split(","))
     except ValueError:
         raise UserError(f"--lever-arm {args.lever_arm!r}: give three numbers x,y,z in metres") from None
-    names = lambda text: tuple(c.strip() for c in text.split(","))  # noqa: E731
+    names = lambda text: tuple(c.strip() for c in text.split(";" if ";" in text else ","))  # noqa: E731
     rates = None if args.rates.strip().lower() == "none" else names(args.rates)
     if rates is not None and args.rate_unit is None:
         raise UserError("--rate-unit deg/s or rad/s: the unit of the rate columns "

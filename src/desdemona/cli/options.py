@@ -262,10 +262,11 @@ def _add_import_parser(sub) -> None:
     lg.add_argument("file", metavar="FILE", help="CSV log, the first non-# line naming the columns")
     lg.add_argument("--time", default="t", metavar="COL", help="time column (default: t)")
     lg.add_argument("--accel", default="ax,ay,az", metavar="X,Y,Z",
-                    help="accelerometer columns, the log's x,y,z (default: ax,ay,az)")
+                    help="accelerometer columns, the log's x,y,z (default: ax,ay,az); names that hold a comma "
+                         "(X-Plane's 'Gload,axial') separated by ';'")
     lg.add_argument("--rates", default="p,q,r", metavar="X,Y,Z",
-                    help="angular rate columns, the log's x,y,z (default: p,q,r); none for a log without "
-                         "them (with --modulus)")
+                    help="angular rate columns, the log's x,y,z (default: p,q,r), or separated by ';'; none "
+                         "for a log without them (with --modulus)")
     lg.add_argument("--rates-file", default=None, metavar="FILE", dest="rates_file",
                     help="a second CSV log holding the --rates columns, on the same clock (a phone logger's "
                          "gyroscope file beside its accelerometer's); its rates are interpolated onto FILE's "

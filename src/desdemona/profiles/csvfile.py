@@ -16,8 +16,8 @@ from desdemona.profiles.path import (MAX_ANGULAR_VELOCITY, MAX_SPECIFIC_FORCE, M
 from desdemona.profiles.weights import _weight_numbers
 
 
-#: A log's cells are split by one of these (:func:`comma_lines`).
-DELIMITERS = (",", ";", "\t")
+#: A log's cells are split by one of these (:func:`comma_lines`; ``|``: X-Plane's Data.txt).
+DELIMITERS = (",", ";", "\t", "|")
 #: A number written with a decimal comma, in a log whose cells are not split by commas.
 _DECIMAL_COMMA = re.compile(r"^([+-]?\d*),(\d+(?:[eE][+-]?\d+)?)$")
 
@@ -200,7 +200,7 @@ def cells(line: str, delimiter: str = ",") -> list[str]:
 def comma_lines(numbered: list[tuple[int, str]]) -> list[tuple[int, str]]:
     """The (line number, text) of a CSV's lines, as they are where commas split its cells; else written
     anew with commas (a ``#`` comment's text after its ``#``), a decimal comma in a number as a point.
-    The delimiter is the one of ``,``, ``;`` and a tab that splits the first two lines other than blank
+    The delimiter is the one of :data:`DELIMITERS` that splits the first two lines other than blank
     ones and ``#`` comments into as many cells, and into the most (a comma where none makes two)."""
     first = [line for _, line in numbered if line.strip() and not line.lstrip().startswith("#")][:2]
 
