@@ -659,15 +659,16 @@ def test_a_sensor_tilted_beyond_the_check_is_named_and_levelled(tmp_path, capsys
                                atol=1e-3 * G)
 
 
-def dated_log(file, t, omega, f, axes, first="2023-08-04 17:47:58-04:00", sep=" "):
+def dated_log(file, t, omega, f, axes, first="2023-08-04 17:47:58-04:00", sep=" ", layout=None):
     """The motion with its time as ISO 8601 dates and times from ``first`` (a pandas export's, a phone
-    logger's), in the log's axes, forces [m/s^2] and rates [rad/s]."""
+    logger's; or in the strftime ``layout``), in the log's axes, forces [m/s^2] and rates [rad/s]."""
     R = convert.axes_rotation(axes)
     start = datetime.fromisoformat(first)
     with open(file, "w") as out:
         out.write("time,ax,ay,az,p,q,r\n")
         for ti, a, w in zip(t, f @ R, omega @ R):
-            when = (start + timedelta(seconds=float(ti))).isoformat(sep=sep)
+            moment = start + timedelta(seconds=float(ti))
+            when = moment.isoformat(sep=sep) if layout is None else moment.strftime(layout)[:-3]  # ms
             out.write(when + "," + ",".join(repr(float(x)) for x in (*a, *w)) + "\n")
     return file
 
@@ -683,8 +684,9 @@ def test_a_log_stamped_with_dates_reads_as_the_same_motion(tmp_path, capsys):
     plain = write_log(tmp_path / "plain.csv", t, omega, f, axes, "m/s2", "rad/s")
     assert main(["import", "log", str(plain), *DATED[2:], "--out", str(tmp_path / "a.csv")]) == 0
     a = profiles.load(tmp_path / "a.csv")
-    for k, first in enumerate(("2023-08-04 17:47:58-04:00", "2023-08-04T21:47:58")):
-        log = dated_log(tmp_path / f"dated{k}.csv", t, omega, f, axes, first, sep=first[10])
+    for k, (first, layout) in enumerate((("2023-08-04 17:47:58-04:00", None), ("2023-08-04T21:47:58", None),
+                                         ("2023-08-04T21:47:58", "%d-%b-%Y %H:%M:%S.%f"))):  # MATLAB's
+        log = dated_log(tmp_path / f"dated{k}.csv", t, omega, f, axes, first, sep=first[10], layout=layout)
         out = tmp_path / f"b{k}.csv"
         assert main(["import", "log", str(log), *DATED, "--out", str(out)]) == 0
         b = profiles.load(out)
@@ -734,7 +736,7 @@ def test_a_cell_that_cannot_be_read_is_named_by_its_column(tmp_path, capsys):
     excel = tmp_path / "excel.csv"  # a spreadsheet's dates are not ISO 8601: the message shows the form read
     excel.write_text("\n".join([lines[0]] + [line.replace("2023-08-04 ", "04.08.2023 ") for line in lines[1:]]) + "\n")
     assert main(["import", "log", str(excel), *DATED, "--out", str(tmp_path / "x.csv")]) == 2
-    assert "is not a number, nor an ISO 8601 date and time (2023-08-04 17:47:58-04:00)" in capsys.readouterr().err
+    assert "is not a number, nor a date and time (ISO 8601's 2023-08-04 17:47:58-04:00, MATLAB's" in capsys.readouterr().err
     assert not (tmp_path / "x.csv").exists()
 
 

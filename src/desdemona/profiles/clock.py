@@ -31,19 +31,31 @@ _DECIMAL = re.compile(r"[+-]?(\d+)(?:\.(\d*))?")
 
 
 def date_seconds(text: str) -> float | None:
-    """Seconds since 1970 of an ISO 8601 date and time (``2023-08-04 17:47:58-04:00``,
+    """Seconds since 1970 of a date and time (:func:`when`: ``2023-08-04 17:47:58-04:00``,
     ``2023-08-04T21:47:58.25Z``; one without a UTC offset is taken as UTC), or None where ``text`` is
     not one."""
     moment = when(text)
     return None if moment is None else utc(moment).timestamp()
 
 
+#: Dates and times as other tools write them, besides ISO 8601: MATLAB's default datetime
+#: (``04-Aug-2023 21:47:58.250``, what ``writetimetable`` writes), with and without its fraction.
+OTHER_DATES = ("%d-%b-%Y %H:%M:%S.%f", "%d-%b-%Y %H:%M:%S")
+
+
 def when(text: str) -> datetime | None:
-    """The date and time ``text`` writes in ISO 8601, or None."""
+    """The date and time ``text`` writes in ISO 8601 or one of :data:`OTHER_DATES`, or None."""
+    text = text.strip()
     try:
-        return datetime.fromisoformat(text.strip())
+        return datetime.fromisoformat(text)
     except ValueError:
-        return None
+        pass
+    for layout in OTHER_DATES:
+        try:
+            return datetime.strptime(text, layout)
+        except ValueError:
+            continue
+    return None
 
 
 def utc(moment: datetime) -> datetime:

@@ -167,7 +167,8 @@ def read_log(file: str | Path, columns: list[str], time: str | None = None) -> t
     first = csvfile.cells(lines[1][1]) if len(lines) > 1 else []
     column = index[given.index(time)] if time in given else -1
     when = clock.when(first[column]) if 0 <= column < len(first) and not _numbers_only(first[column]) else None
-    time_reader = (clock.number_reader("is not a number, nor an ISO 8601 date and time (2023-08-04 17:47:58-04:00)")
+    time_reader = (clock.number_reader("is not a number, nor a date and time (ISO 8601's 2023-08-04 17:47:58-04:00, "
+                                       "MATLAB's 04-Aug-2023 21:47:58.250)")
                    if when is None else clock.date_reader(when.tzinfo is not None))
     parsers = [time_reader if k == column else clock.number_reader("is not a number") for k in index]
     rows, counts = [], clock.Counts() if column >= 0 and when is None else None
