@@ -48,3 +48,15 @@ def test_unreachable_targets_of_dfs(params):
     assert report["above_steady_limit"]["share_of_time"] == pytest.approx(0.491, abs=0.002)
     assert "unreachable target" in sizing.describe(report)
     assert sizing.unreachable(profiles.dfs_catapult(), model) == {"below_g": None, "above_steady_limit": None}
+
+
+def test_a_rest_logged_at_standard_gravity_is_not_below_g(params):
+    """A phone's log at rest reads 9.80665 m/s^2 and its noise: below the model's g (9.81) by less than
+    the vertical force's perception threshold (0.28 m/s^2), not counted as unreachable; a dip of 0.4 is."""
+    t = np.linspace(0.0, 10.0, 1001)
+    noisy = 9.80665 + 0.05 * np.random.default_rng(0).standard_normal(len(t))
+    for config in ("dfs", "yaw-track-cabin", "full"):
+        model = Model(params, config)
+        assert sizing.unreachable(profiles.DesiredPath("x", t, None, modulus=noisy), model)["below_g"] is None
+        dip = np.where((t > 4.0) & (t < 6.0), params.gravity - 0.4, noisy)
+        assert sizing.unreachable(profiles.DesiredPath("x", t, None, modulus=dip), model)["below_g"] is not None

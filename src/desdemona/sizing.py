@@ -19,6 +19,7 @@ import numpy as np
 
 from desdemona.configs import Configuration
 from desdemona.model import Model
+from desdemona.perception import THRESHOLDS
 from desdemona.problem import ProblemOptions
 from desdemona.profiles import DesiredPath
 
@@ -207,13 +208,15 @@ def unreachable(path: DesiredPath, model: Model) -> dict:
     Returns {"below_g": ..., "above_steady_limit": ...}, each None or {"share_of_time": fraction of the
     path's duration, "worst_m_s2": the most extreme desired modulus, "limit_m_s2": the bound}. Where the
     heave is held (``dfs``) every sample below g counts; elsewhere (the heave can drop for a moment) and for the upper
-    bound, the desired modulus averaged over :data:`STEADY_WINDOW` seconds.
+    bound, the desired modulus averaged over :data:`STEADY_WINDOW` seconds. A modulus below g by no
+    more than the vertical force's perception threshold (0.28 m/s^2) is not counted: no one feels it
+    (a logged rest reads standard gravity, 9.80665, and the sensor's noise around it).
     """
     g = float(model.params.gravity)
     t = path.t
     M = path.M_d
     steady = held_modulus(path)
-    low = (M if 2 not in model.config.free else steady) < g * (1.0 - 1e-6)  # without the heave: always
+    low = (M if 2 not in model.config.free else steady) < g - THRESHOLDS[5]  # without the heave: always
     limit = steady_modulus_limit(model)
     high = steady > limit * (1.0 + 1e-6)
     return {"below_g": _share(t, M, low, g, np.min), "above_steady_limit": _share(t, M, high, limit, np.max)}
