@@ -44,6 +44,23 @@ def test_unknown_configuration_lists_valid_ones(capsys):
         assert name in err
 
 
+def test_a_misspelt_option_gets_its_commands_usage_and_the_nearest_name(tmp_path, capsys):
+    """An option a command does not know is refused by that command, with its usage and the option
+    nearest to it; an abbreviation of an option is refused too, not taken for it."""
+    out = str(tmp_path / "r")
+    for argv, words in ((["online", "catapult", "--predicter", "hold", "--out", out],
+                         "unrecognized arguments: --predicter hold (did you mean --predictor?)"),
+                        (["online", "catapult", "--conf", "dfs", "--out", out],
+                         "unrecognized arguments: --conf dfs (did you mean --config?)"),
+                        (["import", "log", "a.csv", "--accel-unit", "g", "--out", out, "--levle"],
+                         "unrecognized arguments: --levle (did you mean --level?)")):
+        assert main(argv) == 2
+        err = capsys.readouterr().err
+        assert err.startswith(f"usage: desdemona {' '.join(argv[:2 if argv[0] == 'import' else 1])} ")
+        assert words in err.splitlines()[-1]
+    assert not (tmp_path / "r").exists()
+
+
 def test_bad_parameter_file(tmp_path, capsys):
     path = tmp_path / "p.toml"
     path.write_text("[joints.track]\nvelocity = 3\n")

@@ -4,6 +4,7 @@ what runs it in :mod:`desdemona.cli.commands`."""
 from __future__ import annotations
 
 import argparse
+import difflib
 
 from desdemona import __version__, session
 from desdemona import perception as perception_models
@@ -14,8 +15,26 @@ from desdemona.params import BUILTIN_SETS
 from desdemona.predictors import LIVE
 
 
+class _Parser(argparse.ArgumentParser):
+    """A parser that takes no abbreviation of an option (``--conf`` is not ``--config``) and refuses an
+    argument it does not know itself, so that a command's misspelt option gets that command's usage and
+    the nearest option's name, not the top-level usage."""
+
+    def __init__(self, *args, **kwargs):
+        kwargs.setdefault("allow_abbrev", False)
+        super().__init__(*args, **kwargs)
+
+    def parse_known_args(self, args=None, namespace=None):
+        namespace, extra = super().parse_known_args(args, namespace)
+        if extra:
+            known = [o for action in self._actions for o in action.option_strings]
+            near = difflib.get_close_matches(extra[0].split("=")[0], known, n=1) if extra[0].startswith("-") else []
+            self.error(f"unrecognized arguments: {' '.join(extra)}" + (f" (did you mean {near[0]}?)" if near else ""))
+        return namespace, extra
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="desdemona", epilog=EXIT_CODES, formatter_class=argparse.RawDescriptionHelpFormatter,
         description="Optimal motion cueing for the Desdemona simulator.")
     parser.add_argument("--version", action="version", version=f"desdemona {__version__}")
