@@ -154,7 +154,7 @@ def test_import_line_says_six_channels_or_modulus(tmp_path, capsys):
     assert "samples, modulus (t,M), peak" in capsys.readouterr().out
 
 
-def test_headline_prints_no_negative_zero_lag():
+def test_headline_prints_no_negative_zero_lag_and_marks_the_search_edge():
     from dataclasses import replace
 
     from desdemona import metrics
@@ -164,3 +164,7 @@ def test_headline_prints_no_negative_zero_lag():
     m = metrics.of_arrays(t, S, S + 0.01 * np.cos(3 * t)[:, None], np.zeros((201, 1)), np.zeros((201, 1)), ["yaw"])
     assert "lag 0.00 s" in replace(m, lag_s=np.full(6, -0.001)).headline()
     assert "lag -0.01 s" in replace(m, lag_s=np.full(6, -0.01)).headline()
+    # at the search's edge the lag is that long or longer (or none fits), and said so
+    assert "lag >= 2.00 s (the search's edge)" in replace(m, lag_s=np.full(6, 2.0)).headline()
+    assert "lag <= -2.00 s (the search's edge)" in replace(m, lag_s=np.full(6, -2.0)).headline()
+    assert "lag 1.85 s" in replace(m, lag_s=np.full(6, 1.85)).headline()

@@ -429,6 +429,13 @@ class Metrics:
             "felt_rotation_peak_deg_s": _degrees(np.max(self.rotation_peak)),
         }
 
+    def _lag(self, lag: float) -> str:
+        """``lag 0.12 s``, or where the search found its best at its window's edge, which says only that
+        the lag is that long or longer (or no lag fits): ``lag >= 2.00 s (the search's edge)``."""
+        if abs(lag) < self.lag_window_s - 1e-9:
+            return f"lag {lag:z.2f} s"
+        return f"lag {'>=' if lag > 0 else '<='} {lag:z.2f} s (the search's edge)"
+
     def headline(self) -> str:
         """One line of the figures a rider and an operator look at first."""
         parts = []
@@ -436,7 +443,7 @@ class Metrics:
             i = int(np.argmax(self.rms))
             parts.append(f"worst RMS {self.rms[i]:.3g} {CHANNEL_UNITS[i]} ({CHANNELS[i]})")
             if np.isfinite(self.correlation[i]):
-                parts.append(f"correlation {self.correlation[i]:.2f}, lag {self.lag_s[i]:z.2f} s ({CHANNELS[i]})")
+                parts.append(f"correlation {self.correlation[i]:.2f}, {self._lag(self.lag_s[i])} ({CHANNELS[i]})")
             i = int(np.argmax(self.above_threshold_pct))
             parts.append(f"felt above threshold {self.above_threshold_pct[i]:.0f}% of the time ({CHANNELS[i]})")
             rotation = self.peak_false_cue[:3]
@@ -446,7 +453,7 @@ class Metrics:
         elif self.modulus_rms is not None:
             parts.append(f"RMS(M - M_d) {self.modulus_rms:.3g} m/s^2")
             if self.modulus_correlation is not None and np.isfinite(self.modulus_correlation):
-                parts.append(f"correlation {self.modulus_correlation:.2f}, lag {self.modulus_lag_s:z.2f} s")
+                parts.append(f"correlation {self.modulus_correlation:.2f}, {self._lag(self.modulus_lag_s)}")
             i = int(np.argmax(self.rotation_peak))
             parts.append(f"peak felt rotation {math.degrees(self.rotation_peak[i]):.3g} deg/s ({CHANNELS[i]})")
         if np.isfinite(self.direction_rms):
