@@ -41,7 +41,7 @@ def test_draw_online_sets_the_mpc_beside_the_classical_loop(tmp_path):
     backend = matplotlib.get_backend()
     limits = SimpleNamespace(effort=np.array([3e5]), power=np.array([6e5]))
     result = SimpleNamespace(trajectory=trajectory(False), baseline=trajectory(False, 2.0),
-                             model=SimpleNamespace(limits=limits, config=SimpleNamespace(name="dfs")),
+                             model=SimpleNamespace(limits=limits, config=SimpleNamespace(name="dfs", joint_names=("yaw",))),
                              path=SimpleNamespace(name="test"), loop=SimpleNamespace(compute_times=np.full(10, 1e-3)),
                              deadline=0.01, quality=SimpleNamespace(vestibular="thesis"))
     names = {p.name for p in figures.draw_online(result, tmp_path)}

@@ -210,33 +210,39 @@ def draw_online(result, out_dir: str | Path) -> list[Path]:
     lim = result.model.limits
     return draw_online_run(result.trajectory, result.baseline, lim.effort, lim.power, result.loop.compute_times,
                            result.deadline, f"{result.path.name} on-line, {result.model.config.name}",
-                           result.quality.vestibular, out_dir)
+                           result.quality.vestibular, out_dir, result.model.config.joint_names)
 
 
 def draw_online_run(traj, classical, effort, power, compute_times, deadline: float, title: str, vestibular,
-                    out_dir: str | Path) -> list[Path]:
+                    out_dir: str | Path, joints=None) -> list[Path]:
     """The figures of :func:`draw_online` from the values a result folder keeps: the MPC's and the
     classical loop's (or None) trajectories, the free joints' effort [N*m | N] and power [W] limits,
-    each cycle's compute time [s], the deadline [s] and the vestibular model's name."""
+    each cycle's compute time [s], the deadline [s], the vestibular model's name and the free joints'
+    names (the limits' legends)."""
     out = Path(out_dir)
     fig = _figure(figsize=(11, 9))
     axes = fig.subplots(3, 2, sharex=True)
-    axes[0, 0].plot(traj.t, traj.M_d, "k-", label="M_d")
+    axes[0, 0].plot(traj.t, traj.M_d, "k-", label="M_d (desired)")
     axes[0, 0].plot(traj.t, traj.M, "C0--", label="M (MPC)")
     axes[1, 0].plot(traj.t, traj.M_d - traj.M, "C0", label="M_d - M (MPC)")
     if classical is not None:
-        axes[0, 0].plot(classical.t, classical.M, "C3:", label="M_org (classical loop)")
-        axes[1, 0].plot(classical.t, classical.M_d - classical.M, "C3:", label="M_d - M_org")
+        axes[0, 0].plot(classical.t, classical.M, "C3:", label="M (classical loop)")
+        axes[1, 0].plot(classical.t, classical.M_d - classical.M, "C3:", label="M_d - M (classical loop)")
     axes[0, 0].set_ylabel("modulus [m/s^2]")
     axes[1, 0].set_ylabel("error [m/s^2]")
-    axes[0, 1].plot(traj.t, traj.S[:, 3], label="S_x")
-    axes[1, 1].plot(traj.t, traj.S[:, 4], label="S_y")
-    axes[0, 1].set_ylabel("S_x [m/s^2]")
-    axes[1, 1].set_ylabel("S_y [m/s^2]")
-    axes[2, 0].plot(traj.t, traj.tau / np.asarray(effort))
-    axes[2, 0].set_ylabel("force / max")
-    axes[2, 1].plot(traj.t, traj.power / np.asarray(power))
-    axes[2, 1].set_ylabel("power / max")
+    for ax, k, name in ((axes[0, 1], 3, "S_x"), (axes[1, 1], 4, "S_y")):
+        if traj.S_d is not None:
+            ax.plot(traj.t, traj.S_d[:, k], "k-", label=f"{name}_d (desired)")
+        ax.plot(traj.t, traj.S[:, k], "C0--", label=f"{name} (MPC)")
+        if classical is not None:
+            ax.plot(classical.t, classical.S[:, k], "C3:", label=f"{name} (classical loop)")
+        ax.set_ylabel(f"{name} [m/s^2]")
+    names = list(joints) if joints is not None else [None] * traj.tau.shape[1]
+    for ax, values, limit, label in ((axes[2, 0], traj.tau, effort, "force / max"),
+                                     (axes[2, 1], traj.power, power, "power / max")):
+        for k, name in enumerate(names):
+            ax.plot(traj.t, values[:, k] / limit[k], label=name)
+        ax.set_ylabel(label)
     for ax in axes.ravel():
         ax.grid(alpha=0.3)
         if ax.get_legend_handles_labels()[0]:

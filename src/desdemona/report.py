@@ -423,7 +423,7 @@ def redraw_online(traj: Trajectory, summary: dict, out_dir: str | Path) -> list[
     return figures.draw_online_run(
         traj, classical, [limits[j]["effort"] for j in joints], [limits[j]["power"] for j in joints], times,
         summary["cycles"]["deadline_s"], f"{summary['path']['name']} on-line, {summary['configuration']['name']}",
-        (summary.get("quality") or {}).get("vestibular_model"), out)
+        (summary.get("quality") or {}).get("vestibular_model"), out, joints)
 
 
 def _plain(value):
