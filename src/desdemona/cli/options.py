@@ -28,7 +28,7 @@ class _Parser(argparse.ArgumentParser):
         namespace, extra = super().parse_known_args(args, namespace)
         if extra:
             known = [o for action in self._actions for o in action.option_strings]
-            near = difflib.get_close_matches(extra[0].split("=")[0], known, n=1) if extra[0].startswith("-") else []
+            near = difflib.get_close_matches(extra[0].split("=")[0], known, n=1, cutoff=0.75) if extra[0].startswith("-") else []
             self.error(f"unrecognized arguments: {' '.join(extra)}" + (f" (did you mean {near[0]}?)" if near else ""))
         return namespace, extra
 
