@@ -108,9 +108,10 @@ def data_lines(file: Path) -> list[tuple[int, str]]:
     """(line number, text) of a UTF-8 CSV's lines other than blank ones and ``#`` comments; the first is
     its header. Where the first such line is all numbers, the header is the nearest ``#`` comment above it
     that names as many columns (a dataset's ``#timestamp [ns],w_RS_S_x [rad s^-1],...``), its ``#``
-    dropped. Cells split by semicolons or tabs, their numbers perhaps with a decimal comma (a European
-    spreadsheet's or phyphox's export), are given as commas and points (:func:`.csvfile.comma_lines`). A file
-    that cannot be read, is not UTF-8, holds no line or no header raises :class:`ProfileError`."""
+    dropped. Cells split by semicolons, tabs or ``|``, their numbers perhaps with a decimal comma (a
+    European spreadsheet's, phyphox's, X-Plane's export), are given as commas and points
+    (:func:`.csvfile.comma_lines`). A file that cannot be read, is not UTF-8, holds no line or no header
+    raises :class:`ProfileError`."""
     try:
         text = file.read_bytes().decode("utf-8-sig")
     except OSError as exc:
