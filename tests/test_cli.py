@@ -1,5 +1,7 @@
 """The command line: exit codes, messages and the model summary; how a run starts and ends."""
 
+import contextlib
+import io
 import os
 
 import numpy as np
@@ -75,10 +77,13 @@ QUICK = ["--config", "yaw-track", "--starts", "1", "--h-u", "0.1"]
 
 @pytest.fixture(scope="module")
 def session_folder(tmp_path_factory):
-    """The cosine from rest (the default) to rest, with numeric weights and a gain."""
+    """The cosine from rest (the default) to rest, with numeric weights and a gain; its printed line
+    says how it ends (an on-line run ends free)."""
     out = tmp_path_factory.mktemp("session") / "cosine"
-    assert main(["optimize", "cosine", *QUICK, "--final", "rest", "--weights", "0,0,1,0,1,0", "--gain", "0.5",
-                 "--out", str(out)]) == 0
+    with contextlib.redirect_stdout(io.StringIO()) as printed:
+        assert main(["optimize", "cosine", *QUICK, "--final", "rest", "--weights", "0,0,1,0,1,0", "--gain", "0.5",
+                     "--out", str(out)]) == 0
+    assert ", ends still (--final rest)" in printed.getvalue()
     return out
 
 

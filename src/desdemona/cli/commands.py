@@ -120,8 +120,9 @@ def run_optimize(args) -> int:
     if model.config.aligned:
         perceived += f", RMS(M - M_d) = {c.rms_modulus:.4g}"
     solver = f"solver {result.solution.status}" + ("" if result.converged else " (NOT CONVERGED)")
+    ends = FINAL_WORDS.get(problem.final, "")  # an on-line run ends free: on a short path the end weighs
     print(f"{path.name} on {model.config.name}: RMS = {c.rms:.4g}{perceived}, worst limit use "
-          f"{c.worst_use:.4f}, {solver}, {result.timings['wall']:.2f} s{sizing.describe(unreachable)}; "
+          f"{c.worst_use:.4f}, {solver}, {result.timings['wall']:.2f} s{ends}{sizing.describe(unreachable)}; "
           f"written to {out}")
     print(f"  felt: {result.quality.headline()}")
     return 0 if result.converged else EXIT_NOT_CONVERGED
@@ -339,6 +340,11 @@ def run_import_jsbsim(args) -> int:
     path, comments = jsbsim.from_jsbsim(args.script, args.start, args.end, args.rate, args.modulus)
     _say_imported(convert.write_path(args.out, path, comments, args.overwrite), path)
     return 0
+
+
+#: How an off-line plan ends, for its printed line (``optimize --final``; "none" says nothing).
+FINAL_WORDS = {"centre": ", ends still with the track and heave centred (--final centre)",
+               "rest": ", ends still (--final rest)"}
 
 
 def run_import_log(args) -> int:
