@@ -284,7 +284,14 @@ def test_bad_rows_and_time(tmp_path, capsys):
     log.write_text("t,ax,ay,az,p,q,r\n0,0,0,-1,0,0,0\n0.1,0,0,-1,0,0,0\n0.1,0,0,-1,0,0,0\n")
     assert main(["import", "log", str(log), "--accel-unit", "g", "--rate-unit", "deg/s", "--out",
                  str(tmp_path / "x.csv")]) == 2
-    assert "does not increase" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert "does not increase" in err and "interleaved" not in err
+    # two IMUs' rows interleaved, each pair at one instant (ArduPilot's IMU messages, instances 0 and 1)
+    rows = [f"{0.01 * (k // 2):.2f},0,0,-1,0,0,0" for k in range(400)]
+    log.write_text("t,ax,ay,az,p,q,r\n" + "\n".join(rows) + "\n")
+    assert main(["import", "log", str(log), "--accel-unit", "g", "--rate-unit", "deg/s", "--out",
+                 str(tmp_path / "x.csv")]) == 2
+    assert "so on 200 of its 399 steps: the rows of two sensors interleaved" in capsys.readouterr().err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["log.csv"]
 
 

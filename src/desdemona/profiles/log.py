@@ -292,9 +292,11 @@ def _read_clock(file: Path, fmt: LogFormat, columns: list[str],
     data[fmt.time] = t
     steps = np.diff(t)
     if np.any(steps <= 0):
-        k = int(np.argmax(steps <= 0))
+        k, back = int(np.argmax(steps <= 0)), int(np.sum(steps <= 0))
+        many = (f"; so on {back} of its {len(steps)} steps: the rows of two sensors interleaved (an IMU instance "
+                f"column, ArduPilot's I)? keep one sensor's rows") if back >= max(10, 0.1 * len(steps)) else ""
         raise ProfileError(f"{file}: column {fmt.time!r}: time {clock.text(origin + t[k + 1], dated)} at data row "
-                           f"{k + 2} does not increase (previous {clock.text(origin + t[k], dated)})")
+                           f"{k + 2} does not increase (previous {clock.text(origin + t[k], dated)}){many}")
     _check_time_unit(file, fmt, t, origin, "; --time-unit is the unit of both files' clocks" if both else "")
     return origin, data, dated, [] if dated else _unit_note(fmt, origin)
 
