@@ -170,6 +170,6 @@ def test_headline_prints_no_negative_zero_lag_and_marks_the_search_edge():
     assert "lag 0.00 s" in replace(m, lag_s=np.full(6, -0.001)).headline()
     assert "lag -0.01 s" in replace(m, lag_s=np.full(6, -0.01)).headline()
     # at the search's edge the lag is that long or longer (or none fits), and said so
-    assert "lag >= 2.00 s (the search's edge)" in replace(m, lag_s=np.full(6, 2.0)).headline()
-    assert "lag <= -2.00 s (the search's edge)" in replace(m, lag_s=np.full(6, -2.0)).headline()
+    assert "lag >= 2.00 s at the search's edge (wz)" in replace(m, lag_s=np.full(6, 2.0)).headline()
+    assert "lag <= -2.00 s at the search's edge (wz)" in replace(m, lag_s=np.full(6, -2.0)).headline()
     assert "lag 1.85 s" in replace(m, lag_s=np.full(6, 1.85)).headline()

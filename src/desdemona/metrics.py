@@ -431,10 +431,10 @@ class Metrics:
 
     def _lag(self, lag: float) -> str:
         """``lag 0.12 s``, or where the search found its best at its window's edge, which says only that
-        the lag is that long or longer (or no lag fits): ``lag >= 2.00 s (the search's edge)``."""
+        the lag is that long or longer (or no lag fits): ``lag >= 2.00 s at the search's edge``."""
         if abs(lag) < self.lag_window_s - 1e-9:
             return f"lag {lag:z.2f} s"
-        return f"lag {'>=' if lag > 0 else '<='} {lag:z.2f} s (the search's edge)"
+        return f"lag {'>=' if lag > 0 else '<='} {lag:z.2f} s at the search's edge"
 
     def headline(self) -> str:
         """One line of the figures a rider and an operator look at first."""
