@@ -234,3 +234,16 @@ def test_script_output_files_are_not_written(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     assert main(["import", "jsbsim", "737_cruise", "--start", "1", "--end", "2", "--out", "c.csv"]) == 0
     assert set(root.iterdir()) == before and [p.name for p in tmp_path.iterdir()] == ["c.csv"]
+
+
+def test_a_script_that_runs_again_gives_its_first_run(tmp_path, capsys):
+    """c172_elevation_test sets its clock back to 0 after 300 s to take off again from another
+    elevation (a series of runs): its first run is the path, and the warning says so (it was refused
+    with 'nothing between 0.31 s and 0 s', the crop read on a clock gone back)."""
+    out = tmp_path / "elevation.csv"
+    assert main(["import", "jsbsim", "c172_elevation_test", "--out", str(out)]) == 0
+    err = capsys.readouterr().err
+    assert "warning: the script sets its clock back at 300 s of sim time to run again" in err
+    path = profiles.load(out)
+    assert path.duration == pytest.approx(299.69, abs=0.01) and np.all(np.diff(path.t) > 0)
+    assert "# warning: the script sets its clock back" in out.read_text()

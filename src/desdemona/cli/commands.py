@@ -338,7 +338,7 @@ def run_import_jsbsim(args) -> int:
         raise UserError("import jsbsim needs SCRIPT: a shipped script's name (see --list) or a script file")
     convert.check_out(args.out, args.overwrite)  # before the flight is flown
     path, comments = jsbsim.from_jsbsim(args.script, args.start, args.end, args.rate, args.modulus)
-    _say_imported(convert.write_path(args.out, path, comments, args.overwrite), path)
+    _say_imported(convert.write_path(args.out, path, comments, args.overwrite), path, args.script, comments)
     return 0
 
 
@@ -367,18 +367,19 @@ def run_import_log(args) -> int:
                         args.time_unit, names(args.axes), lever_arm, args.rates_file, args.inertial)
     path, comments = log.from_log(args.file, fmt, args.start, args.end, args.rate, args.modulus, args.check,
                                   args.to_g, args.zero_rates, args.level)
-    _say_imported(convert.write_path(args.out, path, comments, args.overwrite), path)
-    for line in comments:
-        if line.startswith("warning: "):
-            print(f"{args.file}: {line}", file=sys.stderr)
+    _say_imported(convert.write_path(args.out, path, comments, args.overwrite), path, args.file, comments)
     return 0
 
 
-def _say_imported(out: Path, path: profiles.DesiredPath) -> None:
+def _say_imported(out: Path, path: profiles.DesiredPath, source=None, comments=()) -> None:
+    """The imported path's line, and on stderr each of its ``warning:`` comments, named by ``source``."""
     peak = float(np.max(path.M_d)) / profiles.G
     print(f"{out}: {path.duration:.6g} s, {len(path.t)} samples, "
           f"{'modulus (t,M)' if path.S_d is None else 'six channels'}, "
           f"peak |f| {peak:.2f} g")
+    for line in comments:
+        if line.startswith("warning: "):
+            print(f"{source}: {line}", file=sys.stderr)
 
 
 def run_plot(args) -> int:

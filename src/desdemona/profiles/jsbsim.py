@@ -87,7 +87,9 @@ class Flight:
     (N, 3) [m/s^2] at the pilot station, body axes (x forward, y right, z down), ``attitude`` (N, 2)
     [rad] bank and pitch (phi, theta), ``trimmed`` (N,) bool: a trim has completed (:data:`TRIMMED`);
     ``ahead``: the runs ahead with the controls held (:func:`fly`), (t [s], rows (n, 9): t, p, q, r, the
-    pilot station's force [g], phi, theta) each."""
+    pilot station's force [g], phi, theta) each; ``reset``: where the script set its clock back to run
+    again (a series of runs, c172_elevation_test's), the sim time [s] its first run ended, which is all
+    that is kept; None where it did not."""
 
     script: Path
     aircraft: str
@@ -98,6 +100,7 @@ class Flight:
     attitude: np.ndarray
     trimmed: np.ndarray | None = None
     ahead: tuple = ()
+    reset: float | None = None
 
 
 @contextlib.contextmanager
@@ -187,9 +190,12 @@ def fly(script: str | Path, end: float | None = None, ahead: tuple[np.ndarray, f
                     props = [manager.get_node(name) for name in RATES + FORCE + ATTITUDE]
                     trimmed = manager.get_node(TRIMMED)  # None if this JSBSim has no such property
                     times, seconds = (np.zeros(0), 0.0) if ahead is None else (np.asarray(ahead[0]), ahead[1])
-                    past_end, runs, issued = _script_end(path) + 1.0, [], 0
+                    past_end, runs, issued, reset = _script_end(path) + 1.0, [], 0, None
                     while fdm.run():  # sampled after each step: before the first, no accelerations
                         t = fdm.get_sim_time()
+                        if rows and t < rows[-1][0] - 0.5 * fdm.get_delta_t():  # the script reset the run
+                            reset = rows[-1][0]
+                            break
                         rows.append([t, *(node.get_double_value() for node in props),
                                      trimmed.get_double_value() if trimmed is not None else 0.0])
                         half_step = 0.5 * fdm.get_delta_t()
@@ -212,7 +218,7 @@ def fly(script: str | Path, end: float | None = None, ahead: tuple[np.ndarray, f
     keep = np.concatenate([np.diff(data[:, 0]) > 0, [True]])  # a trim may repeat a time: its last sample
     data = data[keep]
     return Flight(path, aircraft, jsbsim.__version__, data[:, 0], data[:, 1:4], data[:, 4:7] * G, data[:, 7:9],
-                  data[:, 9] > 0.5, tuple(runs))
+                  data[:, 9] > 0.5, tuple(runs), reset)
 
 
 def _run_ahead(fdm, nodes, seconds: float, past_end: float) -> np.ndarray:
@@ -369,6 +375,9 @@ def _path_of(flight: Flight, start: float | None, end: float | None, rate: float
                 f"source: crop {span} of sim time (t = 0 here; start {why}), "
                 f"{convert.filter_note(1 / float(np.median(np.diff(flight.t))), rate)}"
                 + ("; modulus |f| only" if modulus else "")]
+    if flight.reset is not None:
+        comments.append(f"warning: the script sets its clock back at {flight.reset:.4g} s of sim time to run "
+                        f"again (a series of runs): its first run only")
     return path, comments
 
 
