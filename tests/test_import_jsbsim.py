@@ -2,6 +2,7 @@
 shipped scripts; JSBSim computes 100 s of flight in about 0.25 s)."""
 
 import sys
+import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -247,3 +248,20 @@ def test_a_script_that_runs_again_gives_its_first_run(tmp_path, capsys):
     path = profiles.load(out)
     assert path.duration == pytest.approx(299.69, abs=0.01) and np.all(np.diff(path.t) > 0)
     assert "# warning: the script sets its clock back" in out.read_text()
+
+
+def test_a_flight_in_real_time_ends_where_its_script_runs_again():
+    """The real-time host's flight (``host jsbsim``) of the same script stops at the clock's reset too:
+    its samples stay in time order, as the stream's interpolation needs."""
+    from desdemona.service import hosts
+
+    lib = jsbsim._jsbsim()
+    path = jsbsim.script_file("c172_elevation_test").resolve()
+    root = Path(lib.get_default_root_dir())
+    aircraft, initialize = jsbsim._script_use(path)
+    init = jsbsim._initialization_file(path, root, aircraft, initialize)
+    with tempfile.TemporaryDirectory() as tmp, jsbsim._quiet(str(Path(tmp) / "jsbsim.log")):
+        flight = hosts._Flight(hosts._open(lib, root, path, init, tmp), lib, None)
+        flight.advance(400.0)
+    assert flight.ended.startswith("the script's clock going back at 300 s to run again")
+    assert np.all(np.diff(flight.t) > 0) and flight.t[-1] == pytest.approx(300.0, abs=0.01)

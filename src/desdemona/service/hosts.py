@@ -207,6 +207,10 @@ class _Flight:
                 self.ended = "the script's end"
                 break
             t = self.fdm.get_sim_time()
+            if self.t and t < self.t[-1] - 0.5 * self.fdm.get_delta_t():  # as the import: the first run only
+                self.ended = (f"the script's clock going back at {self.t[-1]:.4g} s to run again (a series of "
+                              f"runs): its first run only")
+                break
             values = [node.get_double_value() for node in self.props]
             row = values[:3] + [v * G for v in values[3:]]
             force = math.sqrt(sum(v * v for v in row[3:]))
