@@ -199,7 +199,7 @@ class Still:
 
 def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=None,
                longest: bool = False, biased: bool = False, max_bias: float | None = None,
-               first: bool = False, every: bool = False) -> Still | list[Still] | None:
+               every: bool = False) -> Still | list[Still] | None:
     """The stillest stretch of at least :data:`STILL_SECONDS` where the rates are near zero
     (|omega| < ``max_rate`` [rad/s]) and the force nearly constant (RMS about its mean below
     :data:`STILL_SPREAD` of its size plus :data:`STILL_SPREAD_ABS`), or None. Uniform ``t`` [s]; the
@@ -216,10 +216,9 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
     rest, its rate as constant as a bias, and a log starts at rest more often than in a steady turn
     (a 2.9 deg/s curve after a 3 s rest was taken for the rest).
 
-    ``first``: the stillest second of the first such stretch, without a bias: a steady acceleration
-    with no turn is as still to an accelerometer as a rest on a slope (a car's 1.5 m/s^2 for 5 s was
-    taken for the rest, for ``--level``). ``every``: the stillest second of each such stretch, in time
-    order (a list, empty where none is)."""
+    ``every``: the stillest second of each such stretch, in time order (a list, empty where none is;
+    ``--level`` reads the first: a steady acceleration with no turn is as still to an accelerometer as a
+    rest on a slope, and a car's 1.5 m/s^2 for 5 s was taken for the rest)."""
     t = np.asarray(t, dtype=float)
     step = float(np.median(np.diff(t)))
     w = int(round(STILL_SECONDS / step)) + 1
@@ -252,8 +251,8 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
     best = [a + int(np.argmin(score[a:b])) for a, b in zip(starts, ends)]  # the stillest window of each run
     if every:
         picked = best
-    elif longest or biased or first:  # the longest (biased, first: the first) run of still windows
-        picked = [best[0 if biased or first else int(np.argmax(ends - starts))]]
+    elif longest or biased:  # the longest (biased: the first) run of still windows
+        picked = [best[0 if biased else int(np.argmax(ends - starts))]]
     else:
         picked = [int(np.argmin(score))]
     found = [Still(float(t[k]), float(t[k + w - 1]), mean[k], omega_mean[k]) for k in picked]

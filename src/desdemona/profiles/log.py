@@ -242,14 +242,15 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     t, X = convert.resample(t, X, rate)
     scale = 1.0
     if check:
-        still = _convention_checked(file, fmt, t, X, logged, origin, level, dated)
+        still, later = _convention_checked(file, fmt, t, X, logged, origin, level, dated)
         if to_g:
             scale = G / float(np.linalg.norm(still.f_cabin))
             X[:, 3:] *= scale
         if level:
             turn = convert.levelling(still.f_cabin)
+            tilt = math.degrees(math.acos(min(1.0, float(turn[2, 2]))))
             X = np.column_stack([X[:, :3] @ turn.T, X[:, 3:] @ turn.T])
-            notes = notes + _level_note(t, X, still, logged, origin, dated, turn)
+            notes = notes + _level_note(still, later, turn, tilt, origin, dated)
     lo, t, X = _cropped(file, t, X, start, end, origin, dated)
     convert.check_no_crash(origin + lo + t, X[:, 3:], str(file))
     a, b = origin + lo, origin + lo + float(t[-1])
@@ -257,7 +258,6 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     path = convert.make_path(file.stem, t, X[:, :3], X[:, 3:], f"log {file.name}, {span}", modulus)
     changes = [f"readings scaled by {scale:.4f} to read 1 g where still (--to-g)"] if to_g else []
     if level:
-        tilt = math.degrees(math.acos(min(1.0, float(turn[2, 2]))))
         changes.append(f"turned by {tilt:.3g} deg so that the force reads straight up where still (--level)")
     if bias is not None:
         rates = ", ".join(f"{math.degrees(x):.3g}" for x in bias.omega_cabin)
@@ -430,16 +430,21 @@ def gyro_bias(file: Path, fmt: LogFormat, t, X, rate: float, logged, origin: flo
     return still
 
 
-def _convention_checked(file: Path, fmt: LogFormat, t, X, logged, origin: float,
-                        level: bool = False, dated: bool = False) -> convert.Still:
+def _convention_checked(file: Path, fmt: LogFormat, t, X, logged, origin: float, level: bool = False,
+                        dated: bool = False) -> tuple[convert.Still, list[convert.Still]]:
     """The still stretch of the log's grid (``t``, ``X`` = omega, f in the cabin frame), whose force
     the convention check has passed: +1 g up, or 1 g in whatever direction without rates, over the
-    longest steady stretch (:func:`.convert.find_still`), never across a gap (:func:`measured`). With
-    ``level`` the force may lie up to :data:`.convert.MAX_TILT_DEG` from up (a sensor mounted at an
-    angle; without it :data:`.convert.UP_TOLERANCE_DEG`, a vehicle parked on a slope), and the stretch
-    is the first still one (a log starts at rest; a steady acceleration is as still, ``first``)."""
-    still = convert.find_still(t, X[:, :3], X[:, 3:], usable=measured(t, logged), longest=fmt.rates is None,
-                               first=level)
+    longest steady stretch (:func:`.convert.find_still`), never across a gap (:func:`measured`); and the
+    later still stretches where ``level`` reads the first (else none). With ``level`` the force may lie
+    up to :data:`.convert.MAX_TILT_DEG` from up (a sensor mounted at an angle; without it
+    :data:`.convert.UP_TOLERANCE_DEG`, a vehicle parked on a slope), and the stretch is the first still
+    one: a log starts at rest, and a steady acceleration is as still (:func:`_level_note`)."""
+    usable = measured(t, logged)
+    if level:
+        later = convert.find_still(t, X[:, :3], X[:, 3:], usable=usable, every=True)
+        still, later = (later[0], later[1:]) if later else (None, [])
+    else:
+        still, later = convert.find_still(t, X[:, :3], X[:, 3:], usable=usable, longest=fmt.rates is None), []
     if still is None:
         steady, what = ("a steady force", "units") if fmt.rates is None else \
             (f"rates below {math.degrees(convert.STILL_RATE):g} deg/s and a steady force", "axes and units")
@@ -461,19 +466,20 @@ def _convention_checked(file: Path, fmt: LogFormat, t, X, logged, origin: float,
                                  when=(lambda x: clock.text(x, True)) if dated else None)
     except ProfileError as exc:
         raise ProfileError(f"{file}: {exc}") from None
-    return still
+    return still, later
 
 
-def _level_note(t, X, still: convert.Still, logged, origin: float, dated: bool, turn) -> list[str]:
-    """A warning where a still stretch of the levelled log (``X``, turned by ``turn``) other than the
-    first, which ``--level`` read (``still``), reads more than :data:`LEVEL_AGREEMENT` from straight up:
-    the farthest of them. One of the two is a steady acceleration or a slope, not the rest."""
-    others = convert.find_still(t, X[:, :3], X[:, 3:], usable=measured(t, logged), every=True)
-    off = [(math.degrees(math.acos(min(1.0, float(s.f_cabin[2] / np.linalg.norm(s.f_cabin))))), s) for s in others]
+def _level_note(still: convert.Still, later: list[convert.Still], turn, tilt: float, origin: float,
+                dated: bool) -> list[str]:
+    """A warning where a still stretch after the first, which ``--level`` read (``still``) and turned
+    ``tilt`` [deg] by ``turn`` to read straight up, reads more than :data:`LEVEL_AGREEMENT` from up once
+    turned (``later``, as found before the turn: a turn changes no stretch's stillness): the farthest of
+    them. One of the two is a steady acceleration or a slope, not the rest."""
+    off = [(math.degrees(math.acos(min(1.0, float((turn @ s.f_cabin)[2] / np.linalg.norm(s.f_cabin))))), s)
+           for s in later]
     angle, other = max(off, key=lambda pair: pair[0], default=(0.0, None))
     if angle <= LEVEL_AGREEMENT:
         return []
-    tilt = math.degrees(math.acos(min(1.0, float(turn[2, 2]))))
     when = lambda x: clock.text(origin + x, dated)  # noqa: E731
     return [f"--level turned the log by {tilt:.3g} deg to read straight up from {when(still.t0)} to "
             f"{when(still.t1)}, the first still stretch; from {when(other.t0)} to {when(other.t1)} it is as "
