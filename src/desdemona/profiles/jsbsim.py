@@ -192,13 +192,12 @@ def fly(script: str | Path, end: float | None = None, ahead: tuple[np.ndarray, f
                     times, seconds = (np.zeros(0), 0.0) if ahead is None else (np.asarray(ahead[0]), ahead[1])
                     past_end, runs, issued, reset = _script_end(path) + 1.0, [], 0, None
                     while fdm.run():  # sampled after each step: before the first, no accelerations
-                        t = fdm.get_sim_time()
-                        if rows and t < rows[-1][0] - 0.5 * fdm.get_delta_t():  # the script reset the run
+                        t, half_step = fdm.get_sim_time(), 0.5 * fdm.get_delta_t()
+                        if rows and t < rows[-1][0] - half_step:  # the script reset the run
                             reset = rows[-1][0]
                             break
                         rows.append([t, *(node.get_double_value() for node in props),
                                      trimmed.get_double_value() if trimmed is not None else 0.0])
-                        half_step = 0.5 * fdm.get_delta_t()
                         if issued < len(times) and t >= times[issued] - half_step:  # the step nearest it
                             runs.append((t, _run_ahead(fdm, props, seconds, past_end)))
                             issued = int(np.searchsorted(times, t + half_step, side="right"))
