@@ -256,10 +256,7 @@ def test_a_flight_in_real_time_ends_where_its_script_runs_again():
     from desdemona.service import hosts
 
     lib = jsbsim._jsbsim()
-    path = jsbsim.script_file("c172_elevation_test").resolve()
-    root = Path(lib.get_default_root_dir())
-    aircraft, initialize = jsbsim._script_use(path)
-    init = jsbsim._initialization_file(path, root, aircraft, initialize)
+    path, root, _, init = jsbsim.script_setup("c172_elevation_test")
     with tempfile.TemporaryDirectory() as tmp, jsbsim._quiet(str(Path(tmp) / "jsbsim.log")):
         flight = hosts._Flight(hosts._open(lib, root, path, init, tmp), lib, None)
         flight.advance(400.0)

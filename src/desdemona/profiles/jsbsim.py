@@ -160,6 +160,16 @@ def _script_use(script: Path) -> tuple[str, str]:
     return use.get("aircraft"), use.get("initialize", "")
 
 
+def script_setup(script: str | Path) -> tuple[Path, Path, str, str]:
+    """What JSBSim needs to load a script (a shipped one by name, or a file): its resolved path (JSBSim
+    reads a relative one from its own root folder), JSBSim's root folder, the script's aircraft and its
+    initialization file."""
+    path = script_file(script).resolve()
+    root = Path(_jsbsim().get_default_root_dir())
+    aircraft, initialize = _script_use(path)
+    return path, root, aircraft, _initialization_file(path, root, aircraft, initialize)
+
+
 def fly(script: str | Path, end: float | None = None, ahead: tuple[np.ndarray, float] | None = None) -> Flight:
     """Run a JSBSim script (a shipped one by name, or a file) as fast as it computes, up to its own end
     or ``end`` [s] of sim time, sampling every step. JSBSim's printing is silenced.
@@ -167,10 +177,7 @@ def fly(script: str | Path, end: float | None = None, ahead: tuple[np.ndarray, f
     ``ahead`` = (times [s of sim time], seconds): at the step nearest each time, the model is
     also run ``seconds`` ahead with the pilot's controls held (:func:`_run_ahead`), into ``Flight.ahead``."""
     jsbsim = _jsbsim()
-    path = script_file(script).resolve()  # JSBSim reads a relative path from its own root folder
-    root = Path(jsbsim.get_default_root_dir())
-    aircraft, initialize = _script_use(path)
-    init = _initialization_file(path, root, aircraft, initialize)
+    path, root, aircraft, init = script_setup(script)
     rows = []
     failure = None
     with tempfile.TemporaryDirectory() as tmp:

@@ -308,10 +308,7 @@ def jsbsim(script: str | Path, to: tuple[str, int], speed: float = 1.0, forecast
     step = 1.0 / rate
     n = _forecast_samples(forecast, step, 1 if modulus else 6)
     lib = _flights._jsbsim()  # ProfileError with the install hint without the jsbsim package
-    path = _flights.script_file(script).resolve()  # JSBSim reads a relative path from its own root folder
-    root = Path(lib.get_default_root_dir())
-    aircraft, initialize = _flights._script_use(path)
-    init = _flights._initialization_file(path, root, aircraft, initialize)
+    path, root, aircraft, init = _flights.script_setup(script)
     with tempfile.TemporaryDirectory() as tmp:
         log = os.path.join(tmp, "jsbsim.log")
         with _flights._quiet(log):  # JSBSim's banner and the script's notify events: into the log
