@@ -250,6 +250,16 @@ def test_a_script_that_runs_again_gives_its_first_run(tmp_path, capsys):
     assert "# warning: the script sets its clock back" in out.read_text()
 
 
+def test_an_end_past_the_scripts_end_is_told(tmp_path, capsys):
+    """``--end`` beyond the script's last step (c1723 flies 200 s) gives the whole flight, and says so
+    on stderr and in the file instead of passing it over."""
+    out = tmp_path / "c1723.csv"
+    assert main(["import", "jsbsim", "c1723", "--end", "60000", "--out", str(out)]) == 0
+    assert "warning: --end 60000 s is past the script's end at 200 s of sim time" in capsys.readouterr().err
+    assert "# warning: --end 60000 s" in out.read_text()
+    assert profiles.load(out).duration == pytest.approx(199.69, abs=0.01)
+
+
 def test_a_flight_in_real_time_ends_where_its_script_runs_again():
     """The real-time host's flight (``host jsbsim``) of the same script stops at the clock's reset too:
     its samples stay in time order, as the stream's interpolation needs."""

@@ -94,6 +94,37 @@ def test_bad_csv_names_the_problem(tmp_path, text, fragment):
     assert fragment in str(info.value) and "bad.csv" in str(info.value)
 
 
+def _turn(rate, force=9.81, seconds=3.0):
+    """A path turning steadily at ``rate`` about z with ``force`` up, sampled at 10 Hz."""
+    return "t,wx,wy,wz,fx,fy,fz\n" + "".join(f"{k / 10},0,0,{rate},0,1,{force}\n"
+                                            for k in range(int(seconds * 10) + 1))
+
+
+@pytest.mark.parametrize("text, fragment", [
+    (_turn(33.0), "line 2: |omega| stays above 10 rad/s for 3 s (up to 33): rates in deg/s?"),
+    (_turn(0.5, 1.0).replace(",0,1,1.0", ",0,0.2,1.0"), "|f| has a median of 1.02 and never exceeds 1.02 m/s^2"),
+    ("t,M\n" + "".join(f"{k / 10},{1 + 0.1 * (k % 3)}\n" for k in range(31)), "M has a median of 1.1"),
+])
+def test_a_path_in_degrees_per_second_or_in_g_is_refused(tmp_path, text, fragment):
+    """Units a user mixes up in a hand-made path, inside the gross limits: a paraglider's spiral at
+    33 deg/s written as rad/s, forces or a modulus written in g."""
+    path = tmp_path / "bad.csv"
+    path.write_text(text)
+    with pytest.raises(ProfileError) as info:
+        read_csv(path)
+    assert fragment in str(info.value)
+
+
+def test_a_real_spin_and_a_weightless_crop_are_read(tmp_path):
+    """Not taken for a unit mistake: a spin at 3 rad/s for 3 s, a brief 12 rad/s flick (under a second)
+    and a weightless stretch (|f| near 0)."""
+    flick = _turn(3.0).replace("\n1.0,0,0,3.0,", "\n1.0,0,0,12.0,").replace("\n1.5,0,0,3.0,", "\n1.5,0,0,12.0,")
+    weightless = "t,M\n" + "".join(f"{k / 10},{0.05 * (k % 2)}\n" for k in range(31))
+    for name, text in (("spin", _turn(3.0)), ("flick", flick), ("weightless", weightless)):
+        (tmp_path / f"{name}.csv").write_text(text)
+        read_csv(tmp_path / f"{name}.csv")
+
+
 def test_columns_in_any_order_and_a_byte_order_mark(tmp_path):
     """Columns are read by name (a spreadsheet may reorder them) and the UTF-8 mark it writes is skipped."""
     reordered = "fz,t,fy,fx,wz,wy,wx\n9.81,0,0,0,0,0,0\n9.81,0.1,1,0,0,0,0.5\n9.81,0.2,2,0,0,0,0\n"

@@ -12,9 +12,16 @@ from pathlib import Path
 import numpy as np
 
 from desdemona.profiles.path import (MAX_ANGULAR_VELOCITY, MAX_SPECIFIC_FORCE, MODULUS_COLUMNS, PATH_COLUMNS,
-                                     DesiredPath, ProfileError)
+                                     DesiredPath, G, ProfileError)
 from desdemona.profiles.weights import _weight_numbers
 
+
+#: |omega| [rad/s] that a path may not keep for :data:`SUSTAINED_FOR` [s] or longer: rates in deg/s.
+MAX_SUSTAINED_RATE = 10.0
+SUSTAINED_FOR = 1.0
+#: The median of |f| [m/s^2] of a path written in g (with at most half a g in all): 1 g within the
+#: tolerance of a log's rest (:data:`.convert.MAGNITUDE_TOLERANCE`).
+G_LIKE_MEDIAN = (0.8, 1.25)
 
 #: A log's cells are split by one of these (:func:`comma_lines`; ``|``: X-Plane's Data.txt).
 DELIMITERS = (",", ";", "\t", "|")
@@ -28,7 +35,8 @@ def read_csv(path: str | Path) -> DesiredPath:
 
     Strict: every problem (missing or unknown column, a value that is not a finite number, time not
     strictly increasing, fewer than two rows, a negative modulus, |f| above 100 g, |omega| above
-    50 rad/s, a time column that looks like milliseconds) raises :class:`ProfileError` naming the file
+    50 rad/s or above 10 rad/s for a second, forces that read like g, a time column that looks like
+    milliseconds) raises :class:`ProfileError` naming the file
     and the line or column.
     """
     path = Path(path)
@@ -93,12 +101,10 @@ def read_csv(path: str | Path) -> DesiredPath:
             k = int(np.argmax(negative))
             raise ProfileError(f"{path}: line {lines[k + 1][0]}: M = {data[k, 1]:g} m/s^2 is negative; the "
                                f"modulus |f| is >= 0")
-        _check_magnitude(path, lines, data[:, 1:2], "M", MAX_SPECIFIC_FORCE, "m/s^2")
+        _check_units(path, lines, t, data[:, 1:2], None)
         return DesiredPath(name, t - t[0], None, modulus=data[:, 1], description=f"read from {path.name}")
-    _check_magnitude(path, lines, np.linalg.norm(data[:, 4:7], axis=1, keepdims=True), "|f|",
-                     MAX_SPECIFIC_FORCE, "m/s^2")
-    _check_magnitude(path, lines, np.linalg.norm(data[:, 1:4], axis=1, keepdims=True), "|omega|",
-                     MAX_ANGULAR_VELOCITY, "rad/s")
+    _check_units(path, lines, t, np.linalg.norm(data[:, 4:7], axis=1, keepdims=True),
+                 np.linalg.norm(data[:, 1:4], axis=1, keepdims=True))
     return DesiredPath(name, t - t[0], data[:, 1:], weights=weights, description=f"read from {path.name}")
 
 
@@ -171,6 +177,42 @@ def _check_magnitude(path, lines, values, label, limit, unit):
         k = int(np.argmax(over))
         raise ProfileError(f"{path}: line {lines[k + 1][0]}: {label} = {values[k, 0]:.4g} {unit} is above "
                            f"{limit:.4g} {unit}: wrong units? (SI: rad/s and m/s^2 expected)")
+
+
+def _check_units(path, lines, t, force, rate):
+    """Refuse magnitudes of the wrong units: ``force`` (K, 1) [m/s^2], |f| or M (``rate`` None), and
+    ``rate`` (K, 1) [rad/s], |omega|."""
+    label = "M" if rate is None else "|f|"
+    _check_magnitude(path, lines, force, label, MAX_SPECIFIC_FORCE, "m/s^2")
+    if rate is not None:
+        _check_magnitude(path, lines, rate, "|omega|", MAX_ANGULAR_VELOCITY, "rad/s")
+    _check_not_in_g(path, force[:, 0], label)
+    if rate is not None:
+        _check_sustained_rate(path, lines, t, rate[:, 0])
+
+
+def _check_not_in_g(path, size, label):
+    """Refuse specific forces written in g: a path whose |f| (or M) reads about 1 for most of its
+    length (its median within :data:`G_LIKE_MEDIAN`) and never reaches half a g in m/s^2. A motion near
+    1 m/s^2 throughout (a tenth of g) is no vehicle's on Earth; a weightless crop reads near 0."""
+    median, peak = float(np.median(size)), float(np.max(size))
+    if G_LIKE_MEDIAN[0] <= median <= G_LIKE_MEDIAN[1] and peak < 0.5 * G:
+        raise ProfileError(f"{path}: {label} has a median of {median:.3g} and never exceeds {peak:.3g} m/s^2: "
+                           f"it reads like g (at rest 1 g is {G:g} m/s^2); multiply the force column(s) by "
+                           f"9.80665 (SI: m/s^2 expected)")
+
+
+def _check_sustained_rate(path, lines, t, rate):
+    """Refuse rates written in deg/s: |omega| above :data:`MAX_SUSTAINED_RATE` for
+    :data:`SUSTAINED_FOR` or longer, several turns a second that no vehicle a simulator cues keeps
+    (a fighter rolls at up to about 5 rad/s for a moment; the corpus peaks at 2)."""
+    above = np.concatenate(([False], rate > MAX_SUSTAINED_RATE, [False]))
+    edges = np.flatnonzero(np.diff(above.astype(np.int8)))
+    for first, end in zip(edges[::2], edges[1::2]):
+        if t[end - 1] - t[first] >= SUSTAINED_FOR:
+            raise ProfileError(f"{path}: line {lines[first + 1][0]}: |omega| stays above {MAX_SUSTAINED_RATE:g} "
+                               f"rad/s for {t[end - 1] - t[first]:.3g} s (up to {rate[first:end].max():.4g}): rates "
+                               f"in deg/s? Divide them by 57.2958 (SI: rad/s expected)")
 
 
 def write_csv(path_or_file, path: DesiredPath, comments=()) -> None:

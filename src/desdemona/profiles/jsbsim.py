@@ -381,6 +381,9 @@ def _path_of(flight: Flight, start: float | None, end: float | None, rate: float
                 f"source: crop {span} of sim time (t = 0 here; start {why}), "
                 f"{convert.filter_note(1 / float(np.median(np.diff(flight.t))), rate)}"
                 + ("; modulus |f| only" if modulus else "")]
+    if end is not None and end > flight.t[-1] + float(np.median(np.diff(flight.t))):
+        comments.append(f"warning: --end {end:g} s is past the script's end at {flight.t[-1]:.4g} s of sim time: "
+                        f"the path ends there")
     if flight.reset is not None:
         comments.append(f"warning: the script sets its clock back at {flight.reset:.4g} s of sim time to run "
                         f"again (a series of runs): its first run only")
