@@ -295,6 +295,21 @@ def test_bad_rows_and_time(tmp_path, capsys):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["log.csv"]
 
 
+def test_rates_in_deg_s_declared_as_rad_s_are_not_written(tmp_path, capsys):
+    """A turn of 17 deg/s logged in deg/s and declared rad/s reads 17 rad/s for over a second: refused
+    as the commands would refuse the path, naming --rate-unit, and nothing is written (it was written
+    before, and `online` then ran it)."""
+    t, omega, f = motion()
+    log = write_log(tmp_path / "log.csv", t, omega, f, ("right", "forward", "up"), "m/s2", "deg/s")
+    out = tmp_path / "x.csv"
+    argv = ["import", "log", str(log), "--axes", "right,forward,up", "--accel-unit", "m/s2", "--out", str(out)]
+    assert main(argv + ["--rate-unit", "rad/s"]) == 2
+    err = capsys.readouterr().err
+    assert "x.csv: not written:" in err and "rates in deg/s?" in err and "--rate-unit deg/s" in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["log.csv"]
+    assert main(argv + ["--rate-unit", "deg/s"]) == 0
+
+
 def test_milliseconds_declared_as_seconds_are_refused(tmp_path, capsys):
     """A 100 Hz log with t in ms (0, 10, 20, ...) read as seconds would be a 0.1 Hz path of hours: refused
     at import, pointing to --time-unit ms, by the CSV reader's rule; declared as ms it imports."""

@@ -17,7 +17,7 @@ import numpy as np
 from scipy import signal
 
 from desdemona import files
-from desdemona.profiles.csvfile import write_csv
+from desdemona.profiles.csvfile import read_csv, write_csv
 from desdemona.profiles.path import G, DesiredPath, ProfileError, modulus_version
 
 #: Body axes (x forward, y right, z down) to cabin axes (x right, y forward, z up): fx = f_y_body,
@@ -353,12 +353,17 @@ def check_out(out, overwrite: bool = False) -> Path:
 
 def write_path(out, path: DesiredPath, comments=(), overwrite: bool = False) -> Path:
     """Write ``path`` as CSV to ``out`` with ``# comments`` lines, never half: into a temporary file in
-    the same folder, then renamed. An existing ``out`` is replaced only with ``overwrite``
+    the same folder, read back as the commands read it (:func:`.csvfile.read_csv`: a path in the wrong
+    units is refused, not written), then renamed. An existing ``out`` is replaced only with ``overwrite``
     (:func:`check_out`); a folder it cannot write in is a :class:`ProfileError` too."""
     out = check_out(out, overwrite)
     try:
         with files.beside(out) as tmp:
             write_csv(tmp, path, comments=comments)
+            try:  # what the commands would refuse to read is not written (units, above all)
+                read_csv(tmp)
+            except ProfileError as exc:
+                raise ProfileError(f"{out}: not written: {str(exc).replace(str(tmp) + ': ', '')}") from None
             os.replace(tmp, out)
     except OSError as exc:
         raise ProfileError(f"{out}: cannot write it: {exc.strerror or exc}") from None

@@ -199,7 +199,7 @@ def _check_not_in_g(path, size, label):
     if G_LIKE_MEDIAN[0] <= median <= G_LIKE_MEDIAN[1] and peak < 0.5 * G:
         raise ProfileError(f"{path}: {label} has a median of {median:.3g} and never exceeds {peak:.3g} m/s^2: "
                            f"it reads like g (at rest 1 g is {G:g} m/s^2); multiply the force column(s) by "
-                           f"9.80665 (SI: m/s^2 expected)")
+                           f"9.80665 (SI: m/s^2 expected; import log: --accel-unit g)")
 
 
 def _check_sustained_rate(path, lines, t, rate):
@@ -212,7 +212,7 @@ def _check_sustained_rate(path, lines, t, rate):
         if t[end - 1] - t[first] >= SUSTAINED_FOR:
             raise ProfileError(f"{path}: line {lines[first + 1][0]}: |omega| stays above {MAX_SUSTAINED_RATE:g} "
                                f"rad/s for {t[end - 1] - t[first]:.3g} s (up to {rate[first:end].max():.4g}): rates "
-                               f"in deg/s? Divide them by 57.2958 (SI: rad/s expected)")
+                               f"in deg/s? Divide them by 57.2958 (SI: rad/s expected; import log: --rate-unit deg/s)")
 
 
 def write_csv(path_or_file, path: DesiredPath, comments=()) -> None:
