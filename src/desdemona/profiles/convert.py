@@ -17,7 +17,7 @@ import numpy as np
 from scipy import signal
 
 from desdemona import files
-from desdemona.profiles.csvfile import read_csv, write_csv
+from desdemona.profiles.csvfile import check_units, runs, write_csv
 from desdemona.profiles.path import G, DesiredPath, ProfileError, modulus_version
 
 #: Body axes (x forward, y right, z down) to cabin axes (x right, y forward, z up): fx = f_y_body,
@@ -245,8 +245,7 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
         still &= np.lib.stride_tricks.sliding_window_view(np.asarray(usable, dtype=bool), w).all(axis=1)
     if not np.any(still):
         return [] if every else None
-    edges = np.flatnonzero(np.diff(np.concatenate([[0], still.astype(int), [0]])))
-    starts, ends = edges[::2], edges[1::2]  # runs of still windows [start, end)
+    starts, ends = runs(still)  # runs of still windows [start, end)
     score = np.where(still, spread / (size + STILL_SPREAD_ABS) + windows_rate / max_rate, np.inf)
     best = [a + int(np.argmin(score[a:b])) for a, b in zip(starts, ends)]  # the stillest window of each run
     if every:
@@ -353,17 +352,14 @@ def check_out(out, overwrite: bool = False) -> Path:
 
 def write_path(out, path: DesiredPath, comments=(), overwrite: bool = False) -> Path:
     """Write ``path`` as CSV to ``out`` with ``# comments`` lines, never half: into a temporary file in
-    the same folder, read back as the commands read it (:func:`.csvfile.read_csv`: a path in the wrong
-    units is refused, not written), then renamed. An existing ``out`` is replaced only with ``overwrite``
+    the same folder, then renamed. A path that the commands would refuse for its units
+    (:func:`.csvfile.check_units`, as :func:`.csvfile.read_csv` checks it) is refused, not written. An existing ``out`` is replaced only with ``overwrite``
     (:func:`check_out`); a folder it cannot write in is a :class:`ProfileError` too."""
     out = check_out(out, overwrite)
+    check_units(path, lambda k: f"{out}: not written" + ("" if k is None else f": at {path.t[k]:.4g} s"))
     try:
         with files.beside(out) as tmp:
             write_csv(tmp, path, comments=comments)
-            try:  # what the commands would refuse to read is not written (units, above all)
-                read_csv(tmp)
-            except ProfileError as exc:
-                raise ProfileError(f"{out}: not written: {str(exc).replace(str(tmp) + ': ', '')}") from None
             os.replace(tmp, out)
     except OSError as exc:
         raise ProfileError(f"{out}: cannot write it: {exc.strerror or exc}") from None

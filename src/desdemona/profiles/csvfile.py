@@ -101,11 +101,11 @@ def read_csv(path: str | Path) -> DesiredPath:
             k = int(np.argmax(negative))
             raise ProfileError(f"{path}: line {lines[k + 1][0]}: M = {data[k, 1]:g} m/s^2 is negative; the "
                                f"modulus |f| is >= 0")
-        _check_units(path, lines, t, data[:, 1:2], None)
-        return DesiredPath(name, t - t[0], None, modulus=data[:, 1], description=f"read from {path.name}")
-    _check_units(path, lines, t, np.linalg.norm(data[:, 4:7], axis=1, keepdims=True),
-                 np.linalg.norm(data[:, 1:4], axis=1, keepdims=True))
-    return DesiredPath(name, t - t[0], data[:, 1:], weights=weights, description=f"read from {path.name}")
+        read = DesiredPath(name, t - t[0], None, modulus=data[:, 1], description=f"read from {path.name}")
+    else:
+        read = DesiredPath(name, t - t[0], data[:, 1:], weights=weights, description=f"read from {path.name}")
+    check_units(read, lambda k: f"{path}" if k is None else f"{path}: line {lines[k + 1][0]}")
+    return read
 
 
 def _header_weights(path, text: str) -> tuple[float, ...]:
@@ -171,46 +171,53 @@ def describe_steps(t: np.ndarray) -> str:
             f"{float(t[-1] - t[0]):g} s in all")
 
 
-def _check_magnitude(path, lines, values, label, limit, unit):
-    over = np.abs(values[:, 0]) > limit
+def runs(mask) -> tuple[np.ndarray, np.ndarray]:
+    """The runs of True in the boolean ``mask``: (starts, ends), each run ``mask[start:end]``."""
+    edges = np.flatnonzero(np.diff(np.concatenate(([False], np.asarray(mask, dtype=bool), [False])).astype(np.int8)))
+    return edges[::2], edges[1::2]
+
+
+def check_units(path: DesiredPath, where) -> None:
+    """Refuse a path whose magnitudes are in the wrong units: |f| (or M) above 100 g or reading like g
+    (:func:`_check_not_in_g`), |omega| above 50 rad/s or held above :data:`MAX_SUSTAINED_RATE`
+    (:func:`_check_sustained_rate`). ``where(k)`` names sample k in a message (a file's line), and
+    ``where(None)`` the path."""
+    label = "M" if path.S_d is None else "|f|"
+    rate = None if path.S_d is None else np.linalg.norm(path.S_d[:, :3], axis=1)
+    _check_magnitude(where, path.M_d, label, MAX_SPECIFIC_FORCE, "m/s^2")
+    if rate is not None:
+        _check_magnitude(where, rate, "|omega|", MAX_ANGULAR_VELOCITY, "rad/s")
+    _check_not_in_g(where(None), path.M_d, label)
+    if rate is not None:
+        _check_sustained_rate(where, path.t, rate)
+
+
+def _check_magnitude(where, values, label, limit, unit):
+    over = np.abs(values) > limit
     if np.any(over):
         k = int(np.argmax(over))
-        raise ProfileError(f"{path}: line {lines[k + 1][0]}: {label} = {values[k, 0]:.4g} {unit} is above "
+        raise ProfileError(f"{where(k)}: {label} = {values[k]:.4g} {unit} is above "
                            f"{limit:.4g} {unit}: wrong units? (SI: rad/s and m/s^2 expected)")
 
 
-def _check_units(path, lines, t, force, rate):
-    """Refuse magnitudes of the wrong units: ``force`` (K, 1) [m/s^2], |f| or M (``rate`` None), and
-    ``rate`` (K, 1) [rad/s], |omega|."""
-    label = "M" if rate is None else "|f|"
-    _check_magnitude(path, lines, force, label, MAX_SPECIFIC_FORCE, "m/s^2")
-    if rate is not None:
-        _check_magnitude(path, lines, rate, "|omega|", MAX_ANGULAR_VELOCITY, "rad/s")
-    _check_not_in_g(path, force[:, 0], label)
-    if rate is not None:
-        _check_sustained_rate(path, lines, t, rate[:, 0])
-
-
-def _check_not_in_g(path, size, label):
+def _check_not_in_g(where, size, label):
     """Refuse specific forces written in g: a path whose |f| (or M) reads about 1 for most of its
     length (its median within :data:`G_LIKE_MEDIAN`) and never reaches half a g in m/s^2. A motion near
     1 m/s^2 throughout (a tenth of g) is no vehicle's on Earth; a weightless crop reads near 0."""
     median, peak = float(np.median(size)), float(np.max(size))
     if G_LIKE_MEDIAN[0] <= median <= G_LIKE_MEDIAN[1] and peak < 0.5 * G:
-        raise ProfileError(f"{path}: {label} has a median of {median:.3g} and never exceeds {peak:.3g} m/s^2: "
+        raise ProfileError(f"{where}: {label} has a median of {median:.3g} and never exceeds {peak:.3g} m/s^2: "
                            f"it reads like g (at rest 1 g is {G:g} m/s^2); multiply the force column(s) by "
                            f"9.80665 (SI: m/s^2 expected; import log: --accel-unit g)")
 
 
-def _check_sustained_rate(path, lines, t, rate):
+def _check_sustained_rate(where, t, rate):
     """Refuse rates written in deg/s: |omega| above :data:`MAX_SUSTAINED_RATE` for
     :data:`SUSTAINED_FOR` or longer, several turns a second that no vehicle a simulator cues keeps
     (a fighter rolls at up to about 5 rad/s for a moment; the corpus peaks at 2)."""
-    above = np.concatenate(([False], rate > MAX_SUSTAINED_RATE, [False]))
-    edges = np.flatnonzero(np.diff(above.astype(np.int8)))
-    for first, end in zip(edges[::2], edges[1::2]):
+    for first, end in zip(*runs(rate > MAX_SUSTAINED_RATE)):
         if t[end - 1] - t[first] >= SUSTAINED_FOR:
-            raise ProfileError(f"{path}: line {lines[first + 1][0]}: |omega| stays above {MAX_SUSTAINED_RATE:g} "
+            raise ProfileError(f"{where(first)}: |omega| stays above {MAX_SUSTAINED_RATE:g} "
                                f"rad/s for {t[end - 1] - t[first]:.3g} s (up to {rate[first:end].max():.4g}): rates "
                                f"in deg/s? Divide them by 57.2958 (SI: rad/s expected; import log: --rate-unit deg/s)")
 

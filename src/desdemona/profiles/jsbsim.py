@@ -372,16 +372,16 @@ def _path_of(flight: Flight, start: float | None, end: float | None, rate: float
         during = (flight.t >= lo + still.t0) & (flight.t <= lo + still.t1)
         phi, theta = flight.attitude[during].mean(axis=0)
         convert.check_convention(still, up=convert.up_from_attitude(phi, theta))
-    span = f"{lo:g}-{lo + t[-1]:.6g} s"
+    span, step = f"{lo:g}-{lo + t[-1]:.6g} s", float(np.median(np.diff(flight.t)))  # the flight's own step
     description = f"JSBSim {name} ({flight.aircraft}), pilot station, {span} of sim time"
     path = convert.make_path(name, t, X[:, :3], X[:, 3:], description, modulus)
     comments = [f"source: JSBSim {flight.version} script {flight.script.name} ({'shipped with JSBSim' if _shipped(flight.script) else 'a script file'}), aircraft {flight.aircraft}",
                 "source: pilot station specific force accelerations/n-pilot-{x,y,z}-norm and body rates "
                 "velocities/{p,q,r}-rad_sec, body (forward,right,down) -> cabin (right,forward,up)",
                 f"source: crop {span} of sim time (t = 0 here; start {why}), "
-                f"{convert.filter_note(1 / float(np.median(np.diff(flight.t))), rate)}"
+                f"{convert.filter_note(1 / step, rate)}"
                 + ("; modulus |f| only" if modulus else "")]
-    if end is not None and end > flight.t[-1] + float(np.median(np.diff(flight.t))):
+    if end is not None and end > flight.t[-1] + step:
         comments.append(f"warning: --end {end:g} s is past the script's end at {flight.t[-1]:.4g} s of sim time: "
                         f"the path ends there")
     if flight.reset is not None:
