@@ -51,7 +51,7 @@ SANE_G = 10.0  # [g] a case above this is a transient or a crash, not a motion t
 #: flight (2 minutes for a 10-minute case); every cycle (0.02 s) would be five times that. The
 #: controller plans every 0.02 s on the latest forecast, at most 0.1 s old.
 FORECAST_EVERY = 0.1
-#: How far each forecast reaches [s]: the longest default horizon (desdemona.mpc.default_horizon, 4 s
+#: How far each forecast reaches [s]: the longest default horizon (desdemona.control.mpc.default_horizon, 4 s
 #: where the track moves); the predictor takes what its horizon needs.
 FORECAST_SECONDS = 4.0
 

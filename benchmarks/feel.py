@@ -7,7 +7,7 @@
 Settings: ``thesis`` = the path's own weights, free start, free end (thesis 5.2, 5.6);
 ``rest`` = the path's own weights, from rest to rest with the track and heave centred (what starting
 and ending as a session does costs by itself); ``default`` = the command line's default (``felt``
-weights, from rest to rest, centred). Metrics from :mod:`desdemona.metrics` through the thesis'
+weights, from rest to rest, centred). Metrics from :mod:`desdemona.check.metrics` through the thesis'
 vestibular model: peak false rotation [deg/s] (the largest |omega| where |omega_d| is below the
 threshold), the perceived (felt) error RMS per channel, and the share of time it is above threshold.
 Each run appends one JSON line to ``--out`` as soon as it ends, so a long run can be read part-way.
@@ -22,8 +22,9 @@ import time
 
 import numpy as np
 
-from desdemona import Model, default_params, profiles, session
-from desdemona.offline import OptimizeOptions, optimize
+from desdemona import Model, default_params, profiles
+from desdemona.cueing.offline import OptimizeOptions, optimize
+from desdemona.runs import session
 
 PATHS = ("cosine", "catapult", "double-pulse", "triple-pulse", "car-lap")
 SETTINGS = {  # name: (weights spec, initial, final)

@@ -10,7 +10,7 @@ the cosine (libraries loaded); RMS is the fine-grid weighted RMS(S - S_d) of the
 (grid 10x finer than the solver's), "worst" the highest use of any limit on that grid.
 
 Like the command line, the run keeps freed memory for IPOPT's next factorisation
-(:mod:`desdemona.allocator`). Compiled stage functions (:mod:`desdemona.compiled`) go to a cache made
+(:mod:`desdemona.support.allocator`). Compiled stage functions (:mod:`desdemona.cueing.compiled`) go to a cache made
 for this run: the first `full` row compiles them (its "build" includes it), the later ones find them.
 """
 
@@ -26,11 +26,12 @@ import time
 
 import numpy as np
 
-from desdemona import Model, allocator, default_params, profiles, thesis_toy_params
-from desdemona.thesis import ThesisOptions, optimize_thesis
-from desdemona.offline import OptimizeOptions, optimize
-from desdemona.problem import ProblemOptions
-from desdemona.simulate import check
+from desdemona import Model, default_params, profiles, thesis_toy_params
+from desdemona.baselines.thesis import ThesisOptions, optimize_thesis
+from desdemona.check.simulate import check
+from desdemona.cueing.formulation import ProblemOptions
+from desdemona.cueing.offline import OptimizeOptions, optimize
+from desdemona.support import allocator
 
 
 @dataclasses.dataclass

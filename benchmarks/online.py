@@ -51,11 +51,11 @@ from collections import Counter
 import numpy as np
 
 from desdemona import Model, default_params, profiles
-from desdemona.configs import get_configuration
-from desdemona.offline import OptimizeOptions, optimize
-from desdemona.mpc import MPCOptions, default_horizon
-from desdemona.online import OnlineOptions, run
-from desdemona.problem import ProblemOptions
+from desdemona.control.mpc import MPCOptions, default_horizon
+from desdemona.control.online import OnlineOptions, run
+from desdemona.cueing.formulation import ProblemOptions
+from desdemona.cueing.offline import OptimizeOptions, optimize
+from desdemona.machine.configs import get_configuration
 from desdemona.profiles import DesiredPath
 
 
@@ -78,7 +78,7 @@ def bounds(path, model, step, home: bool = False) -> dict[str, float]:
     - "bound": the same with the on-line formulation's stopping condition (every planned state can
       brake to rest within the position limits at ``braking`` times the acceleration limit: the MPC
       must keep it because it does not know what follows its horizon). An on-line run from rest
-      chooses its start too (:meth:`desdemona.mpc.MPC.place`), so this is the bound no on-line
+      chooses its start too (:meth:`desdemona.control.mpc.MPC.place`), so this is the bound no on-line
       controller from rest can beat;
     - "home" (when asked): the bound for a start at home (``--initial home``).
 

@@ -11,7 +11,7 @@ on (the planner lost for good). The placed start's solves are never refused.
 
 Per run, read as ``real.felt_figures`` reads them: the felt force RMS of the vector |f - f_d| [m/s^2],
 the classical loop's from the same run, the peak felt direction the machine made [deg]
-(:func:`desdemona.metrics.direction_made`), the felt direction's RMS error [deg], the peak felt
+(:func:`desdemona.check.metrics.direction_made`), the felt direction's RMS error [deg], the peak felt
 rotation [deg/s]; and the cycles by source (fresh plan, the last plan followed, the brake). "Fallback to
 the last plan" and "Return home in an outage" in ``docs/benchmarks.md`` have the tables.
 """
@@ -26,11 +26,10 @@ import tempfile
 from pathlib import Path
 
 import numpy as np
-
-from desdemona import mpc
-from desdemona.cli import main
-
 import real  # benchmarks/real.py: its felt figures (the script's own folder is on the path)
+
+from desdemona.cli import main
+from desdemona.control import mpc
 
 PATTERNS = {"random90": (0.9, None, None), "burst2": (0.0, 2.0, None), "burst3": (0.0, 3.0, None),
             "lost20": (0.0, None, 20.0)}

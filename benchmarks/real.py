@@ -21,7 +21,7 @@ printed. Every job is the command a user
 would type, run as its own process
 (so its peak memory is its own: ``ru_maxrss`` of the process; ``--no-view``: the page is not
 timed), stopped with SIGINT after
-``--timeout`` seconds; the jobs go through :func:`desdemona.batch.map_jobs` (local processes, or a
+``--timeout`` seconds; the jobs go through :func:`desdemona.runs.batch.map_jobs` (local processes, or a
 Dask cluster whose workers see the corpus and the output folder at the same paths).
 
 Per job the table gives: the exit code (0 converged, 4 not converged, 3 no safe trajectory, 2
@@ -33,7 +33,7 @@ what the occupant feels, read from the result's ``summary.json`` ("quality"):
 - correlation and lag [s] of the dominant force channel (the one whose desired value varies most; on
   ``dfs`` f_z against M_d);
 - felt direction RMS and peak [deg] and the peak of the part the machine made, beyond a still level
-  cabin's (``made``: :func:`desdemona.metrics.direction_made`), peak felt rotation through the canals
+  cabin's (``made``: :func:`desdemona.check.metrics.direction_made`), peak felt rotation through the canals
   [deg/s], acceleration reversals per second of the worst joint (swings across 5 % of its peak);
 - on-line rows: the p99 compute time per cycle [ms] and the deadlines missed; and the classical
   loop's felt force RMS, correlation, felt direction peak and felt rotation peak from the same run
@@ -65,10 +65,13 @@ import time
 from pathlib import Path
 
 import corpus  # benchmarks/corpus.py: the script's own folder is on the path
-import tables
 import numpy as np
+import tables
 
-from desdemona import batch, metrics, perception, profiles
+from desdemona import profiles
+from desdemona.check import metrics
+from desdemona.occupant import perception
+from desdemona.runs import batch
 
 HERE = Path(__file__).resolve().parent
 CORPUS = HERE / "corpus"
@@ -206,7 +209,7 @@ def shape_thresholds(path: profiles.DesiredPath, channel: str) -> float:
 def target_reversals(path: profiles.DesiredPath) -> float:
     """How often the desired force itself reverses [1/s]: the most of its channels (minus g on z; the
     modulus minus g), with the joints' hysteresis of 5 % of the channel's peak
-    (:func:`desdemona.metrics.reversals_per_second`). A joint that makes a force channel reverses its
+    (:func:`desdemona.check.metrics.reversals_per_second`). A joint that makes a force channel reverses its
     acceleration whenever the force does: a multicopter's hover bobs at 1-2 Hz."""
     force = (path.modulus - profiles.G)[:, None] if path.S_d is None else path.S_d[:, 3:] - [0.0, 0.0, profiles.G]
     return float(np.max(metrics.reversals_per_second(path.t, force)))
@@ -226,7 +229,7 @@ def against_loop(rows: list[dict]) -> str:
     (``target_reversals`` of the row, :func:`target_reversals`): following the target takes as many.
 
     The felt direction is judged by the part the machine made (``made``: beyond a still level cabin's,
-    :func:`desdemona.metrics.direction_made`), as the issue defines it: the machine "never turns the
+    :func:`desdemona.check.metrics.direction_made`), as the issue defines it: the machine "never turns the
     felt force more than 30 deg from where the target points it". Where the target itself points far
     from any force a cabin on the ground can give (a push-over's negative g: 180 deg for a still cabin,
     the loop and the MPC alike) the peak of the error is the target's, and comparing it says nothing

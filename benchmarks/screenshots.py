@@ -14,8 +14,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-from desdemona import view
 from desdemona.cli import main
+from desdemona.results import view
 
 # (image, command, time shown [s], view mode)
 SHOTS = (

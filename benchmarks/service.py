@@ -42,8 +42,8 @@ import numpy as np
 import tables  # benchmarks/tables.py: the script's own folder is on the path
 
 from desdemona import Model
-from desdemona.report import read_table
-from desdemona.plan import stopping_time
+from desdemona.machine.plan import stopping_time
+from desdemona.results.report import read_table
 
 HERE = Path(__file__).resolve().parent
 RESULTS = HERE / "service-results"
@@ -160,7 +160,7 @@ def _parking(cycles: list[dict], folder: Path, rate: float, model: Model, outage
              judged_from: float) -> dict:
     """How the session parked: after the host's last message, the time from the first parking cycle to
     parked, against the time the limits allow from the rates and accelerations it had
-    (:func:`desdemona.plan.stopping_time`, and the two cycles of coming to rest); with an
+    (:func:`desdemona.machine.plan.stopping_time`, and the two cycles of coming to rest); with an
     outage, when parking began after it began and when the session ran again."""
     t = np.array([float(c["t"]) for c in cycles])
     status = [c["status"] for c in cycles]

@@ -1,18 +1,18 @@
 """Tune the classical washout per configuration on the corpus and the built-in paths: the honest baseline.
 
     nice -n 10 python benchmarks/tune_classical.py                 # the search, then the before/after table
-    python benchmarks/tune_classical.py --table-only               # the table of the frozen desdemona.washout.WASHOUT
+    python benchmarks/tune_classical.py --table-only               # the table of the frozen desdemona.baselines.washout.WASHOUT
     python benchmarks/tune_classical.py --configs full --cases f16-turn catapult   # a quick look
 
 Cases: every six-channel case of the corpus (``benchmarks/corpus/*.csv`` without ``-M``, built by
 ``benchmarks/corpus.py`` where missing) and every built-in path with six channels, each run by
-:func:`desdemona.washout.classical_washout` from rest at home, as ``online`` runs its baseline (a
+:func:`desdemona.baselines.washout.classical_washout` from rest at home, as ``online`` runs its baseline (a
 step-by-step loop, no optimiser: the whole corpus takes seconds), on ``yaw-track-cabin`` and ``full``
 separately.
 
 Per case: the felt force RMS, the RMS of the vector ``|f - f_d|`` [m/s^2] as ``benchmarks/real.py`` and
 ``online`` report it; the peak felt direction error [deg] and the peak felt rotation through the canals
-[deg/s] (:mod:`desdemona.metrics`).
+[deg/s] (:mod:`desdemona.check.metrics`).
 
 Objective (lower is better): the mean over the cases of each case's felt force RMS divided by the
 untuned washout's (``Washout()``): every case counts the same, whatever its length or size. A candidate
@@ -27,7 +27,7 @@ merit: the objective, plus :data:`PENALTY` x how far the mean rotation or direct
 ``--worse`` (so any admissible candidate beats any inadmissible one). The search runs on a ``--step``
 grid (0.05 s), each 600 s recording cut to its first :data:`SEARCH_END` s; the table runs every case
 whole on the ``online`` grid (0.02 s), each plan checked against every limit
-(:func:`desdemona.simulate.check`). One process, about 20 minutes on one core.
+(:func:`desdemona.check.simulate.check`). One process, about 20 minutes on one core.
 """
 
 from __future__ import annotations
@@ -41,12 +41,13 @@ import time
 from pathlib import Path
 
 import numpy as np
-
 import real  # benchmarks/real.py: the corpus index (the script's own folder is on the path)
-from desdemona import metrics, profiles
-from desdemona.model import Model
-from desdemona.simulate import check, evaluate_plan
-from desdemona.washout import WASHOUT, Washout, classical_washout
+
+from desdemona import profiles
+from desdemona.baselines.washout import WASHOUT, Washout, classical_washout
+from desdemona.check import metrics
+from desdemona.check.simulate import check, evaluate_plan
+from desdemona.machine.model import Model
 
 HERE = Path(__file__).resolve().parent
 CONFIGS = ("yaw-track-cabin", "full")

@@ -5,7 +5,8 @@ import os
 
 import pytest
 
-from desdemona import blasfeo, default_params, thesis_toy_params
+from desdemona import default_params, thesis_toy_params
+from desdemona.cueing import blasfeo
 
 
 @pytest.fixture(scope="session")

@@ -1,4 +1,4 @@
-"""The NLP's derivatives assembled from one stage's (:mod:`desdemona.assembly`) are CasADi's own
+"""The NLP's derivatives assembled from one stage's (:mod:`desdemona.cueing.assembly`) are CasADi's own
 derivatives of the whole NLP, entry for entry: the constraint Jacobian, the cost's gradient and the
 Lagrangian's Hessian (its upper triangle for IPOPT, whole for fatrop), with jerk limits and a terminal
 stage, on S and on the modulus, with the path as constants and as the NLP's parameter."""
@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 
 from desdemona import Model, profiles
-from desdemona.assembly import concatenated
-from desdemona.problem import ProblemOptions
-from desdemona.transcription import CueingProblem
+from desdemona.cueing.assembly import concatenated
+from desdemona.cueing.formulation import ProblemOptions
+from desdemona.cueing.transcription import CueingProblem
 
 
 @pytest.mark.parametrize("config, solver", [("full", "ipopt"), ("full", "fatrop"), ("dfs", "ipopt"),

@@ -1,4 +1,4 @@
-"""HPIPM and fatrop on BLASFEO built for this processor (desdemona.blasfeo): the controller's commands
+"""HPIPM and fatrop on BLASFEO built for this processor (desdemona.cueing.blasfeo): the controller's commands
 and fatrop's off-line solution equal those of CasADi's own build to round-off, the library is the one
 the process runs on, the build is cached, and every reason not to use it falls back to CasADi's build,
 leaving nothing behind."""
@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from desdemona import blasfeo, compiled
+from desdemona.cueing import blasfeo, compiled
 
 needs_build = pytest.mark.skipif(blasfeo.unavailable() is not None,
                                  reason=f"BLASFEO is not built here: {blasfeo.unavailable()}")
@@ -21,9 +21,9 @@ needs_build = pytest.mark.skipif(blasfeo.unavailable() is not None,
 # (the one-way arm, the acceleration's limits at the spin-up) and the plans build on each other.
 COMMANDS = """
 import json, numpy as np
-from desdemona import blasfeo
-from desdemona.model import Model
-from desdemona.mpc import MPC, MPCOptions
+from desdemona.cueing import blasfeo
+from desdemona.machine.model import Model
+from desdemona.control.mpc import MPC, MPCOptions
 mpc = MPC(Model(None, "dfs"), MPCOptions(horizon=1.0))
 t = np.linspace(0.0, 1.0, 51)
 state = (np.zeros(4), np.zeros(4), np.zeros(4))
@@ -37,10 +37,11 @@ print(json.dumps({"status": blasfeo.status(), "jerks": out}))
 # fatrop off-line from one guess on a short catapult on `full` (CasADi's own derivatives: nothing compiled)
 FATROP = """
 import json
-from desdemona import Model, blasfeo, profiles
-from desdemona.offline import initial_guesses
-from desdemona.problem import ProblemOptions
-from desdemona.transcription import CueingProblem
+from desdemona import Model, profiles
+from desdemona.cueing import blasfeo
+from desdemona.cueing.offline import initial_guesses
+from desdemona.cueing.formulation import ProblemOptions
+from desdemona.cueing.transcription import CueingProblem
 path = profiles.catapult(level=15.0, push=0.5, quiet=0.2, duration=1.5)
 problem = CueingProblem(Model(None, "full"), path, ProblemOptions(h_u=0.1, solver="fatrop", compile=False))
 solution = problem.solve(*initial_guesses(problem, 1, 0)[0][1:])

@@ -6,11 +6,12 @@ import numpy as np
 import pytest
 
 from desdemona import profiles
-from desdemona.classical import classical_dfs, classical_washout
-from desdemona.kinematics import gimbal_alignment
-from desdemona.metrics import sign_changes_per_second
-from desdemona.model import Model
-from desdemona.simulate import TOLERANCE, check, evaluate_plan
+from desdemona.baselines.classical import classical_dfs
+from desdemona.baselines.washout import classical_washout
+from desdemona.check.metrics import sign_changes_per_second
+from desdemona.check.simulate import TOLERANCE, check, evaluate_plan
+from desdemona.machine.kinematics import gimbal_alignment
+from desdemona.machine.model import Model
 
 STEP = 0.02
 DFS_PROFILES = {"dfs-catapult": profiles.dfs_catapult, "roller-coaster": profiles.roller_coaster}

@@ -1,15 +1,20 @@
-"""The tuned classical washout (:data:`desdemona.washout.WASHOUT`): on a sustained force the arm holds it
+"""The tuned classical washout (:data:`desdemona.baselines.washout.WASHOUT`): on a sustained force the arm holds it
 as a centrifuge does, the felt force in the cabin follows the intent, and every limit holds."""
 
 import numpy as np
 import pytest
 
-from desdemona.classical import classical_washout as reexported
-from desdemona.model import Model
+from desdemona.baselines.washout import (
+    ARM_RATE_SHARE,
+    WASHOUT,
+    Washout,
+    _gimbal_angles,
+    _rotation_between,
+    classical_washout,
+)
+from desdemona.check.simulate import TOLERANCE, check, evaluate_plan
+from desdemona.machine.model import Model
 from desdemona.profiles import DesiredPath
-from desdemona.simulate import TOLERANCE, check, evaluate_plan
-from desdemona.washout import (ARM_RATE_SHARE, WASHOUT, Washout, _gimbal_angles, _rotation_between,
-                               classical_washout)
 
 STEP = 0.05
 G = 9.81
@@ -69,14 +74,14 @@ def test_the_default_washout_is_the_tuned_one_per_configuration():
     path = sustained((0.0, 0.0, 1.2 * G), duration=4.0)
     for config in ("full", "yaw-track-cabin", "yaw-track"):
         model = Model(config=config)
-        default = reexported(path, model)
+        default = classical_washout(path, model)
         expected = classical_washout(path, model, settings=WASHOUT.get(config, Washout()))
         np.testing.assert_array_equal(default.u, expected.u)
 
 
 def test_the_pointing_rotation_takes_the_desired_direction_to_the_arm_force_and_back_to_gimbal_angles():
     """R d = f for the smallest rotation, and the gimbal angles of R rebuild it (R = Rx Rz Ry, eq. A.7)."""
-    from desdemona.kinematics import rotation
+    from desdemona.machine.kinematics import rotation
 
     rng = np.random.default_rng(7)
     d, f = rng.normal(size=(20, 3)), rng.normal(size=(20, 3))

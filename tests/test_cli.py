@@ -9,7 +9,7 @@ import pytest
 
 from desdemona import profiles
 from desdemona.cli import main
-from desdemona.report import load
+from desdemona.results.report import load
 
 
 def test_model_summary(capsys):
@@ -162,7 +162,7 @@ def test_import_line_says_six_channels_or_modulus(tmp_path, capsys):
 def test_headline_prints_no_negative_zero_lag_and_marks_the_search_edge():
     from dataclasses import replace
 
-    from desdemona import metrics
+    from desdemona.check import metrics
 
     t = np.arange(201) * 0.01
     S = np.column_stack([np.sin(t + k) for k in range(6)])

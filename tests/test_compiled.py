@@ -10,12 +10,13 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from desdemona import Model, assembly, compiled, profiles, transcription
-from desdemona.offline import initial_guesses
-from desdemona.plan import Plan
-from desdemona.problem import ProblemOptions
-from desdemona.transcription import CueingProblem
-from desdemona.simulate import evaluate_plan
+from desdemona import Model, profiles
+from desdemona.check.simulate import evaluate_plan
+from desdemona.cueing import assembly, compiled, transcription
+from desdemona.cueing.formulation import ProblemOptions
+from desdemona.cueing.offline import initial_guesses
+from desdemona.cueing.transcription import CueingProblem
+from desdemona.machine.plan import Plan
 
 needs_compiler = pytest.mark.skipif(compiled.compiler() is None, reason="no C compiler")
 
@@ -224,8 +225,8 @@ def test_the_last_node_is_limited(params):
 def test_the_real_time_iterations_qp_data_compiled_gives_the_same_numbers():
     """The QP data of the on-line controller compiled as its graph (one stage function per interval)
     gives what the interpreted flat graph gives."""
-    from desdemona.mpc import MPC, MPCOptions
-    from desdemona.realtime import RealTimeIteration
+    from desdemona.control.mpc import MPC, MPCOptions
+    from desdemona.cueing.realtime_iteration import RealTimeIteration
 
     problem = MPC(Model(config="yaw-track-cabin"), MPCOptions(horizon=1.0, step=0.05)).problem
     machine = RealTimeIteration(problem, compile=True).data

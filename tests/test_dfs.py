@@ -8,9 +8,9 @@ import pytest
 
 from desdemona import Model, profiles
 from desdemona.cli import main
-from desdemona.mpc import MPCOptions
-from desdemona.online import OnlineOptions, run
-from desdemona.params import JOINT_NAMES
+from desdemona.control.mpc import MPCOptions
+from desdemona.control.online import OnlineOptions, run
+from desdemona.machine.params import JOINT_NAMES
 
 # The acceptance setting: 50 Hz, a 2 s horizon.
 SESSION = MPCOptions(horizon=2.0, step=0.02, deadline=float("inf"))

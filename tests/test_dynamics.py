@@ -6,7 +6,8 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from desdemona import Model, dynamics, kinematics
+from desdemona import Model
+from desdemona.machine import dynamics, kinematics
 from tests.states import random_states
 
 try:  # the independent rigid-body reference; only its own test needs it

@@ -7,7 +7,8 @@ import math
 import numpy as np
 import pytest
 
-from desdemona import metrics, perception
+from desdemona.check import metrics
+from desdemona.occupant import perception
 from desdemona.profiles import G
 
 DT = 0.01

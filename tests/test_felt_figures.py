@@ -6,9 +6,10 @@ from types import SimpleNamespace
 import matplotlib
 import numpy as np
 
-from desdemona import default_params, figures
+from desdemona import default_params
+from desdemona.check.simulate import Trajectory
 from desdemona.profiles import G
-from desdemona.simulate import Trajectory
+from desdemona.results import figures
 
 PNG = b"\x89PNG\r\n\x1a\n"
 

@@ -2,8 +2,8 @@
 
 import matplotlib
 
-from desdemona import figures
-from desdemona.perception import MODELS
+from desdemona.occupant.perception import MODELS
+from desdemona.results import figures
 
 
 def test_bode_plot_png_leaves_the_backend_alone(tmp_path):

@@ -5,9 +5,9 @@ import pytest
 
 from desdemona import Model, profiles
 from desdemona.cli import main
-from desdemona.mpc import MPCOptions
-from desdemona.online import OnlineOptions, run
-from desdemona.predictors import ForecastPredictor, predict_perfect, predictor
+from desdemona.control.mpc import MPCOptions
+from desdemona.control.online import OnlineOptions, run
+from desdemona.control.predictors import ForecastPredictor, predict_perfect, predictor
 from desdemona.profiles import DesiredPath, ProfileError
 from desdemona.profiles.forecast import Forecast, read_forecast, time_origin, write_forecast
 

@@ -13,8 +13,11 @@ from pathlib import Path
 import pytest
 
 import desdemona
-from desdemona import cli, guard, problem, profiles, report
+from desdemona import cli, profiles
 from desdemona.cli import commands, main
+from desdemona.cueing import formulation as problem
+from desdemona.results import report
+from desdemona.support import guard
 
 SHORT = ["cosine", "--config", "yaw-track", "--h-u", "0.1", "--starts", "1"]
 
@@ -166,9 +169,10 @@ def test_exit_codes_are_documented(capsys):
 
 
 def test_fatrop_status_in_words(tmp_path):
-    """fatrop's return code in IPOPT's words, and its linear algebra (desdemona.blasfeo) in the summary."""
-    from desdemona import Model, blasfeo
-    from desdemona.offline import OptimizeOptions, optimize
+    """fatrop's return code in IPOPT's words, and its linear algebra (desdemona.cueing.blasfeo) in the summary."""
+    from desdemona import Model
+    from desdemona.cueing import blasfeo
+    from desdemona.cueing.offline import OptimizeOptions, optimize
 
     result = optimize(profiles.cosine(duration=1.0), Model(config="yaw-track"),
                       options=OptimizeOptions(problem.ProblemOptions(h_u=0.1, solver="fatrop"), starts=1))

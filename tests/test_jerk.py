@@ -6,14 +6,24 @@ import numpy as np
 import pytest
 
 from desdemona import profiles
-from desdemona.model import Model
-from desdemona.mpc import MPC, MPCOptions
-from desdemona.params import ParameterError, load_params
-from desdemona.plan import (STOP_LAG, Plan, State, advance, ramp, settled_rate, settled_rates, stopping_extent,
-                            stopping_jerk, stopping_reach)
-from desdemona.problem import ProblemOptions
-from desdemona.transcription import CueingProblem
-from desdemona.simulate import check
+from desdemona.check.simulate import check
+from desdemona.control.mpc import MPC, MPCOptions
+from desdemona.cueing.formulation import ProblemOptions
+from desdemona.cueing.transcription import CueingProblem
+from desdemona.machine.model import Model
+from desdemona.machine.params import ParameterError, load_params
+from desdemona.machine.plan import (
+    STOP_LAG,
+    Plan,
+    State,
+    advance,
+    ramp,
+    settled_rate,
+    settled_rates,
+    stopping_extent,
+    stopping_jerk,
+    stopping_reach,
+)
 
 
 def test_jerk_limits_load_with_units_and_must_be_all_or_none(params, toy, tmp_path):
@@ -121,7 +131,7 @@ def test_mpc_grid_is_fine_near_now_and_coarse_beyond():
 def test_the_tail_doubles_where_the_cabin_tilts(params):
     """``far`` "auto": the controller's 4 s plans on full have the doubled tail, those on
     yaw-track-cabin (whose damped iteration swung a steady turn's yaw with it) do not."""
-    from desdemona.mpc import FAR, MPC
+    from desdemona.control.mpc import FAR, MPC
 
     full = MPC(Model(params, "full"), MPCOptions(horizon=4.0))
     assert full.options.far == FAR and full.problem.N == 46
@@ -149,7 +159,7 @@ def test_ramp_matches_its_recursion_for_several_joints_and_steps():
 def test_the_shifted_plan_is_the_last_plans_acceleration_where_the_new_intervals_end(params):
     """The seed of the next cycle (``MPC._shifted_plan``) reads the last plan's accelerations as
     :meth:`Plan.at` does, at the ends of the new grid's intervals, held past its end."""
-    from desdemona.mpc import MPC, MPCOptions
+    from desdemona.control.mpc import MPC, MPCOptions
 
     controller = MPC(Model(params, "dfs"), MPCOptions(horizon=2.0))
     prob, step = controller.problem, controller.options.step

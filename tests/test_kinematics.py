@@ -4,7 +4,8 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from desdemona import Model, kinematics
+from desdemona import Model
+from desdemona.machine import kinematics
 from tests.states import random_states
 
 
@@ -111,7 +112,7 @@ def test_numeric_calls_in_place_equal_casadis_own_call(params):
     and CasADi's own call give the same bits, from two threads at once as from one."""
     from concurrent.futures import ThreadPoolExecutor
 
-    from desdemona._casadi import FEW, call
+    from desdemona.support.symbolic import FEW, call
 
     model = Model(params, "full")
     q, qd, qdd = random_states(model, FEW + 5, seed=5)
@@ -131,7 +132,7 @@ def test_numeric_calls_in_place_equal_casadis_own_call(params):
 
 def test_gimbal_twin_is_the_same_cabin_attitude_on_the_other_branch():
     """Rx(a) Rz(b) Ry(c) = Rx(a + pi) Rz(pi - b) Ry(c + pi): the same pose, and at rest the same S."""
-    from desdemona.kinematics import S, cabin_pose, gimbal_twin
+    from desdemona.machine.kinematics import S, cabin_pose, gimbal_twin
 
     rng = np.random.default_rng(7)
     for _ in range(5):

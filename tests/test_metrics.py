@@ -6,7 +6,8 @@ import math
 import numpy as np
 import pytest
 
-from desdemona import metrics, perception
+from desdemona.check import metrics
+from desdemona.occupant import perception
 
 DT = 0.01
 T = np.arange(0.0, 10.0 + DT / 2, DT)
@@ -205,8 +206,8 @@ def two_results(tmp_path_factory):
 
 
 def test_compare_two_folders(two_results, tmp_path, capsys):
-    from desdemona import report
     from desdemona.cli import main
+    from desdemona.results import report
 
     capsys.readouterr()
     out = tmp_path / "cmp"

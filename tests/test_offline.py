@@ -7,16 +7,16 @@ import numpy as np
 import pytest
 
 from desdemona import Model, profiles, thesis_toy_params
-from desdemona.classical import classical_dfs
-from desdemona.thesis import ThesisOptions, optimize_thesis
-from desdemona.offline import OptimizeOptions, initial_guesses, optimize
-from desdemona.perception import thesis_model
-from desdemona.mpc import MPC
-from desdemona.problem import WALL, WALL_WIDTH, ProblemOptions
-from desdemona.transcription import CueingProblem
+from desdemona.baselines.classical import classical_dfs
+from desdemona.baselines.thesis import ThesisOptions, optimize_thesis
+from desdemona.check.simulate import check
+from desdemona.control.mpc import MPC
+from desdemona.cueing.formulation import WALL, WALL_WIDTH, ProblemOptions
+from desdemona.cueing.offline import OptimizeOptions, initial_guesses, optimize
+from desdemona.cueing.transcription import CueingProblem
+from desdemona.machine.plan import Plan
+from desdemona.occupant.perception import thesis_model
 from desdemona.profiles import DesiredPath
-from desdemona.plan import Plan
-from desdemona.simulate import check
 
 
 def followable_path(params, duration=3.0, dt=0.01):
@@ -95,7 +95,7 @@ def test_the_wall_keeps_the_plan_off_the_tracks_end_at_little_cost(params):
 def test_a_converged_start_is_chosen_over_a_better_iterate_stopped_at_the_cap(params, monkeypatch):
     """The best start by RMS is returned among those that converged; an iterate stopped at the cap is
     returned only when no start converged, and its report is kept either way."""
-    from desdemona import offline
+    from desdemona.cueing import offline
 
     solve, judge = offline._solve_one, offline._check
 
@@ -265,7 +265,7 @@ def test_the_spun_up_guesses_turn_as_fast_as_the_held_force_asks(params):
     at least at SPIN_FLOOR (to leave the stationary point of no turn), the random starts at least at
     half the limit (thesis table 5.2). The track-out guess starts at the track's end where the spin is
     faster than half, else at half its travel."""
-    from desdemona.offline import SPIN_FLOOR, SPIN_SHARE, spin_share
+    from desdemona.cueing.offline import SPIN_FLOOR, SPIN_SHARE, spin_share
 
     model = Model(params, "yaw-track-cabin")
     g, R, v = params.gravity, 4.0, model.limits.velocity[0]
@@ -298,7 +298,7 @@ def test_the_spun_up_guesses_follow_a_held_force_that_changes(params):
     the smart guesses' yaw rate follows it: at the rate the force asks by the time it asks it (sped up
     and slowed down ahead of time), never changing by more than 0.8 of its acceleration limit,
     from rest at the start and back to rest at the end."""
-    from desdemona.offline import SPIN_FLOOR, spin_following
+    from desdemona.cueing.offline import SPIN_FLOOR, spin_following
 
     model = Model(params, "yaw-track-cabin")
     g, R, v, A = params.gravity, 4.0, model.limits.velocity[0], model.limits.acceleration[0]
@@ -321,8 +321,8 @@ def test_the_spun_up_guesses_follow_a_held_force_that_changes(params):
 def test_a_start_at_the_end_of_a_joints_travel_is_planned_from(params):
     """The optimiser keeps positions a parabola's bulge inside their limits; a start in that band (the
     track at rest at its end) must still be planned from, off-line and on-line, not be infeasible."""
-    from desdemona.mpc import MPC, MPCOptions
-    from desdemona.predictors import predict_perfect
+    from desdemona.control.mpc import MPC, MPCOptions
+    from desdemona.control.predictors import predict_perfect
 
     model = Model(params, "yaw-track-cabin")
     path = profiles.catapult(level=10.0, push=1.0, quiet=0.5, duration=3.0)

@@ -7,17 +7,25 @@ import numpy as np
 import pytest
 
 from desdemona import Model, profiles
-from desdemona.offline import OptimizeOptions, optimize
-from desdemona.classical import still_home, tilt_angles
-from desdemona.mpc import HOMING_AFTER, MPC, REST_RATE, SHIFT_MAX, MPCOptions, _Solved
-from desdemona.online import OnlineOptions, run
-from desdemona.plan import HOMING_RATE, HOMING_TIME, State, advance, homing_rate
-from desdemona.predictors import (HOLD_PERSISTENCE, PREDICTORS, HoldPredictor, cue_age, predict_hold, predict_linear,
-                                  predict_perfect)
-from desdemona.perception import thesis_model
-from desdemona.problem import ProblemOptions
+from desdemona.baselines.classical import still_home
+from desdemona.baselines.followers import tilt_angles
+from desdemona.check.simulate import check, closed_loop
+from desdemona.control.mpc import HOMING_AFTER, MPC, REST_RATE, SHIFT_MAX, MPCOptions, _Solved
+from desdemona.control.online import OnlineOptions, run
+from desdemona.control.predictors import (
+    HOLD_PERSISTENCE,
+    PREDICTORS,
+    HoldPredictor,
+    cue_age,
+    predict_hold,
+    predict_linear,
+    predict_perfect,
+)
+from desdemona.cueing.formulation import ProblemOptions
+from desdemona.cueing.offline import OptimizeOptions, optimize
+from desdemona.machine.plan import HOMING_RATE, HOMING_TIME, State, advance, homing_rate
+from desdemona.occupant.perception import thesis_model
 from desdemona.profiles import DesiredPath, along_vertical
-from desdemona.simulate import check, closed_loop
 
 # No deadline in tests: timings are measured in the benchmark, never asserted here.
 OPTIONS = MPCOptions(horizon=1.0, step=0.05, deadline=float("inf"))
@@ -463,8 +471,8 @@ def test_the_canals_follow_a_plan_whose_intervals_vary(params, monkeypatch):
     and the controller places its start (at rest the canals feel nothing wherever the machine stands)."""
     import scipy.signal
 
-    from desdemona import problem as problem_module
-    from desdemona.perception import canals_model
+    from desdemona.cueing import formulation as problem_module
+    from desdemona.occupant.perception import canals_model
 
     model = Model(params, "yaw-track-cabin")
     canals = canals_model()
@@ -511,7 +519,7 @@ def test_the_canals_follow_a_plan_whose_intervals_vary(params, monkeypatch):
 def test_the_command_plans_further_ahead_where_the_track_moves(tmp_path, config, horizon):
     """Without --horizon: 4 s where the track's position must be planned, 2 s on dfs, at most the path."""
     from desdemona.cli import main
-    from desdemona.mpc import default_horizon
+    from desdemona.control.mpc import default_horizon
 
     assert default_horizon(Model(config=config).config) == horizon
     out = tmp_path / config
@@ -529,7 +537,7 @@ def test_online_command_starts_at_rest_steady_or_a_given_state(tmp_path, capsys)
     """--initial rest (the default: on dfs every joint still at its centre), steady (on dfs a centrifuge
     spun up to the path's first modulus, the cabin aligned with the force) or given (--initial-state);
     the command offers every start the library has."""
-    from desdemona.classical import steady_start
+    from desdemona.baselines.classical import steady_start
     from desdemona.cli import main
 
     short = tmp_path / "short.csv"
@@ -562,7 +570,7 @@ def test_online_command_starts_at_rest_steady_or_a_given_state(tmp_path, capsys)
     assert main(["online", *common, "--initial-state", state, "--out", str(tmp_path / "given2")]) == 0  # given
     np.testing.assert_allclose(start(tmp_path / "given2"), [0, 0.1, 0, 1.2, 0], atol=1e-12)
     from desdemona.cli.options import build_parser
-    from desdemona.online import INITIAL_CHOICES
+    from desdemona.control.online import INITIAL_CHOICES
 
     online_command = build_parser()._subparsers._group_actions[0].choices["online"]
     assert next(a for a in online_command._actions if a.dest == "initial").choices == INITIAL_CHOICES
@@ -635,7 +643,7 @@ def test_a_steady_start_tilts_the_cabin_to_the_first_desired_force(params):
     """Off dfs, --initial steady starts still with the cabin tilted by tilt coordination of the path's
     first force (the cosine starts at f_y = 5 m/s^2, held at g/2 by 30 deg), and the classical
     washout's filters start trimmed to it."""
-    from desdemona.classical import steady_start
+    from desdemona.baselines.classical import steady_start
 
     path = profiles.cosine()
     model = Model(params, "full")
@@ -656,7 +664,7 @@ def test_a_steady_start_tilts_the_cabin_to_the_first_desired_force(params):
     assert rest.check.passed and rest.check.rms < 0.5 * home.check.rms
     # on a steady lateral force the trimmed washout's high-pass sees no step at t = 0: its track
     # stays at the centre; from zero filter states it runs 1.4 m out and back
-    from desdemona.classical import classical_washout
+    from desdemona.baselines.washout import classical_washout
 
     t = np.arange(0.0, 2.0, 0.05)
     level = DesiredPath("steady", t, np.tile([0.0, 0.0, 0.0, 0.0, 5.0, 9.81], (len(t), 1)))
@@ -739,7 +747,7 @@ def test_a_modulus_below_g_is_planned_for_as_g_and_the_cabin_stays_upright():
 
 def _hold_session(path, model, **timing):
     """The ``online`` command's session with the hold predictor, without a deadline."""
-    from desdemona import session
+    from desdemona.runs import session
 
     return session.online(path, model, predictor="hold", deadline=float("inf"), **timing)
 
@@ -875,8 +883,8 @@ def test_the_classical_loop_starts_on_the_gimbal_branch_it_steers_from():
     """A placed start with the outer gimbal turned past 90 deg (the cabin's attitude on the gimbals'
     other branch): the classical loop starts from the same pose on the branch near home, still; from a
     start it steers from already, or with the gimbals moving, it starts where the MPC did."""
-    from desdemona.kinematics import cabin_pose
-    from desdemona.online import _loop_start
+    from desdemona.control.online import _loop_start
+    from desdemona.machine.kinematics import cabin_pose
 
     model = Model(config="full")
     placed = np.array([0.0, -3.73, -0.99, 3.07, 0.04, -3.14])  # b737-steady-turn's placed start
@@ -894,8 +902,8 @@ def test_the_felt_rotation_beyond_its_band_and_its_ceiling_is_priced_again(param
     """With ``rotation_band`` each sub-step adds the felt rotation beyond the band (per canal channel,
     either way) to the residuals, BAND_WEIGHT times its weight: nothing within the band, the excess
     beyond it; ``rotation_ceiling`` adds the excess beyond the ceiling again, CEILING_WEIGHT times."""
-    from desdemona.perception import canals_model
-    from desdemona.problem import BAND_WEIGHT, CEILING_WEIGHT
+    from desdemona.cueing.formulation import BAND_WEIGHT, CEILING_WEIGHT
+    from desdemona.occupant.perception import canals_model
 
     model = Model(params, "yaw-track-cabin")
     options = dataclasses.replace(OPTIONS, perception=canals_model(), substeps=1)
@@ -928,8 +936,8 @@ def test_online_weighs_the_felt_rotation_by_default_where_the_path_is_s(tmp_path
     force above g) and a ceiling of 20, but on dfs-yaw (the modulus alone); --perception none,
     --rotation-band none and --rotation-ceiling none switch them off; the felt figures are judged
     through the thesis' model whatever the plan weighed."""
-    from desdemona import session
     from desdemona.cli import main
+    from desdemona.runs import session
 
     out = tmp_path / "default"
     assert main(["online", "cosine", "--config", "yaw-track", "--horizon", "1", "--step", "0.05",
@@ -966,8 +974,8 @@ def test_the_gimbals_null_motion_is_what_s_does_not_see():
     axes is -sin q5 (against the model's S at random attitudes); the term is zero away from the lock
     and for the motion the occupant feels, only where all three gimbals are free, and by default
     on-line on dfs with the real-time iteration alone (where it was measured)."""
-    from desdemona.kinematics import gimbal_null_rate
-    from desdemona.problem import NULL_WEIGHT, Formulation
+    from desdemona.cueing.formulation import NULL_WEIGHT, Formulation
+    from desdemona.machine.kinematics import gimbal_null_rate
 
     model = Model(config="dfs")
     free, rest = model.config.free, np.zeros(4)
@@ -1001,7 +1009,7 @@ def test_on_dfs_a_steady_spin_of_the_cabin_is_washed_out():
     spin as it is, it keeps spinning, and no faster: the arm's spin-up is not seeded where the preview
     asks for no more than g (it was, on every cycle, and that drew the plans into spinning the cabin
     up: 90 to 139 deg/s in 20 s without the weight, to 131 with it)."""
-    from desdemona import session
+    from desdemona.runs import session
 
     model, n = Model(config="dfs"), 201
     path = DesiredPath("quiet", np.linspace(0.0, 20.0, n), None, modulus=np.full(n, profiles.G))
@@ -1028,7 +1036,7 @@ def test_on_dfs_the_gimbals_do_not_spin_against_each_other_at_their_lock():
     the weight of the spin as it is, which the default has since), and the RMS error is within 2 %;
     nor with the ceiling too (33). Measured with the band of one threshold, where the spin was found:
     dfs's default band of five keeps this path away from the lock with or without the term (34 deg/s)."""
-    from desdemona import session
+    from desdemona.runs import session
 
     model = Model(config="dfs")
     cued = session.online(profiles.load("dfs-catapult"), model, deadline=float("inf"),

@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 import scipy.signal
 
-from desdemona import perception
-from desdemona.perception import Channel, canals_model, get_model, telban_cardullo_model, thesis_model
+from desdemona.occupant import perception
+from desdemona.occupant.perception import Channel, canals_model, get_model, telban_cardullo_model, thesis_model
 
 W = np.logspace(-3, 3, 400)
 ALPHA = 500.0

@@ -7,7 +7,7 @@ import pytest
 import scipy.io
 
 from desdemona.cli import main
-from desdemona.report import load
+from desdemona.results.report import load
 
 FAST = ["--starts", "1", "--h-u", "0.1"]
 
@@ -98,9 +98,10 @@ def test_existing_folder_is_not_overwritten(tmp_path, capsys):
 
 def test_batch_on_dask_equals_local_processes(tmp_path, capsys):
     distributed = pytest.importorskip("distributed")
-    from desdemona import batch, default_params
-    from desdemona.offline import OptimizeOptions
-    from desdemona.session import Choices
+    from desdemona import default_params
+    from desdemona.cueing.offline import OptimizeOptions
+    from desdemona.runs import batch
+    from desdemona.runs.session import Choices
 
     jobs = [batch.Job("catapult", "yaw-track"), batch.Job("dfs-catapult", "dfs")]  # two configurations, two workers
     choices, options = Choices(h_u=0.1), OptimizeOptions(starts=1)
@@ -159,8 +160,8 @@ def test_unknown_option_exits_2(tmp_path, capsys):
 
 def test_progress_is_told_after_each_start():
     from desdemona import Model, default_params, profiles
-    from desdemona.offline import OptimizeOptions, optimize
-    from desdemona.problem import ProblemOptions
+    from desdemona.cueing.formulation import ProblemOptions
+    from desdemona.cueing.offline import OptimizeOptions, optimize
 
     seen = []
     optimize(profiles.catapult(duration=3.0, push=1.0, quiet=0.5), Model(default_params(), "yaw-track"),

@@ -14,7 +14,8 @@ from collections import Counter
 import numpy as np
 import pytest
 
-from desdemona import Model, profiles, session
+from desdemona import Model, profiles
+from desdemona.runs import session
 from desdemona.service import machine, protocol, serve
 
 # These tests time what they watch (a real-time loop, a prompt stop): the README runs them alone.
@@ -227,7 +228,7 @@ def test_parking_stops_each_joint_as_quickly_as_its_limits_allow():
     """From the arm spinning near its rate limit and the gimbals moving, the stop brakes at the
     acceleration limit, ramped at the jerk limit, and is nearly still within a few cycles of the
     shortest stop the limits allow (continuous time); no limit is exceeded on the way."""
-    from desdemona.plan import State, stopping_jerk, stopping_time
+    from desdemona.machine.plan import State, stopping_jerk, stopping_time
 
     lim, h = Model(config="dfs").limits, 0.02
     state = State(np.zeros(4), np.array([2.5, -1.0, 0.5, 2.0]), np.array([0.3, 0.5, -1.0, 0.0]))

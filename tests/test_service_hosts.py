@@ -186,7 +186,8 @@ def test_replay_stops_promptly_on_ctrl_c():
         rx.settimeout(20)
         port = rx.getsockname()[1]
         script = textwrap.dedent(f"""
-            from desdemona import guard, profiles
+            from desdemona.support import guard
+            from desdemona import profiles
             from desdemona.service import hosts
             try:
                 with guard.interruptible():

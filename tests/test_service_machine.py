@@ -12,9 +12,9 @@ import time
 import numpy as np
 import pytest
 
-from desdemona.model import Model
-from desdemona.params import JOINT_NAMES
-from desdemona.plan import State
+from desdemona.machine.model import Model
+from desdemona.machine.params import JOINT_NAMES
+from desdemona.machine.plan import State
 from desdemona.service import machine, protocol
 
 # These tests time what they watch (a real-time loop, a prompt stop): the README runs them alone.

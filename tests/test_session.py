@@ -1,4 +1,4 @@
-"""A session's choices resolved once (desdemona.session): the same problem whichever command asks."""
+"""A session's choices resolved once (desdemona.runs.session): the same problem whichever command asks."""
 
 import argparse
 import dataclasses
@@ -6,11 +6,13 @@ import dataclasses
 import numpy as np
 import pytest
 
-from desdemona import Model, profiles, session, windows
+from desdemona import Model, profiles
 from desdemona.cli.options import build_parser
-from desdemona.perception import canals_model
-from desdemona.problem import WALL, ProblemOptions
-from desdemona.session import ChoiceError, Choices
+from desdemona.cueing import windows
+from desdemona.cueing.formulation import WALL, ProblemOptions
+from desdemona.occupant.perception import canals_model
+from desdemona.runs import session
+from desdemona.runs.session import ChoiceError, Choices
 
 
 @pytest.fixture(scope="module")
@@ -105,7 +107,7 @@ def test_a_jerk_weight_reaches_the_problem_off_line_and_on_line(catapult):
 
 
 def test_the_wall_reaches_the_off_and_on_line_problems_and_is_checked(catapult):
-    from desdemona.mpc import MPC, MPCOptions
+    from desdemona.control.mpc import MPC, MPCOptions
 
     model = Model(config="yaw-track-cabin")
     assert session.offline(catapult, model, Choices(wall=0.0)).options.wall == 0.0

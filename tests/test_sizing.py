@@ -3,10 +3,11 @@
 import numpy as np
 import pytest
 
-from desdemona import Model, profiles, sizing
-from desdemona.configs import get_configuration
-from desdemona.problem import ProblemOptions
-from desdemona.transcription import CueingProblem
+from desdemona import Model, profiles
+from desdemona.cueing import sizing
+from desdemona.cueing.formulation import ProblemOptions
+from desdemona.cueing.transcription import CueingProblem
+from desdemona.machine.configs import get_configuration
 
 
 def test_estimate_counts_the_problem_it_will_build(params):

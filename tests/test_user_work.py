@@ -15,8 +15,11 @@ import numpy as np
 import pytest
 
 import desdemona
-from desdemona import figures, online, profiles, report, sizing
+from desdemona import profiles
 from desdemona.cli import main
+from desdemona.control import online
+from desdemona.cueing import sizing
+from desdemona.results import figures, report
 
 QUICK = ["cosine", "--config", "yaw-track", "--h-u", "0.1", "--starts", "1"]
 BATCH = ["--configs", "yaw-track", "--h-u", "0.5", "--starts", "1", "--processes", "1"]
@@ -291,8 +294,8 @@ def test_messages_say_what_to_do_in_plain_words(tmp_path, capsys):
 
 def test_a_plan_far_beyond_memory_is_said_in_words():
     path = profiles.DesiredPath("long", np.array([0.0, 1e9]), np.array([[0, 0, 0, 0, 0, profiles.G]] * 2))
-    from desdemona.configs import get_configuration
-    from desdemona.problem import ProblemOptions
+    from desdemona.cueing.formulation import ProblemOptions
+    from desdemona.machine.configs import get_configuration
 
     with pytest.raises(sizing.TooLarge) as info:
         sizing.check_fits(path, get_configuration("full"), ProblemOptions(h_u=0.001))
@@ -345,8 +348,8 @@ def test_a_stop_raised_while_a_class_is_created_is_still_a_stop(monkeypatch, cap
     initialises, reaches the command as a RuntimeError or an ImportError caused by the interrupt
     (Python wraps what a field's __set_name__ or the module's initialisation raises): it is reported
     as the interrupt it is, exit 130 and one line, not a traceback."""
-    from desdemona import guard
     from desdemona.cli import commands
+    from desdemona.support import guard
 
     def loading(args):
         try:

@@ -1,4 +1,4 @@
-"""The 3D replay page (desdemona.view): self-contained, full-precision joint data, and, in a real
+"""The 3D replay page (desdemona.results.view): self-contained, full-precision joint data, and, in a real
 headless browser (Debian's chromium and chromedriver with selenium; skipped where they are missing), a
 page that loads without a console error, shows the pose of trajectory.csv at the cursor, draws the
 chain of eq. A.7 (the drawn cabin's pose equals kinematics.cabin_pose) and is not blank."""
@@ -13,8 +13,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from desdemona import kinematics, report, view
-from desdemona.params import JOINT_NAMES, default_params
+from desdemona.machine import kinematics
+from desdemona.machine.params import JOINT_NAMES, default_params
+from desdemona.results import report, view
 
 CHANNELS = ("wx", "wy", "wz", "fx", "fy", "fz")
 

@@ -4,12 +4,14 @@ starts each window where the one before was and passes the whole check."""
 import numpy as np
 import pytest
 
-from desdemona import profiles, session, sizing, windows
+from desdemona import profiles
+from desdemona.check.simulate import check
 from desdemona.cli import main
-from desdemona.model import Model
-from desdemona.offline import OptimizeOptions, optimize
-from desdemona.problem import ProblemOptions
-from desdemona.simulate import check
+from desdemona.cueing import sizing, windows
+from desdemona.cueing.formulation import ProblemOptions
+from desdemona.cueing.offline import OptimizeOptions, optimize
+from desdemona.machine.model import Model
+from desdemona.runs import session
 
 
 def _long(duration: float):
@@ -85,8 +87,8 @@ def test_a_later_windows_guesses_bring_the_start_s_motion_to_rest_within_the_tra
     its guesses bring the track, the joint with a travel, to rest at the plans' braking, so that no
     position needs clipping (a clipped guess leaves its gaps open; held at zero acceleration, the track
     ran past its end), and leave the joints that turn freely turning."""
-    from desdemona.offline import initial_guesses, settled
-    from desdemona.transcription import CueingProblem
+    from desdemona.cueing.offline import initial_guesses, settled
+    from desdemona.cueing.transcription import CueingProblem
 
     model = Model(params, "yaw-track-cabin")
     lim, n = model.limits, model.n
@@ -115,7 +117,7 @@ def test_braked_joints_come_to_rest_within_their_limits():
     """plan.braked: with jerk limits the acceleration ramps (at most J a step) to at most A against the
     motion and the rate ends at zero; without them the acceleration is held over each interval, at most
     A, and the rate ends exactly at zero after |qd| / A."""
-    from desdemona.plan import braked, node_states, ramp
+    from desdemona.machine.plan import braked, node_states, ramp
 
     h, A, J = np.full(200, 0.05), np.array([0.5, 2.0]), np.array([1.0, 20.0])
     qd0, a0 = np.array([1.2, -0.7]), np.array([0.4, 0.0])

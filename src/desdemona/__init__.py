@@ -1,11 +1,24 @@
 """desdemona: optimal motion cueing for the Desdemona centrifuge-based motion simulator.
 
-The data flow, one module per concept: parameters (:mod:`params`) -> model (:mod:`kinematics`,
-:mod:`dynamics`, :mod:`configs`, :mod:`model`) -> perception -> desired path (:mod:`profiles`) ->
-a session's choices (:mod:`session`) -> problem (:mod:`problem`, :mod:`transcription`) -> solver
-(:mod:`offline`; :mod:`mpc` and :mod:`online`) -> plan (:mod:`plan`) -> checked trajectory
-(:mod:`simulate`) -> metrics -> report and figures. The layers are in the README. The thesis "An optimal controller for Desdemona for an optimal feeling"
-is the specification; docstrings cite its sections and equations.
+The folders are the layers, lowest first; a module imports only from its own folder and those below
+(``tests/test_layout.py`` holds the order):
+
+- :mod:`~desdemona.support`: CasADi helpers, interrupts, files written whole, constants;
+- :mod:`~desdemona.occupant`: the person in the cabin, the vestibular model (chapter 6);
+- :mod:`~desdemona.profiles`: desired paths and their sources (built-in, CSV, JSBSim, logs);
+- :mod:`~desdemona.machine`: parameters, kinematics, dynamics, configurations, model, plans (appendices A, B);
+- :mod:`~desdemona.check`: the independent limit check and the felt figures;
+- :mod:`~desdemona.baselines`: the classical loops and the thesis' method;
+- :mod:`~desdemona.cueing`: the cueing problem, its transcription and its off-line solvers (chapters 3-5, 7);
+- :mod:`~desdemona.control`: the MPC, its predictors and the on-line session (section 7.5);
+- :mod:`~desdemona.results`: result folders, figures, the 3D view, comparisons;
+- :mod:`~desdemona.runs`: a session's choices resolved once, batches;
+- :mod:`~desdemona.service`: the real-time service, its hosts and the machine stand-in;
+- :mod:`~desdemona.cli`: the ``desdemona`` command.
+
+The names below are the public Python API; module paths inside the folders may move between
+versions. The thesis "An optimal controller for Desdemona for an optimal feeling" is the
+specification; docstrings cite its sections and equations.
 
 The main jobs from one import::
 
@@ -24,17 +37,20 @@ from desdemona._version import __version__
 # The names of the top level, each loaded from its module on first use (PEP 562): `import desdemona`
 # (and the command line, which must answer a Ctrl-C while CasADi and NumPy load) stays fast.
 _EXPORTS = {
-    "CONFIGURATIONS": "configs", "Configuration": "configs", "Limits": "configs", "get_configuration": "configs",
-    "Model": "model",
-    "OptimizeOptions": "offline", "Result": "offline", "optimize": "offline",
-    "MPCOptions": "mpc", "OnlineOptions": "online", "OnlineResult": "online", "run_online": ("online", "run"),
-    "Body": "params", "JointLimits": "params", "MachineParams": "params", "ParameterError": "params",
-    "default_params": "params", "load_params": "params", "thesis_toy_params": "params",
-    "Plan": "plan",
-    "ProblemOptions": "problem",
+    "CONFIGURATIONS": "machine.configs", "Configuration": "machine.configs", "Limits": "machine.configs",
+    "get_configuration": "machine.configs",
+    "Model": "machine.model",
+    "OptimizeOptions": "cueing.offline", "Result": "cueing.offline", "optimize": "cueing.offline",
+    "MPCOptions": "control.mpc", "OnlineOptions": "control.online", "OnlineResult": "control.online",
+    "run_online": ("control.online", "run"),
+    "Body": "machine.params", "JointLimits": "machine.params", "MachineParams": "machine.params",
+    "ParameterError": "machine.params", "default_params": "machine.params", "load_params": "machine.params",
+    "thesis_toy_params": "machine.params",
+    "Plan": "machine.plan",
+    "ProblemOptions": "cueing.formulation",
     "PROFILES": "profiles", "DesiredPath": "profiles", "ProfileError": "profiles",
     "load_path": ("profiles", "load"),
-    "LimitViolation": "simulate",
+    "LimitViolation": "check.simulate",
 }
 
 
@@ -42,7 +58,7 @@ def __getattr__(name: str):
     import importlib
 
     if name == "metrics":
-        return importlib.import_module("desdemona.metrics")
+        return importlib.import_module("desdemona.check.metrics")
     if name not in _EXPORTS:
         raise AttributeError(f"module 'desdemona' has no attribute {name!r}")
     module, attribute = _EXPORTS[name] if isinstance(_EXPORTS[name], tuple) else (_EXPORTS[name], name)

@@ -1,7 +1,7 @@
 """The ``desdemona`` command: thin wrappers around the library, ``main(argv) -> exit code``.
 
 :mod:`desdemona.cli.options` is the table of commands and options, :mod:`desdemona.cli.commands`
-what each command does (a session's choices are resolved by :mod:`desdemona.session`),
+what each command does (a session's choices are resolved by :mod:`desdemona.runs.session`),
 :mod:`desdemona.cli.exits` how a command ends.
 """
 
@@ -22,10 +22,13 @@ def _stop_behind(exc: BaseException, kinds: tuple = (KeyboardInterrupt,)) -> Bas
 
 
 try:  # a Ctrl-C while the libraries load (a second or two) ends the command quietly, as later
-    from desdemona import allocator, guard, profiles, session, sizing
+    from desdemona import profiles
     from desdemona.cli.exits import EXIT_NOT_CONVERGED, EXIT_UNSAFE, EXIT_USAGE, UserError
     from desdemona.cli.options import build_parser
-    from desdemona.params import ParameterError
+    from desdemona.cueing import sizing
+    from desdemona.machine.params import ParameterError
+    from desdemona.runs import session
+    from desdemona.support import allocator, guard
 except (KeyboardInterrupt, RuntimeError, ImportError) as exc:  # see _stop_behind
     if _stop_behind(exc) is None:
         raise
@@ -44,8 +47,8 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print(f"desdemona: {guard.Interrupted(signal.SIGINT).message}", file=sys.stderr)
         return 128 + signal.SIGINT
-    from desdemona.report import ReportError
-    from desdemona.simulate import LimitViolation
+    from desdemona.check.simulate import LimitViolation
+    from desdemona.results.report import ReportError
 
     allocator.reuse_freed_memory()  # IPOPT's factorisations reuse their workspace (allocator.py)
     allocator.one_blas_thread()  # one process per start, no spinning BLAS threads between them

@@ -1,9 +1,8 @@
 """What each subcommand of ``desdemona`` does, given its parsed arguments: ``run_NAME(args) -> exit code``.
 
-Each checks its inputs before any work (raising :class:`~desdemona.cli.exits.UserError` or the
-library's own errors, which :func:`desdemona.cli.main` reports as one line), resolves the session's
-choices through :mod:`desdemona.session`, runs the library and prints what it did.
-"""
+Each checks its inputs before any work (raising :class:`~desdemona.cli.exits.UserError` or the library's
+errors, reported by :func:`desdemona.cli.main` as one line), resolves the session's choices
+(:mod:`desdemona.runs.session`), runs the library and prints what it did."""
 
 from __future__ import annotations
 
@@ -16,12 +15,15 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona import files, guard, profiles, session, sizing
-from desdemona import perception as perception_models
+from desdemona import profiles
 from desdemona.cli.exits import EXIT_NOT_CONVERGED, EXIT_UNSAFE, EXIT_USAGE, UserError
-from desdemona.configs import get_configuration
-from desdemona.model import Model
-from desdemona.params import load_params
+from desdemona.cueing import sizing
+from desdemona.machine.configs import get_configuration
+from desdemona.machine.model import Model
+from desdemona.machine.params import load_params
+from desdemona.occupant import perception as perception_models
+from desdemona.runs import session
+from desdemona.support import files, guard
 
 PROGRESS_EVERY = 10.0  # [s] between progress lines inside a long solve (stderr not a terminal)
 
@@ -48,9 +50,9 @@ def _inputs(args) -> tuple:
 
 
 def _claim_out(args) -> Path:
-    """``args.out``, checked to be creatable and held for this run (:func:`desdemona.report.claim`)
+    """``args.out``, checked to be creatable and held for this run (:func:`desdemona.results.report.claim`)
     until it ends: a second run on the same folder is refused."""
-    from desdemona import report
+    from desdemona.results import report
 
     out = Path(args.out)
     parent = out.absolute().parent
@@ -72,7 +74,7 @@ def _run_inputs(args):
 def _result_folder(args) -> Path:
     """``args.out``, held for this run (:func:`_claim_out`), refused where it exists unless
     ``--overwrite`` and it is an earlier result that holds none of the run's inputs."""
-    from desdemona import report
+    from desdemona.results import report
 
     out = _claim_out(args)
     if out.exists() and not args.overwrite:
@@ -82,10 +84,11 @@ def _result_folder(args) -> Path:
 
 
 def run_optimize(args) -> int:
-    from desdemona import compiled, report
-    from desdemona.thesis import ThesisOptions
-    from desdemona.offline import OptimizeOptions, optimize, thesis_result
-    from desdemona.windows import optimize_windowed
+    from desdemona.baselines.thesis import ThesisOptions
+    from desdemona.cueing import compiled
+    from desdemona.cueing.offline import OptimizeOptions, optimize, thesis_result
+    from desdemona.cueing.windows import optimize_windowed
+    from desdemona.results import report
 
     model, path, out = _run_inputs(args)
     if args.starts < 1 or (args.workers is not None and args.workers < 1):
@@ -178,8 +181,8 @@ class _Progress:
 
 
 def run_batch(args) -> int:
-    from desdemona import batch
-    from desdemona.offline import OptimizeOptions
+    from desdemona.cueing.offline import OptimizeOptions
+    from desdemona.runs import batch
 
     out = _claim_out(args)
     batch.check_out(out, args.overwrite)
@@ -212,7 +215,7 @@ def run_batch(args) -> int:
 
 def _felt_choices(args) -> dict:
     """``online``'s --perception, --rotation-band, --rotation-ceiling and --spin-weight as
-    :func:`desdemona.session.online` takes them."""
+    :func:`desdemona.runs.session.online` takes them."""
     choices = {}
     if args.perception is not None:
         choices["perception"] = None if args.perception == "none" else perception_models.get_model(args.perception)
@@ -228,8 +231,9 @@ def _felt_choices(args) -> dict:
 
 
 def run_online(args) -> int:
-    from desdemona import online, report
-    from desdemona.metrics import joint_units
+    from desdemona.check.metrics import joint_units
+    from desdemona.control import online
+    from desdemona.results import report
 
     model, path, out = _run_inputs(args)
     reference = None if args.reference is None else profiles.load(args.reference)
@@ -383,7 +387,7 @@ def _say_imported(out: Path, path: profiles.DesiredPath, source=None, comments=(
 
 
 def run_plot(args) -> int:
-    from desdemona import figures, report, view
+    from desdemona.results import figures, report, view
 
     report.refuse_batch_folder(args.folder, "plot")
     traj, summary = report.load(args.folder)
@@ -400,14 +404,14 @@ def run_plot(args) -> int:
 
 
 def run_view(args) -> int:
-    from desdemona import view
+    from desdemona.results import view
 
     print(view.write(args.folder, args.out, args.overwrite))
     return 0
 
 
 def run_compare(args) -> int:
-    from desdemona import compare
+    from desdemona.results import compare
 
     if not args.lag_window > 0:
         raise UserError("--lag-window must be positive")
@@ -466,7 +470,7 @@ def describe(model: Model) -> str:
 
 
 def run_serve(args) -> int:
-    from desdemona import report
+    from desdemona.results import report
     from desdemona.service import protocol, serve
 
     model = _machine(args)

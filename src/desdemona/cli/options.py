@@ -6,13 +6,14 @@ from __future__ import annotations
 import argparse
 import difflib
 
-from desdemona import __version__, session
-from desdemona import perception as perception_models
+from desdemona._version import __version__
 from desdemona.cli import commands
 from desdemona.cli.exits import EXIT_CODES, SEE_EXIT_CODES
-from desdemona.configs import CONFIGURATIONS
-from desdemona.params import BUILTIN_SETS
-from desdemona.predictors import LIVE
+from desdemona.control.predictors import LIVE
+from desdemona.machine.configs import CONFIGURATIONS
+from desdemona.machine.params import BUILTIN_SETS
+from desdemona.occupant import perception as perception_models
+from desdemona.runs import session
 
 
 class _Parser(argparse.ArgumentParser):
@@ -407,8 +408,8 @@ def _add_initial_state_option(parser: argparse.ArgumentParser) -> None:
 
 
 def _add_cost_options(parser: argparse.ArgumentParser) -> None:
-    """What the cost weighs and the motion gain: the choices of :class:`desdemona.session.Choices`
-    that every command takes, resolved by :mod:`desdemona.session` alone."""
+    """What the cost weighs and the motion gain: the choices of :class:`desdemona.runs.session.Choices`
+    that every command takes, resolved by :mod:`desdemona.runs.session` alone."""
     parser.add_argument("--weights", default=None, metavar="SPEC",
                         help="the cost's weight per channel of S (diagonal of Q): felt (default): the path's "
                              "force weights, and rotation weighted by the perception thresholds so that one "

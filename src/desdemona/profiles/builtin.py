@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 
-from desdemona.profiles.path import G, DesiredPath, ProfileError
+from desdemona.profiles.path import DesiredPath, G, ProfileError
 
 
 def _grid(duration: float, dt: float) -> np.ndarray:

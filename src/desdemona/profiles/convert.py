@@ -16,9 +16,9 @@ from pathlib import Path
 import numpy as np
 from scipy import signal
 
-from desdemona import files
 from desdemona.profiles.csvfile import check_units, runs, write_csv
-from desdemona.profiles.path import G, DesiredPath, ProfileError, modulus_version
+from desdemona.profiles.path import DesiredPath, G, ProfileError, modulus_version
+from desdemona.support import files
 
 #: Body axes (x forward, y right, z down) to cabin axes (x right, y forward, z up): fx = f_y_body,
 #: fy = f_x_body, fz = -f_z_body; wx = q, wy = p, wz = -r.

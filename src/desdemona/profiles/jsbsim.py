@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 
 from desdemona.profiles import convert
-from desdemona.profiles.path import G, DesiredPath, ProfileError
+from desdemona.profiles.path import DesiredPath, G, ProfileError
 
 INSTALL_HINT = "pip install 'desdemona[jsbsim]' (or, in a source checkout, pip install '.[jsbsim]')"
 #: Default sample rate of the written path [Hz]: JSBSim steps at 120 Hz; 100 Hz keeps every motion cue

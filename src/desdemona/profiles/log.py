@@ -22,10 +22,10 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona import files
 from desdemona.profiles import clock, convert, csvfile
 from desdemona.profiles.clock import TIME_UNITS
-from desdemona.profiles.path import G, DesiredPath, ProfileError
+from desdemona.profiles.path import DesiredPath, G, ProfileError
+from desdemona.support import files
 
 #: Standard gravity [m/s^2], what a sensor's "g" unit means (ISO 80000-3); the simulator's own gravity
 #: (:data:`.path.G`, 9.81) stays what the paths and the convention check use.

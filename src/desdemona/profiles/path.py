@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from desdemona.params import GRAVITY as G
+from desdemona.support.units import GRAVITY as G
 
 MAX_SPECIFIC_FORCE = 100.0 * G  # beyond this a file is in the wrong units, not a vehicle's motion
 #: S of a level cabin at rest: no rotation, gravity felt as (0, 0, G).

@@ -4,9 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from desdemona.perception import THRESHOLDS
+from desdemona.occupant.perception import THRESHOLDS
 from desdemona.profiles.path import DesiredPath, ProfileError
-
 
 #: Named weights of the cost (:func:`weights_for`); the first is the command line's default.
 WEIGHT_CHOICES = ("felt", "path", "thresholds")

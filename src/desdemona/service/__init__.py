@@ -8,5 +8,5 @@ service runs a session and sends setpoints to the motion system.
 - :mod:`desdemona.service.machine`: a stand-in for the motion system (``desdemona machine``), which
   checks every setpoint on its own.
 
-The controller it calls (:mod:`desdemona.mpc`) is the one ``desdemona online`` runs, unchanged.
+The controller it calls (:mod:`desdemona.control.mpc`) is the one ``desdemona online`` runs, unchanged.
 """

@@ -18,7 +18,7 @@ a host could give, not a model of one a real simulator could make.
 Each message's ``sequence`` counts every sample, sent or not: a datagram withheld by ``drop`` or
 ``outage`` leaves a gap in the sequence the receiver sees, as a lost one would. Both hosts send only to
 the address given, sleep until each send time (no busy waiting), end with the path or the flight, and
-stop at once on Ctrl-C (``KeyboardInterrupt``, or :class:`desdemona.guard.Interrupted` inside the
+stop at once on Ctrl-C (``KeyboardInterrupt``, or :class:`desdemona.support.guard.Interrupted` inside the
 command line's ``interruptible()``).
 """
 
@@ -34,11 +34,11 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona import guard
 from desdemona.profiles import convert
 from desdemona.profiles import jsbsim as _flights
 from desdemona.profiles.path import DesiredPath, G, ProfileError
 from desdemona.service import protocol
+from desdemona.support import guard
 
 #: The largest payload of a UDP datagram over IPv4 [bytes]: a forecast must fit in one message.
 MAX_DATAGRAM = 65507

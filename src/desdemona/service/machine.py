@@ -6,18 +6,18 @@ joint beyond its range, rate, acceleration, jerk, torque or power, that moves a 
 held, or that jumps from where the machine is. This stand-in plays that part on one computer, so that
 ``desdemona serve`` can be tested end to end without the machine: whatever the service sends is
 measured here, independently of how the service computed it (neither its controller nor its own
-guard is used; only the model's limits, the exact motion of :func:`desdemona.plan.advance` and the
+guard is used; only the model's limits, the exact motion of :func:`desdemona.machine.plan.advance` and the
 model's torques).
 
 What is checked, for every setpoint (:func:`check_setpoint`):
 
 - every free joint over the whole cycle the setpoint commands, not only at its start: the motion
-  inside the cycle is the exact cubic of :func:`~desdemona.plan.advance` from the setpoint's position,
+  inside the cycle is the exact cubic of :func:`~desdemona.machine.plan.advance` from the setpoint's position,
   rate, acceleration and jerk, evaluated on :data:`POINTS` points of the cycle and at the instants
   where a position or a rate turns (so that position, rate and acceleration are checked exactly):
   position within [position_min, position_max], ``|rate| <= velocity``, ``|acceleration| <=
   acceleration``, ``|jerk| <= jerk``, ``|torque| <= effort`` and ``|torque * rate| <= power``, each with
-  the relative tolerance of the independent check (:data:`desdemona.simulate.TOLERANCE`);
+  the relative tolerance of the independent check (:data:`desdemona.check.simulate.TOLERANCE`);
 - every held joint (not in ``config.free``) at its fixed position (``config.fixed``) and at rest:
   rate, acceleration and jerk zero (``held``);
 - continuity (``continuity``): a setpoint that follows the previous one (the next sequence number)
@@ -35,7 +35,7 @@ written beside its place and renamed into it; ``summary.json`` last):
 
 - ``setpoints.csv``: one row per setpoint checked: receive time [s since the socket was bound],
   sequence, the sender's time, status, source, answers, cycle_time, step, then per joint of
-  :data:`desdemona.params.JOINT_NAMES` its position, rate, acceleration and jerk;
+  :data:`desdemona.machine.params.JOINT_NAMES` its position, rate, acceleration and jerk;
 - ``violations.csv``: one row per violation: time, sequence, joint, what (position, rate,
   acceleration, jerk, effort, power, held, continuity), value, limit, and a detail (where in the cycle,
   or which quantity). For a limit, value is the worst over the cycle and limit the bound it crosses;
@@ -62,14 +62,14 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona import guard
 from desdemona._version import __version__
-from desdemona.files import beside
-from desdemona.model import Model
-from desdemona.params import JOINT_NAMES
-from desdemona.plan import advance
+from desdemona.check.simulate import TOLERANCE
+from desdemona.machine.model import Model
+from desdemona.machine.params import JOINT_NAMES
+from desdemona.machine.plan import advance
 from desdemona.service import protocol
-from desdemona.simulate import TOLERANCE
+from desdemona.support import guard
+from desdemona.support.files import beside
 
 #: Points of each cycle at which the motion is evaluated (both ends included), besides the instants
 #: where a position or a rate turns.
@@ -310,7 +310,7 @@ def run(model: Model, listen: tuple[str, int], out: str | Path, idle: float = 2.
         duration: float | None = None, ready=None) -> Report:
     """Receive setpoints on UDP ``listen`` = (host, port), check each (:class:`Checker`), and write
     ``out`` (see the module). Stops ``idle`` seconds after the last datagram (once one came), after
-    ``duration`` seconds if given, or on KeyboardInterrupt / :class:`desdemona.guard.Interrupted`; then
+    ``duration`` seconds if given, or on KeyboardInterrupt / :class:`desdemona.support.guard.Interrupted`; then
     writes what it has and returns the :class:`Report`. ``ready()`` is called once the socket is bound.
     ValueError for a folder it must not write into, or an ``idle`` that is not positive.
     """

@@ -9,7 +9,7 @@ message (uint16), the sender's sequence number (uint32) and the sender's time [s
   optionally a forecast block: n samples of the same channels at a fixed step, the first one step
   after the message's time.
 - :class:`Setpoint` (kind 2, service -> machine): for every joint of the machine, in the order of
-  :data:`desdemona.params.JOINT_NAMES`, the position, rate, acceleration and jerk of the cycle that
+  :data:`desdemona.machine.params.JOINT_NAMES`, the position, rate, acceleration and jerk of the cycle that
   starts at ``cycle_time`` and lasts ``step``; the session's status; the command's source; and the
   sequence number of the host message the command answers.
 

@@ -2,8 +2,8 @@
 
 Every cycle of the session's step h (``--rate`` = 1 / h) the service takes the newest valid motion
 message of the host, turns what it has received into a preview with the session's predictor (as
-``desdemona online`` does: :mod:`desdemona.predictors`; ``forecast`` reads the host's own forecast
-block), runs :class:`desdemona.mpc.MPC` from the machine's state within the cycle's deadline (with
+``desdemona online`` does: :mod:`desdemona.control.predictors`; ``forecast`` reads the host's own forecast
+block), runs :class:`desdemona.control.mpc.MPC` from the machine's state within the cycle's deadline (with
 its fallbacks: the previous plan, then braking), checks the command against every limit over the
 cycle (:meth:`Model.step_limit_use`, on its own, after the controller's own check), and sends the
 setpoint of the cycle (:mod:`desdemona.service.protocol`). The machine's state advances by the
@@ -23,7 +23,7 @@ end-to-end latency is the compute time), else at the window's end with what it h
   once after one braking command.
 
 :func:`serve` returns a :class:`Served` session, which :func:`result` judges like an on-line run
-(:func:`desdemona.online.judge`: the independent check and the classical loop beside it) and
+(:func:`desdemona.control.online.judge`: the independent check and the classical loop beside it) and
 :func:`write` writes as ``desdemona online`` writes its folder, with the service's columns in
 ``cycles.csv``.
 """
@@ -40,16 +40,16 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from desdemona import guard
-from desdemona._casadi import call
-from desdemona.model import Model
-from desdemona.mpc import MPC
-from desdemona.online import OnlineOptions, OnlineResult, judge
-from desdemona.plan import Plan, State, stopping_jerk
-from desdemona.predictors import LIVE, predictor
+from desdemona.check.simulate import TOLERANCE, ClosedLoop
+from desdemona.control.mpc import MPC
+from desdemona.control.online import OnlineOptions, OnlineResult, judge
+from desdemona.control.predictors import LIVE, predictor
+from desdemona.machine.model import Model
+from desdemona.machine.plan import Plan, State, stopping_jerk
 from desdemona.profiles import DesiredPath, ProfileError
 from desdemona.service import protocol
-from desdemona.simulate import TOLERANCE, ClosedLoop
+from desdemona.support import guard
+from desdemona.support.symbolic import call
 
 #: Where the controller's command sources are named in the log: what the protocol calls them.
 SOURCE_NAMES = {"mpc": "plan", "shifted": "previous plan", "brake": "brake"}
@@ -238,7 +238,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
     """Run a session (see the module's docstring) until ``serving.duration``, ``serving.quiet_end`` or
     a stop signal; returns what it did. The controller's options are ``options.mpc`` (a plan every
     step: the session's step is the cycle); its predictor ``options.predictor``
-    (:data:`desdemona.predictors.LIVE`). ``ready()``, if given, is called once the service listens;
+    (:data:`desdemona.control.predictors.LIVE`). ``ready()``, if given, is called once the service listens;
     ``on_drop(reason)`` the first time a datagram is dropped for a reason."""
     mpc = options.mpc
     if options.predictor not in LIVE:
@@ -395,9 +395,9 @@ class _Session:
 
 
 def result(served: Served, model: Model, options: OnlineOptions) -> OnlineResult:
-    """The session judged as an on-line run (:func:`desdemona.online.judge`) over the span it followed
+    """The session judged as an on-line run (:func:`desdemona.control.online.judge`) over the span it followed
     the host (:meth:`Served.judged`), against the motion the host sent, with the classical loop run
-    beside it over the same span from the same state; :class:`~desdemona.simulate.LimitViolation` if
+    beside it over the same span from the same state; :class:`~desdemona.check.simulate.LimitViolation` if
     the machine's motion broke a limit."""
     path, loop = served.judged(model)
     return judge(path, model, options, loop, served.deadline)

@@ -1,0 +1,607 @@
+"""The on-line cueing controller: a model predictive controller with a safe fallback (thesis chapter 7).
+
+With a pilot in the loop the desired path is known only a horizon T_h ahead. :class:`MPC` is built
+once and stepped every re-plan period T_c (a whole number of plan steps h; by default T_c = h):
+``step(state, preview) -> Command``, the accelerations of the coming period. Each step solves the
+problem of :mod:`desdemona.cueing.formulation` over the horizon (eq. 3.8) from the measured state (or, with the
+thesis' computation delay, the state predicted for when the plan takes over, figure 7.2),
+warm-started from the previous plan shifted by one period, with every limit hard and every planned state
+*stoppable* (each track and heave position can still brake to rest within its limits: the end
+condition of chapter 7, section 3.4's K, imposed at every node so that any remainder of a plan ends
+stoppable too). The solve itself, and the layout of its variables, belong to
+:mod:`desdemona.cueing.transcription`.
+
+Fallback, in order, whenever the solver fails, misses its deadline or is given an unusable preview:
+the next step of the previous plan, for at most ``SHIFT_MAX``; then a braking command. Every command, whatever
+its source, is checked against every limit over the coming step before it is returned; a braking
+command is scaled down until it passes. The controller never returns a command that violates a limit.
+
+The measurements behind the defaults are in ``docs/benchmarks.md``, "Design decisions and the
+measurements behind them"; the predictors that turn what is known now into the preview are in
+:mod:`desdemona.control.predictors`; a whole closed-loop session is :func:`desdemona.control.online.run`.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import time
+from dataclasses import dataclass
+from typing import Literal, NamedTuple
+
+import numpy as np
+
+from desdemona.baselines.classical import still_home
+from desdemona.check.simulate import TOLERANCE
+from desdemona.cueing.formulation import ProblemOptions
+from desdemona.cueing.realtime_iteration import RealTimeIteration
+from desdemona.cueing.transcription import CueingProblem
+from desdemona.machine.model import Model
+from desdemona.machine.plan import (
+    REST_RATE,
+    Plan,
+    State,
+    advance,
+    braking_jerk,
+    homing_rate,
+    settled_rate,
+    stopping_extent,
+)
+from desdemona.occupant.perception import THRESHOLDS, VestibularModel
+from desdemona.profiles import ALIGNED_WEIGHTS, DesiredPath, above_g, at_least_g, vertical_force
+from desdemona.support.symbolic import call
+
+#: How long [s] a fallback follows the last plan before it brakes, at most; the next plan then starts from a
+#: fresh seed (a plan's far part is no command to follow open-loop for seconds: "Fallback to the last plan").
+SHIFT_MAX = 2.0
+#: Where the plan's tail doubles [s] on a configuration whose cabin tilts (``MPCOptions.far`` "auto"): beyond
+#: it a 4 s plan on ``full`` has intervals of 0.2 s, 46 intervals in all instead of 56 ("Coarse tail of the plan").
+FAR = 2.0
+#: How long [s] the brake holds the machine where it stopped before it brings it home (:meth:`MPC.homing`):
+#: a gap in the plans keeps the pose the next plan starts from; an outage that lasts goes home.
+HOMING_AFTER = 2.0
+
+
+@dataclass(frozen=True)
+class MPCOptions:
+    """What the controller plans and how (thesis chapter 7).
+
+    horizon : T_h [s], how far the preview reaches; step : h [s], the grid of the plan (its
+    accelerations are held this long); replan : T_c [s], the period at which a new plan is computed,
+    a whole number of steps (default: every step); delay : simulate the computation time as the thesis
+    does (7.1, figure 7.2): the plan computed during [t, t + T_c] from the state at t is applied from
+    t + T_c, so it starts from the state predicted there; deadline : compute budget per plan [s]
+    (default: T_c); substeps, regularisation, margin, weights, spin_weight, jerk_weight, wall, rotation_band,
+    rotation_ceiling (the felt rotation beyond so many thresholds weighs more): as in
+    :class:`~desdemona.cueing.formulation.ProblemOptions` (jerk_weight None:
+    :func:`~desdemona.cueing.formulation.default_jerk_weight` on-line); braking : fraction of the acceleration
+    limit assumed for stopping; method : "rti" (real-time iteration: one Gauss-Newton QP per plan,
+    linearised at the shifted previous plan, solved by CasADi's ``qp_solver`` plugin), "nlp" (IPOPT
+    to convergence, warm-started, at most ``max_iter`` iterations) or "auto" (see
+    :attr:`plan_method`); perception : minimise the perceived difference through this vestibular model
+    (chapter 6): the controller then carries the filter states of what the person has felt and of
+    what they should have felt from step to step; null_weight : the weight of the gimbals' rates that
+    turn the cabin not at all, near the inner gimbal's lock (:attr:`~desdemona.cueing.formulation.ProblemOptions.null_weight`;
+    None: its on-line default with the real-time iteration, where the spin was found, and 0 with IPOPT,
+    whose thesis-timing rows of ``benchmarks/online.py`` it moved by up to 12 %, "Gimbals' lock");
+    spin_up : fraction of the yaw's acceleration limit with which a still yaw is seeded (:meth:`MPC._leave_rest`), 0: off.
+
+    rti_step : the share of each real-time iteration's QP step taken from the previous plan
+    (:class:`~desdemona.cueing.realtime_iteration.RealTimeIteration`; 1 from a fresh seed); None: 0.5 where the cabin
+    turns about the vertical but cannot tilt (``yaw-track-cabin``), else 1. The Gauss-Newton model
+    leaves out the curvature of large residuals: where a sustained force is out of reach, turning the
+    small force the arm can hold towards it overshoots, and one full step a cycle swings the plan from
+    one side of the optimum to the other, cycle after cycle. A cabin that tilts reaches most sustained
+    forces with gravity; there (``full``), as on ``dfs`` and ``yaw-track``, the plan hardly swings,
+    and half steps lagged a fast target or led the plan, now and then, to a QP without a solution
+    ("Damped real-time iteration").
+
+    tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon (None: ``step``
+    throughout), twice as long beyond ``far`` seconds (None: ``tail_step`` to the end; "auto":
+    :data:`FAR` where the cabin tilts, as on ``full``, else to the end): what the plan does in a second
+    matters only through where it leaves the machine, and it is re-planned long before then ("Coarse
+    tail of the plan"). On ``yaw-track-cabin``, whose cycle is short anyway, the damped iteration swung
+    the yaw of a steady turn with the doubled tail (1.17 reversals a second against 0.04).
+    fine_step : the plan's step [s] over the first ``fine`` seconds after the first re-plan period and
+    one step more, rounded to whole steps (None: ``step``): at 100 Hz (``step`` 0.01) a 2 s plan has 37
+    intervals instead of 56, the felt force within 1 % on the corpus ("Fine part of the plan").
+
+    reach : how far each plan looks [s], at least ``horizon`` (None: the horizon). Beyond the horizon,
+    where nothing is known, the desired path is taken as held at its last previewed value: an end cost
+    (eq. 3.8's K) that prices where the plan leaves the machine by what holding the path would cost from
+    there; a short horizon needs it where the machine takes longer than the horizon to get where a cue
+    wants it ("Reach beyond the horizon"). The thesis takes K = 0 for the dfs (7.3). A session reaches
+    at least :func:`default_horizon` (:func:`desdemona.runs.session.online`).
+    """
+
+    horizon: float = 2.0
+    step: float = 0.02
+    replan: float | None = None
+    delay: bool = False
+    deadline: float | None = None
+    substeps: int = 1
+    regularisation: float = 1e-4
+    margin: float = 1e-3
+    braking: float = 0.5
+    weights: tuple[float, ...] | None = None
+    max_iter: int = 100
+    method: Literal["auto", "rti", "nlp"] = "auto"
+    qp_solver: str = "hpipm"
+    perception: VestibularModel | None = None
+    spin_up: float = 0.2
+    rti_step: float | None = None
+    tail_step: float | None = 0.1
+    fine: float = 0.4
+    fine_step: float | None = 0.02
+    far: float | Literal["auto"] | None = "auto"
+    jerk_weight: float | None = None
+    reach: float | None = None
+    rotation_band: float | None = None
+    rotation_ceiling: float | None = None
+    null_weight: float | None = None
+    wall: float = 0.0
+    spin_weight: float = 0.0
+
+    def __post_init__(self):
+        if self.method not in ("auto", "rti", "nlp"):
+            raise ValueError(f"method {self.method!r}: one of auto, rti, nlp")
+        if not (self.step > 0 and self.horizon >= 2 * self.step):
+            raise ValueError(f"need step > 0 and horizon >= 2 steps, got step {self.step}, horizon {self.horizon}")
+        r = self.period / self.step
+        if not (abs(r - round(r)) < 1e-9 and 1 <= round(r) and self.period <= self.horizon - self.step):
+            raise ValueError(f"replan = {self.replan}: the re-plan period must be a whole number of steps "
+                             f"({self.step:g} s) and shorter than the horizon ({self.horizon:g} s)")
+        if self.rti_step is not None and not 0.0 < self.rti_step <= 1.0:
+            raise ValueError(f"rti_step = {self.rti_step}: the share of the QP's step, in (0, 1]")
+        if self.far not in ("auto", None) and not (isinstance(self.far, (int, float)) and self.far >= 0.0):
+            raise ValueError(f"far = {self.far!r}: where the tail's intervals double [s], at least 0, "
+                             f"or 'auto' or None")
+        if self.reach is not None and not self.reach >= self.horizon:
+            raise ValueError(f"reach = {self.reach}: must be at least the horizon ({self.horizon:g} s)")
+
+    @property
+    def length(self) -> float:
+        """How far each plan looks [s]: the reach, or the horizon."""
+        return self.horizon if self.reach is None else self.reach
+
+    @property
+    def period(self) -> float:
+        """T_c [s]: the time between two plans."""
+        return self.step if self.replan is None else self.replan
+
+    @property
+    def plan_method(self) -> str:
+        """The method each plan is solved by: ``method``, or for "auto" the real-time iteration when a
+        plan is made every step and IPOPT to convergence when the re-plan period spans several steps.
+
+        One Gauss-Newton QP per plan is enough when plans follow each other step by step, each
+        linearised at the last; with a long period the plan moves far between two QPs, and the thesis
+        uses its T_c to solve to convergence (7.5) ("Plan method: real-time iteration or IPOPT")."""
+        if self.method != "auto":
+            return self.method
+        return "rti" if self.replan_steps == 1 else "nlp"
+
+    @property
+    def replan_steps(self) -> int:
+        """Steps of a plan applied before the next plan takes over."""
+        return int(round(self.period / self.step))
+
+    def grid(self) -> np.ndarray:
+        """The plan's interval lengths [s] over its :attr:`length`, each a whole number of steps:
+        ``step`` over the re-plan period and one step more, then ``fine_step`` to ``fine`` seconds, then
+        ``tail_step`` rounded to whole steps, from ``far`` seconds on twice that (the last interval
+        shorter where the plan ends; "auto" as None here: the controller resolves it for its
+        configuration, :class:`MPC`); uniform with a perception model whose channels are of higher
+        order than one (:attr:`~desdemona.occupant.perception.VestibularModel.diagonal`). The 4 s plans of ``full``
+        have 46 intervals instead of 56 with ``tail_step`` to the end: the QP's work falls, the felt force
+        stays within 1 % on the built-in paths and moves either way on real ones ("Coarse tail of the plan")."""
+        total = int(round(self.length / self.step))
+        block = 1 if self.tail_step is None else int(round(self.tail_step / self.step))
+        if block <= 1 or (self.perception is not None and not self.perception.diagonal):
+            return np.full(total, self.step)
+        first = min(total, self.replan_steps + 1)
+        fine = min(total, max(int(round(self.fine / self.step)), first))
+        far = total if self.far in (None, "auto") else int(round(self.far / self.step))
+        fine_block = 1 if self.fine_step is None else max(1, int(round(self.fine_step / self.step)))
+        sizes, start = [1] * first, first
+        while start < total:
+            size = fine_block if start < fine else (block if start < far else 2 * block)
+            sizes.append(min(size, (fine if start < fine else total) - start))
+            start += sizes[-1]
+        return self.step * np.array(sizes, dtype=float)
+
+
+@dataclass(frozen=True)
+class Command:
+    """What one cycle returns: the joint accelerations of its steps, and why.
+
+    sequence : (r, n) accelerations at the start of each step, r = ``options.replan_steps``;
+    source : "mpc" (this cycle's plan), "shifted" (the previous plan), "brake" (no plan left);
+    compute_time [s] of the cycle; reason : why a fallback was used ("" for "mpc");
+    jerk : (r, n) the accelerations' rate of change over each step (None: held constant).
+    """
+
+    sequence: np.ndarray
+    source: Literal["mpc", "shifted", "brake"]
+    compute_time: float
+    reason: str = ""
+    jerk: np.ndarray | None = None
+
+    @property
+    def jerks(self) -> np.ndarray:
+        """(r, n) jerks of the steps (zeros where the accelerations are held)."""
+        return np.zeros_like(self.sequence) if self.jerk is None else self.jerk
+
+    @property
+    def qdd(self) -> np.ndarray:
+        """(n,) the first step's accelerations."""
+        return self.sequence[0]
+
+
+def default_horizon(config) -> float:
+    """The horizon a session uses when none is given [s]: 2 s where only the yaw and the gimbals
+    move (dfs), 4 s where the track does, whose position must be planned further ahead than the cue
+    ("Default horizon"). A session's plans reach at least this far whatever the horizon
+    (``MPCOptions.reach``)."""
+    return 4.0 if 1 in config.free else 2.0
+
+
+class _Solved(NamedTuple):
+    """What one solve of :class:`MPC` gives: the plan (accelerations, jerks) per interval, whether the
+    solver succeeded, its time [s], the start's positions and (IPOPT only) the cost."""
+
+    plan: tuple[np.ndarray, np.ndarray]
+    success: bool
+    elapsed: float
+    start: np.ndarray
+    cost: float | None
+
+
+#: The least a placed start must save of the first plan's cost (a mean square felt error, (m/s^2)^2) to be
+#: taken: 1e-4 is an RMS of 0.01 m/s^2, a seventeenth of the smallest force threshold. Less is a place the
+#: plan does not feel (the track under a held 1 g), set by the solver's last digits ("Placed start").
+PLACE_SAVING = 1e-4
+
+
+class MPC:
+    """The model predictive cueing controller, built once for a model and options, then stepped."""
+
+    def __init__(self, model: Model, options: MPCOptions = MPCOptions(), weights=None):
+        if options.far == "auto":  # where the tail doubles: where the cabin tilts (MPCOptions.tail_step)
+            options = dataclasses.replace(options, far=FAR if 3 in model.config.free else None)
+        self.model, self.options = model, options
+        self.deadline = options.deadline if options.deadline is not None else options.period
+        free = model.config.free
+        turns_only = 4 in free and 3 not in free and not model.config.aligned  # the cabin turns, cannot tilt
+        self.rti_step = options.rti_step or (0.5 if turns_only else 1.0)
+        steps = options.grid()
+        t = np.r_[0.0, np.cumsum(steps)]
+        # A placeholder path fixes the problem's shape; the preview arrives as its parameter each step.
+        placeholder = DesiredPath("preview", t, None if model.config.modulus_cost else np.zeros((len(t), 6)),
+                                  weights=weights or (ALIGNED_WEIGHTS if model.config.aligned else (1.0,) * 6),
+                                  modulus=np.zeros(len(t)) if model.config.modulus_cost else None)
+        problem_options = ProblemOptions(h_u=options.step, substeps=options.substeps, initial="given",
+            initial_state=(np.zeros(model.n), np.zeros(model.n)), regularisation=options.regularisation,
+            margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6, stoppable=True,
+            braking=options.braking, brake_step=options.step, perception=options.perception, initial_filter="given",
+            steps=None if np.all(steps == options.step) else tuple(steps), jerk_weight=options.jerk_weight,
+            rotation_band=options.rotation_band, rotation_ceiling=options.rotation_ceiling, wall=options.wall, spin_weight=options.spin_weight,
+            null_weight=options.null_weight if options.null_weight is not None or options.plan_method == "rti" else 0.0)
+        self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
+        if self.problem.nz:  # the horizon's perception map is built now, not in the session's first cycle
+            self.problem.perceive(np.zeros((self.problem.N * self.problem.m, 6)))
+        self.limits, self._limit_use = model.limits, model.step_limit_use(options.step)
+        self.z = self.z_d = self._z_d_next = None  # filter states of the felt and the desired path, the desired one step on
+        self._rti = RealTimeIteration(self.problem, options.qp_solver) if options.plan_method == "rti" else None
+        self.smooth = self.problem.smooth
+        self.plan: tuple[np.ndarray, np.ndarray] | None = None  # the last plan per step: accelerations, jerks
+        self._counts = np.rint(self.problem.steps / options.step).astype(int)  # steps per interval
+        # each step's time since its interval's start, (steps, 1)
+        self._offsets = (np.concatenate([np.arange(c) for c in self._counts]) * options.step)[:, None]
+        self.plan_age = self.braked = 0  # steps since the last plan began; steps braked in a row
+        self.present = None  # the last preview's present value
+
+    def step(self, state, preview) -> Command:
+        """The commands of the coming cycle from the state (q, qd[, qdd]) and the preview of S_d.
+
+        state : where the plan starts: the measured state (positions, rates and, on a machine with
+            jerk limits, accelerations; zero where not given), or with ``delay`` the state predicted for
+            when the plan takes over; preview : a :class:`DesiredPath` starting there, or raw arrays
+            ``(t, values)`` with t (K,) [s] from there and values (K, 6) of S_d or (K,) of M_d for
+            ``dfs`` (as a predictor may deliver them, NaN included: such a preview is not used).
+        """
+        start = time.perf_counter()
+        q, qd = (np.asarray(v, dtype=float).reshape(self.model.n) for v in state[:2])
+        a = np.asarray(state[2], dtype=float).reshape(self.model.n) if len(state) > 2 else np.zeros_like(q)
+        if not self.smooth:
+            a = np.zeros_like(q)  # the acceleration is a command, not a state
+        now = State(q, qd, a)
+        if self.problem.nz and self.z is None:  # the person has sat still before the run
+            self.z = self.problem.filter.steady_state(self.model.S(q, qd, a))
+        t, values = self._preview_arrays(preview)
+        reason = self._preview_problem(t, values)
+        self._z_d_next = None
+        plan = None
+        if not reason:
+            self.present = values[0].copy() if values.ndim == 2 else None  # S_d now: the brake's home (homing)
+            turning = not self.model.config.takes_modulus or above_g(values, THRESHOLDS[5])  # _leave_rest's
+            plan, success, elapsed, *_ = self._solve(q, qd, a, self._data(t, values), turning=turning)
+            plan = self._per_step(*plan)
+            if not success:
+                reason, plan = "solver failed", None
+            elif elapsed > self.deadline:
+                reason, plan = f"deadline missed ({elapsed * 1e3:.1f} ms > {self.deadline * 1e3:.1f} ms)", None
+        r = self.options.replan_steps
+        if plan is not None and self._safe_sequence(now, plan[0][:r], plan[1][:r]):
+            self.plan, self.plan_age, self.braked = plan, 0, 0
+            command = Command(plan[0][:r].copy(), "mpc", time.perf_counter() - start, jerk=plan[1][:r].copy())
+        else:
+            reason = reason or "plan fails the limit check"
+            command = self._fallback(now, reason, start)
+        if self.problem.nz:
+            self._advance_filters(now, command)
+        return command
+
+    def place(self, state, preview) -> tuple[np.ndarray, np.ndarray]:
+        """Before a session that starts at rest: where the machine should stand. The first plan is
+        solved to convergence (IPOPT, at most ``max_iter`` iterations) from ``state`` = (q, qd) on
+        ``preview`` (as :meth:`step` takes it), then again with the start's positions free within
+        their limits (the arm's angle aside: with gravity along its axis it changes nothing felt), at
+        rest, as the off-line problem's ``initial="rest"`` has them, from the first plan. A controller
+        has this time before the session, and the machine is moved to the placed start beforehand; the
+        placed plan is the one the first real-time iteration is linearised at ("Placed start").
+
+        Returns the start (q0, qd0). Nothing is placed, and the controller is left as it was, on a
+        configuration whose cabin follows the force (it starts level at home, as off-line), with a
+        perception model whose felt state at rest depends on where the machine stands (otoliths with
+        states: the choice would change what was felt before the run), or where a solve fails or the
+        placed plan saves less than :data:`PLACE_SAVING`.
+        """
+        q, qd = (np.asarray(v, dtype=float).reshape(self.model.n) for v in state[:2])
+        a = np.zeros_like(q)
+        t, values = self._preview_arrays(preview)
+        prob = self.problem
+        # at rest nothing turns, and only filters of the force would remember where the machine stood
+        felt_at_rest = prob.nz and np.any(prob.filter.steady_gain()[:, 3:] != 0.0)
+        if self.model.config.aligned or felt_at_rest or self._preview_problem(t, values):
+            return q, qd
+        if prob.nz:
+            self.z = prob.filter.steady_state(self.model.S(q, np.zeros_like(q), a))
+        data = self._data(t, values)
+        first = self._solve(q, qd, a, data, method="nlp")
+        if not first.success:
+            return q, qd
+        # the seed of the placed solve: a plan taking over at the first step is one period younger than the last cycle's
+        self.plan, self.plan_age = self._per_step(*first.plan), -self.options.replan_steps
+        placed = self._solve(q, qd, a, data, method="nlp", place=True)
+        if placed.success and first.cost - placed.cost > PLACE_SAVING:
+            self.plan = self._per_step(*placed.plan)
+            return self._within_a_turn(placed.start), np.zeros_like(qd)
+        self.plan, self.plan_age = None, 0
+        return q, qd
+
+    def forget(self) -> None:
+        """Drop the last plan: the machine was moved by something else (parked by the real-time
+        service while the host was quiet), so the next cycle plans afresh from where it stands."""
+        self.plan, self.plan_age = None, 0
+
+    def _within_a_turn(self, q) -> np.ndarray:
+        """``q`` with each joint that has no position limit (a gimbal that turns freely) taken within
+        half a turn of home, [-pi, pi): the same attitude, so the same plan, but a start the machine
+        reaches quickly."""
+        lim = self.limits
+        free = ~(np.isfinite(lim.position_min) | np.isfinite(lim.position_max))
+        return np.where(free, np.remainder(q + np.pi, 2.0 * np.pi) - np.pi, q)
+
+    def _advance_filters(self, state: State, command) -> None:
+        """Carry the felt filter state over the cycle just commanded, and the desired one with it."""
+        prob = self.problem
+        s = np.arange(prob.m)[:, None] / prob.m * self.options.step
+        for qdd, jerk in zip(command.sequence, command.jerks):
+            S = self.model.S(*advance(state.q, state.qd, qdd, s, jerk), qdd + jerk * s)
+            for row in S:
+                self.z = prob.filter.Ad @ self.z + prob.filter.Bd @ row
+            state = state.advance(qdd, self.options.step, jerk)
+        # without a usable preview the desired state is unknown: restart from the next preview's steady state
+        self.z_d = self._z_d_next
+
+    def _preview_arrays(self, preview):
+        """(t, values) of a preview, as the problem takes them: S_d, or the modulus M_d on a modulus
+        configuration, a modulus turned into the force along the occupant's vertical on one whose cabin
+        follows the force.
+
+        On those configurations (``dfs``, ``dfs-yaw``: no heave, the head at the gimbals' centre) the
+        felt force is never weaker than g, and a desired force below g is planned for as g in its
+        direction, the nearest the machine can do: chased as it is, one QP per cycle linearised at the
+        last plan meets residuals its Gauss-Newton model does not see and turned the cabin over
+        ("Modulus below g on-line"). The run is judged against the path as it is."""
+        if isinstance(preview, DesiredPath):
+            preview = self.model.config.cue_path(preview)
+            t, values = preview.t, preview.M_d if self.model.config.modulus_cost else preview.S_d
+        else:
+            t, values = preview
+            values = None if values is None else np.asarray(values, dtype=float)
+            if values is not None and values.ndim == 1 and self.model.config.aligned:
+                values = vertical_force(values)  # a modulus, for a cabin that follows the force
+        if values is not None and self.model.config.takes_modulus:
+            values = at_least_g(values)
+        return np.asarray(t, dtype=float), values
+
+    def _preview_problem(self, t, values) -> str:
+        shape = (len(t),) if self.model.config.modulus_cost else (len(t), 6)
+        if values is None or values.shape != shape:
+            return "preview misses the channels this configuration needs"
+        if not (np.all(np.isfinite(values)) and np.all(np.isfinite(t))):
+            return "preview has NaN or inf"
+        if len(t) < 2 or np.any(np.diff(t) <= 0):
+            return "preview time does not increase"
+        if t[-1] < self.options.horizon - 1e-9:
+            return f"preview covers {t[-1]:.3g} s of the {self.options.horizon:g} s horizon"
+        return ""
+
+    def _data(self, t, values) -> np.ndarray:
+        prob = self.problem
+        times = prob.sub_times()  # relative to now: the placeholder starts at 0
+        # a plan that reaches past the preview takes its last value as held there (np.interp does)
+        if self.model.config.modulus_cost:
+            return prob.with_steps(np.interp(times, t, values).T)
+        S_d = np.column_stack([np.interp(times.ravel(), t, values[:, i]) for i in range(6)])
+        if prob.nz == 0:
+            return prob.with_steps(S_d.reshape(prob.N, -1).T)
+        # perceived desired path over the horizon, from the desired filter state carried so far
+        held = S_d.reshape(prob.N, len(prob.fractions), 6)[:, :prob.m, :].reshape(-1, 6)
+        if self.z_d is None:
+            self.z_d = prob.filter.steady_state(held[0])
+        y_d, states = prob.perceive(held, self.z_d)
+        self._z_d_next = states[prob.m * self.options.replan_steps]  # after this cycle's sub-steps
+        return prob.with_steps(y_d.reshape(prob.N, -1).T)
+
+    def _solve(self, q, qd, a, data, method: str | None = None, place: bool = False, turning: bool = True):
+        """One warm-started solve from (q, qd, a) by ``method`` (default the options'); with ``place``
+        the start's positions are free within their limits (``q`` is then only the guess's start);
+        ``turning``: the preview asks for what a turning arm gives (:meth:`_leave_rest`). Returns a :class:`_Solved`."""
+        prob = self.problem
+        method = method or self.options.plan_method
+        u = self._shifted_plan(prob) if self.plan is not None else np.zeros((prob.N, self.model.n))
+        u = self._leave_rest(qd, u) if turning else u
+        share = self.rti_step if self.plan is not None else 1.0  # the whole step from a fresh seed
+        # RTI: a consistent point, not clipped
+        x, controls = prob.guess(q, qd, u, a, clip=method != "rti", filters=self.z if prob.nz else None)
+        bounds = prob.start_bounds(q, qd, a, self.z, positions=self._placing(q) if place else None)
+        if self.model.config.takes_modulus:
+            self._one_way(qd, a, bounds)
+        start = time.perf_counter()
+        w, success, cost = prob.solve_from(x, controls, bounds, data, self._rti if method == "rti" else None, share)
+        elapsed = time.perf_counter() - start
+        q0, accelerations, jerks = prob.plan_of(w)
+        return _Solved((accelerations, jerks), success, elapsed, q0, cost)
+
+    def _placing(self, q) -> tuple[np.ndarray, np.ndarray]:
+        """Bounds on the start's positions when it is placed: each joint within its limits, except
+        the arm, which stays at ``q``: with gravity along its axis its angle changes nothing felt."""
+        lower, upper = self.problem.position_bounds()
+        if 0 in self.model.config.free:
+            k = self.model.config.free.index(0)
+            lower[k] = upper[k] = q[k]
+        return lower, upper
+
+    def _one_way(self, qd, a, bounds) -> None:
+        """Keep the arm turning the way it turns (forwards from rest) over the plan: bounds on the
+        yaw's rate, from the first node at which its acceleration can have been brought to zero (|a| /
+        jerk limit after now), in the direction of the rate it then has at the soonest, qd + a |a| / (2
+        jerk limit): a plan that must still cross zero rate is not made infeasible.
+
+        The modulus cues of ``dfs`` and ``dfs-yaw`` are the same for either direction of turning
+        ("without influencing the optimization results, q1' can be assumed positive", 7.4.2), so the
+        cue has a mirror image of every plan, and a plan linearised on a slowing arm can slide into
+        the mirror: through zero rate (where the modulus is only g) and up the other way, instead of
+        speeding up again ("One-way arm on dfs").
+        """
+        prob, k = self.problem, self.model.config.free.index(0)
+        jerk = self.limits.jerk[k] if self.smooth else np.inf
+        settle = abs(a[k]) / jerk
+        rate = settled_rate(qd[k], a[k], jerk)
+        first = max(1, int(np.searchsorted(prob.t_nodes - prob.t_nodes[0], settle - 1e-12)))
+        prob.keep_rate_sign(bounds, k, first, 1.0 if rate >= 0.0 else -1.0)
+
+    def _per_step(self, accelerations, jerks) -> tuple[np.ndarray, np.ndarray]:
+        """A plan's (accelerations, jerks) per interval as the same plan per step (the grid's intervals
+        are whole numbers of steps): each step starts where the ramp of its interval is."""
+        jerks = np.repeat(jerks, self._counts, axis=0)
+        return np.repeat(accelerations, self._counts, axis=0) + jerks * self._offsets, jerks
+
+    def _shifted_plan(self, prob: CueingProblem) -> np.ndarray:
+        """(N, n) the previous plan's accelerations from now on, on the problem's grid: at each
+        interval's end with jerk limits (what the ramp of :meth:`CueingProblem.guess` aims at), at its
+        start without; held at the last value past the plan's end, within the limits."""
+        accelerations, jerks = self.plan
+        times = np.arange(len(accelerations) + 1) * self.options.step
+        previous = Plan(times, np.zeros(self.model.n), np.zeros(self.model.n), accelerations, jerks)
+        now = (self.plan_age + self.options.replan_steps) * self.options.step
+        times = now + (prob.t_nodes[1:] if self.smooth else prob.t_nodes[:-1])
+        at = previous.accelerations_at(np.minimum(times, prob.t_nodes[-1]))
+        return np.clip(at, -self.limits.acceleration, self.limits.acceleration)
+
+    def _leave_rest(self, qd, u) -> np.ndarray:
+        """The seed ``u`` (N, n), with a spin-up of the yaw where it would otherwise stay still.
+
+        Zero yaw rate is a stationary point of the cue: the centripetal terms and the modulus have no gradient
+        there, so a solve linearised at a still yaw returns a still yaw forever, and a run from rest never turns the
+        arm. Where the yaw's fastest rate over the seed is below ``REST_RATE``, the seed's yaw acceleration is drawn
+        towards ``options.spin_up`` times its limit (in the direction it already turns), the more the stiller it is:
+        the linearisation then sees what turning would give, and the solve decides whether to turn ("Spin-up from
+        rest"). Drawn by degrees, not switched: a seed switched to a spin-up whenever a slow turn dipped below the
+        threshold kicked every joint each time ("Damped real-time iteration"). Not seeded where the preview asks for
+        a modulus of g or less (:meth:`_solve`'s ``turning``, "A steady spin of the cabin on `dfs`").
+        """
+        if 0 not in self.model.config.free or self.options.spin_up == 0.0:
+            return u
+        k = self.model.config.free.index(0)
+        rates = qd[k] + np.cumsum(u[:, k] * self.problem.steps)
+        stillness = 1.0 - float(np.max(np.abs(rates))) / REST_RATE
+        if stillness <= 0.0:
+            return u
+        u = u.copy()
+        spin = (1.0 if qd[k] >= 0 else -1.0) * self.options.spin_up * self.limits.acceleration[k]
+        u[:, k] += stillness * (spin - u[:, k])
+        return u
+
+    def _safe(self, q, qd, qdd, jerk) -> bool:
+        """Every limit over the coming step with this command, to the independent check's tolerance."""
+        return float(np.max(call(self._limit_use, q, qd, qdd, jerk))) <= 1.0 + TOLERANCE
+
+    def _safe_sequence(self, state: State, sequence, jerks) -> bool:
+        """:meth:`_safe` for every step of a sequence of accelerations and jerks, from ``state`` on; with
+        jerk limits each step must start at the acceleration the last one ended with, and :meth:`brake`
+        must be able to stop the state it leaves within the travel (:func:`~desdemona.machine.plan.stopping_extent`)
+        and the velocity limits (qd + a |a| / 2J): a one-QP plan keeps its own such rows to first order."""
+        lim = self.limits
+        for qdd, jerk in zip(sequence, jerks):
+            jumps = self.smooth and np.any(np.abs(qdd - state.a) > TOLERANCE * lim.acceleration)
+            if jumps or not self._safe(state.q, state.qd, qdd, jerk):
+                return False
+            state = state.advance(qdd, self.options.step, jerk)
+        if not self.smooth:  # a constant deceleration: the plans' own stopping rows suffice
+            return True
+        low, high = stopping_extent(state.q, state.qd, state.a, lim.acceleration, lim.jerk, self.options.step)
+        settles = np.abs(settled_rate(state.qd, state.a, lim.jerk)) <= lim.velocity * (1.0 + TOLERANCE)
+        return bool(np.all((high <= lim.position_max) & (low >= lim.position_min) & settles))
+
+    def _fallback(self, state: State, reason: str, start: float) -> Command:
+        r, most = self.options.replan_steps, round(SHIFT_MAX / self.options.step)
+        if self.plan is not None and self.plan_age + 2 * r <= min(len(self.plan[0]), most):
+            self.plan_age += r
+            window = slice(self.plan_age, self.plan_age + r)
+            sequence, jerks = self.plan[0][window], self.plan[1][window]
+            if self._safe_sequence(state, sequence, jerks):
+                return Command(sequence.copy(), "shifted", time.perf_counter() - start, reason, jerks.copy())
+        self.plan, sequence, jerks = None, [], []  # a fresh seed for the next plan
+        self.braked += r
+        for _ in range(r):
+            qdd, jerk = self.brake(*state)
+            sequence.append(qdd)
+            jerks.append(jerk)
+            state = state.advance(qdd, self.options.step, jerk)
+        return Command(np.array(sequence), "brake", time.perf_counter() - start, reason, np.array(jerks))
+
+    def brake(self, q, qd, a=None) -> tuple[np.ndarray, np.ndarray]:
+        """The step's (acceleration, jerk) towards rest, and after :data:`HOMING_AFTER` of braking in a
+        row towards home (:meth:`homing`), that keeps every limit over the step: with jerk limits
+        :func:`~desdemona.machine.plan.braking_jerk`, without them the strongest change of rate (at most
+        ``braking`` x the acceleration limit); scaled down until safe."""
+        lim, h, zero = self.limits, self.options.step, np.zeros_like(qd)
+        most, a = self.options.braking * lim.acceleration, zero if a is None else np.asarray(a, dtype=float)
+        goal = self.homing(q, qd) if self.braked * h >= HOMING_AFTER else zero  # a lasting outage
+        full = braking_jerk(q, qd, a, h, lim, self.options.braking, goal) if self.smooth else np.clip((goal - qd) / h, -most, most)
+        commands = [(a, s * full) if self.smooth else (s * full, zero) for s in (1.0, 0.75, 0.5, 0.25, 0.1, 0.0)]
+        for qdd, jerk in commands:
+            if self._safe(q, qd, qdd, jerk):
+                return qdd, jerk
+        # the last resort (the independent check reports any excess): the whole jerk, or holding
+        return commands[0] if self.smooth else commands[-1]
+
+    def homing(self, q, qd) -> np.ndarray:
+        """The rates that take a braked machine home (:func:`~desdemona.machine.plan.homing_rate`): where a still
+        machine cues the last present force best (:func:`~desdemona.baselines.classical.still_home`)."""
+        free, force = self.model.config.free, None if self.present is None else self.present[3:]
+        home = still_home(q, self.model, force)
+        return homing_rate(q, qd, home, np.isin(np.arange(len(q)), self.limits.bounded), free.index(0) if 0 in free else None)

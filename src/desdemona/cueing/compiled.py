@@ -1,0 +1,248 @@
+"""Stage functions compiled to machine code once, and kept on disk for every later run.
+
+CasADi evaluates an SX Function in its own virtual machine; generated as C and compiled, the same
+function runs several times faster. On the off-line catapult on ``full`` (160 stages) the constraint
+Jacobian took 2.9 s of a 10.9 s solve interpreted and 0.57 s compiled. The code is straight-line
+arithmetic that the compiler's optimisations barely speed up: ``-O0`` compiles the stage functions of
+``full`` in 1.3 s, ``-O1`` in 5.5 s (``-O2`` 38 s for the Jacobian alone) for the same solve time.
+
+The stage functions depend only on the machine, the configuration and the problem's options: the
+interval's length and the desired values are their inputs. So a library is compiled once per machine
+parameter set and configuration and reused by every path and every later run. It is found by the
+SHA-256 of its C source (with the CasADi version and the compiler command), in :func:`cache_dir`; a
+new library is written under a temporary name and renamed, so that two processes compiling the same
+source at once leave one whole file. Files there are only ever added: remove the folder to clear it.
+
+A fatrop solver of a problem that later runs pose again (the windows of a recording, the same for
+every recording: :mod:`desdemona.cueing.windows`) is kept there too, serialized with its NLP's library
+(:func:`store_solver`): CasADi's set-up of fatrop for a problem's structure takes 15 s at 1,200
+intervals, loading it back under a second.
+
+Without a C compiler (``$CC``, else ``cc``), or when compiling fails, :func:`compiled` returns None
+and the caller keeps the virtual machine: slower, same results.
+"""
+
+from __future__ import annotations
+
+import gzip
+import hashlib
+import os
+import platform
+import shutil
+import subprocess
+import tempfile
+import warnings
+import zlib
+from pathlib import Path
+
+import casadi as ca
+
+FLAGS = ("-O0", "-fPIC", "-shared")
+#: Told one line before compiling into the cache, where that takes long (with optimisation: fatrop's
+#: stage functions on ``full`` take about a minute at ``-O1``); the command line prints it.
+notice = None
+# Where compiling takes longer than this, something is wrong with the toolchain: keep the virtual machine.
+TIMEOUT = 300.0
+
+
+def cache_dir() -> Path:
+    """``$DESDEMONA_CACHE``, else ``$XDG_CACHE_HOME/desdemona``, else ``~/.cache/desdemona``."""
+    if os.environ.get("DESDEMONA_CACHE"):
+        return Path(os.environ["DESDEMONA_CACHE"])
+    base = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
+    return Path(base) / "desdemona"
+
+
+def compiler() -> str | None:
+    """The C compiler's path, or None."""
+    return shutil.which(os.environ.get("CC", "cc"))
+
+
+def cpu_flags() -> set[str]:
+    """The instruction set extensions of this processor (``/proc/cpuinfo``; empty where there is none)."""
+    try:
+        with open("/proc/cpuinfo") as fh:
+            for line in fh:
+                if line.startswith("flags"):
+                    return set(line.split(":", 1)[1].split())
+    except OSError:
+        pass
+    return set()
+
+
+def processor_flags() -> tuple[str, ...]:
+    """``-mavx2 -mfma`` on an x86-64 processor that has them, else nothing: with optimisation the
+    stages' Jacobian and Hessian then evaluate in 13 % less time (fused multiply-adds; measured on
+    ``full``, "fatrop on BLASFEO for the processor" in docs/benchmarks.md). The flags are part of the cache
+    key, so a cache shared with another processor compiles its own library."""
+    if platform.machine() in ("x86_64", "AMD64") and {"avx2", "fma"} <= cpu_flags():
+        return ("-mavx2", "-mfma")
+    return ()
+
+
+def library(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> tuple[str, Path]:
+    """The C source of ``functions`` and the path its compiled library (compiled with ``flags``) has
+    in the cache."""
+    source = c_source(functions, "stages.c")
+    key = hashlib.sha256("\n".join([ca.__version__, str(compiler()), *flags, source]).encode()).hexdigest()
+    return source, cache_dir() / f"stages-{key[:24]}.so"
+
+
+def is_cached(functions: list[ca.Function]) -> bool:
+    """Whether these functions' library is already in the cache."""
+    return library(functions)[1].exists()
+
+
+def compiled(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> list[ca.Function] | None:
+    """The same functions, evaluated by a library compiled with ``flags`` from the cache (compiled now
+    if it is not there yet), or None without a working compiler (with a warning that says why)."""
+    path = build(functions, flags)
+    return None if path is None else [ca.external(function.name(), str(path)) for function in functions]
+
+
+def build(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> Path | None:
+    """The path of the cached library of ``functions`` compiled with ``flags`` (compiled now if it is
+    not there yet), or None without a working compiler (with a warning that says why)."""
+    source, path = library(functions, flags)
+    if path.exists():
+        return path
+    cc = compiler()
+    if cc is None:
+        warnings.warn(f"no C compiler ({os.environ.get('CC', 'cc')}): the stage functions stay "
+                      "interpreted (slower, same results)", RuntimeWarning, stacklevel=2)
+        return None
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        warnings.warn(f"cannot create the cache {path.parent} ({error}): the stage functions stay "
+                      "interpreted", RuntimeWarning, stacklevel=2)
+        return None
+    if notice is not None and "-O0" not in flags:
+        notice(f"compiling the stage functions for this machine and these options, once, into {path.parent}")
+    return path if _compiled_into(cc, path, source, "stages.c", list(flags)) else None
+
+
+def c_source(functions: list[ca.Function], file: str) -> str:
+    """The C source of ``functions``, generated as the file ``file`` (its name is in the source)."""
+    generator = ca.CodeGenerator(file, {"with_header": False})
+    for function in functions:
+        generator.add(function)
+    return generator.dump()
+
+
+def linked(source: str, stages: Path, name: str, kept: Path | None = None) -> ca.Function | None:
+    """Function ``name`` of the functions whose C ``source`` is :func:`c_source`'s, compiled now into
+    a library of their own that calls the compiled stage functions of the library ``stages``
+    (:func:`build`); the other functions are in the same library, where CasADi finds them by name
+    (``External.factory``: an NLP solver asks its oracle for ``nlp_jac_g``, ``nlp_hess_l``, ...).
+    Compiled at ``-O0`` (these functions only assemble the stages' blocks) into a temporary folder that
+    is removed once the library is loaded, or, given ``kept``, into that file of the cache (a stored
+    solver's, :func:`store_solver`). None, with a warning, where compiling fails."""
+    flags = [*FLAGS, str(stages), f"-Wl,-rpath,{stages.parent}"]
+    if kept is not None:
+        return ca.external(name, str(kept)) if _compiled_into(compiler(), kept, source, "assembly.c", flags) else None
+    with tempfile.TemporaryDirectory(prefix="desdemona-") as work:
+        so_file = Path(work) / "assembly.so"
+        if not _cc(compiler(), source, Path(work) / "assembly.c", [*flags, "-o", str(so_file)]):
+            return None
+        return ca.external(name, str(so_file))  # loaded: the file may go
+
+
+def writable() -> bool:
+    """Whether the cache can take new files (a shared, read-only one cannot: nothing is kept then)."""
+    folder = cache_dir()
+    return folder.is_dir() and os.access(folder, os.W_OK)
+
+
+def solver_files(key: str) -> tuple[Path, Path]:
+    """Where a solver found by ``key`` (a SHA-256 of everything it depends on) is kept in the cache:
+    the solver serialized, and its NLP's library (:func:`linked`), whose path the solver holds."""
+    return cache_dir() / f"solver-{key[:24]}.casadi.gz", cache_dir() / f"nlp-{key[:24]}.so"
+
+
+def stored_solver(key: str) -> ca.Function | None:
+    """The solver :func:`store_solver` kept under ``key``, or None where there is none (or it no longer
+    loads: a warning says why, and the caller builds it again)."""
+    file, nlp = solver_files(key)
+    if not (file.exists() and nlp.exists()):
+        return None
+    try:
+        return ca.Function.deserialize(gzip.decompress(file.read_bytes()).decode())
+    except (OSError, RuntimeError, EOFError, zlib.error) as error:
+        warnings.warn(f"the solver kept in {file} did not load ({str(error).strip()[:200]}): building it "
+                      "again", RuntimeWarning, stacklevel=2)
+        return None
+
+
+def store_solver(key: str, solver: ca.Function) -> None:
+    """Keep ``solver`` (whose NLP is the library :func:`linked` compiled into ``solver_files(key)[1]``) in
+    the cache for later runs: CasADi sets fatrop up for a problem's structure in a time that grows with
+    the square of its intervals (15 s at 1,200), and loads it back in under a second. Written under a
+    temporary name and renamed, as the libraries are; where the cache cannot be written, a warning."""
+    file = solver_files(key)[0]
+    data = gzip.compress(solver.serialize().encode(), compresslevel=1)  # 62 -> 2 MB: mostly sparsity
+    written = None
+    try:
+        with tempfile.NamedTemporaryFile(dir=file.parent, prefix=".storing-", delete=False) as out:
+            written = Path(out.name)
+            out.write(data)
+        written.chmod(0o644)  # readable as the libraries beside it are
+        os.replace(written, file)
+    except OSError as error:
+        if written is not None:
+            written.unlink(missing_ok=True)
+        warnings.warn(f"cannot keep the solver in {file.parent} ({error}): it is built again next time",
+                      RuntimeWarning, stacklevel=2)
+
+
+def oracle(nlp: dict, derivatives: dict[str, ca.Function]) -> list[ca.Function]:
+    """An NLP as an NLP solver asks its oracle for it, by name (``nlp_f``, ``nlp_g``, ``nlp_grad_f``,
+    ``nlp_jac_g``, ``nlp_hess_l``, ``nlp_grad``), with the given derivatives (``grad_f``, ``jac_g`` and
+    ``hess_lag``, the Hessian whole: fatrop copies its stage blocks) for :func:`linked`.
+
+    fatrop asks for the Lagrangian's gradient beside the Hessian and does not read it (CasADi 3.8: the
+    same iterates with it zero, measured): it is left at zero, which saves an evaluation of the
+    Jacobian per iteration. After a solve CasADi reads f and g from ``nlp_grad``; the multipliers are
+    fatrop's own (the solver's options ``calc_lam_x`` and ``calc_lam_p`` off), so its gradients are left
+    at zero too, and the NLP's C source without the transposed Jacobian's pattern (a third of it).
+    """
+    w, p = nlp["x"], nlp.get("p", ca.MX.sym("p", 0, 1))
+    lam_f, lam_g = ca.MX.sym("lam_f"), ca.MX.sym("lam_g", nlp["g"].numel())
+    f, g = nlp["f"], nlp["g"]
+    grad, jac = derivatives["grad_f"](w, p)[1], derivatives["jac_g"](w, p)[1]
+    hess = derivatives["hess_lag"](w, p, lam_f, lam_g)
+    xp, xpl = ["x", "p"], ["x", "p", "lam_f", "lam_g"]
+    return [ca.Function("nlp", [w, p], [f, g], xp, ["f", "g"]),
+            ca.Function("nlp_f", [w, p], [f], xp, ["f"]), ca.Function("nlp_g", [w, p], [g], xp, ["g"]),
+            ca.Function("nlp_grad_f", [w, p], [grad], xp, ["grad_f_x"]),
+            ca.Function("nlp_jac_g", [w, p], [g, jac], xp, ["g", "jac_g_x"]),
+            ca.Function("nlp_hess_l", [w, p, lam_f, lam_g], [ca.MX.zeros(w.numel()), hess], xpl,
+                        ["grad_gamma_x", "hess_gamma_x_x"]),
+            ca.Function("nlp_grad", [w, p, lam_f, lam_g], [f, g, ca.MX(w.numel(), 1), ca.MX(p.numel(), 1)], xpl,
+                        ["f", "g", "grad_gamma_x", "grad_gamma_p"])]
+
+
+def _compiled_into(cc: str | None, target: Path, source: str, c_name: str, flags: list[str]) -> bool:
+    """Compile ``source`` with ``cc`` and ``flags`` into the library ``target`` of the cache: in a temporary folder
+    beside it, then renamed (atomic: a reader sees no library or a whole one). False, with a warning,
+    where compiling fails."""
+    with tempfile.TemporaryDirectory(dir=target.parent, prefix=".compiling-") as work:
+        so_file = Path(work) / target.name
+        if not _cc(cc, source, Path(work) / c_name, [*flags, "-o", str(so_file)]):
+            return False
+        os.replace(so_file, target)
+    return True
+
+
+def _cc(cc: str | None, source: str, c_file: Path, flags: list[str]) -> bool:
+    """Compile ``source`` (written to ``c_file``) with ``flags``; False, with a warning, where it fails."""
+    c_file.write_text(source)
+    try:
+        subprocess.run([cc, str(c_file), *flags, "-lm"], check=True, capture_output=True, text=True,
+                       timeout=TIMEOUT)
+    except (OSError, TypeError, subprocess.SubprocessError) as error:
+        detail = getattr(error, "stderr", "") or str(error)
+        warnings.warn(f"compiling the stage functions failed ({detail.strip()[:300]}): they stay "
+                      "interpreted", RuntimeWarning, stacklevel=3)
+        return False
+    return True

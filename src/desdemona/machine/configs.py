@@ -1,0 +1,155 @@
+"""Reduced configurations: which joints move and where the others are held (chapters 5, 7, appendix B).
+
+A configuration is data, not a code path: the free joints and the positions of the held ones. Held
+joints have zero rate and acceleration; their bodies still ride along, so their masses and inertias
+stay in the dynamics ("rigid connections", section 5.5), and their forces are not motor limits.
+
+- ``dfs``: the dynamic flight simulator of chapter 7 (7.2) driving the whole machine. The yaw spins
+  the arm and the three gimbals turn the cabin; the track is held at its outer end (q2 = -4 m) and the
+  heave at its lowest (q3 = -1 m). Given only the modulus M_d of the force (eq. 7.1, 7.2), the cue
+  is the force along the occupant's vertical, f = (0, 0, M_d) in cabin coordinates, and no rotation
+  (:func:`desdemona.profiles.along_vertical`): the optimiser plans the gimbals with the yaw, within
+  their own limits, instead of assuming they follow. Chapter 8's advice, with the gimbals as joints.
+- ``dfs-yaw``: the thesis' own one-joint formulation of chapter 7: only the yaw, cost on the modulus
+  M = |f| (eq. 7.3, 7.7), the gimbals assumed to align the cabin
+  (:func:`desdemona.machine.kinematics.gimbal_alignment`) and not planned. Kept to reproduce its figures.
+- ``yaw-track``: yaw and track, the two-joint model of appendix B and chapters 4-5.
+- ``yaw-track-cabin``: yaw, track and cabin yaw (q5), the three-joint model of section 5.6.
+- ``full``: all six joints.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import casadi as ca
+import numpy as np
+
+from desdemona.machine.params import JOINT_NAMES, MachineParams
+
+
+@dataclass(frozen=True)
+class Configuration:
+    """A set of free joints (0-based indices into q1..q6) and the positions of the held ones.
+
+    fixed : (6,) position of every joint when held [rad | m]; the entries of free joints are unused.
+    modulus_cost : True where the cue is the modulus of the specific force (``dfs-yaw``), not all of S.
+    aligned : a path that gives only the modulus asks for it along the occupant's vertical, with no
+        rotation (``dfs``, see :meth:`cue_path`).
+    """
+
+    name: str
+    free: tuple[int, ...]
+    fixed: tuple[float, ...]
+    modulus_cost: bool
+    description: str
+    aligned: bool = False
+
+    @property
+    def default_weights(self) -> str:
+        """The weights spec (:func:`desdemona.profiles.weights_for`) a session uses unless told:
+        "felt" (false rotation weighted by its perception threshold), or the path's own on an aligned
+        configuration, whose arm must turn to make the force: the rotation that comes with it cannot be
+        removed, only kept small (the 0.1 of :func:`desdemona.profiles.along_vertical`)."""
+        return "path" if self.aligned else "felt"
+
+    @property
+    def takes_modulus(self) -> bool:
+        """A path that gives only the modulus M_d can be followed (``dfs``, ``dfs-yaw``)."""
+        return self.modulus_cost or self.aligned
+
+    def cue_path(self, path):
+        """The desired path this configuration follows: ``path`` itself, or for an aligned
+        configuration and a modulus-only path, the modulus along cabin +z with no rotation
+        (:func:`desdemona.profiles.along_vertical`)."""
+        if self.aligned and path.S_d is None:
+            from desdemona.profiles import along_vertical
+
+            return along_vertical(path)
+        return path
+
+    @property
+    def n(self) -> int:
+        """Number of free joints."""
+        return len(self.free)
+
+    @property
+    def joint_names(self) -> tuple[str, ...]:
+        return tuple(JOINT_NAMES[i] for i in self.free)
+
+    def expand(self, x, held_value: str = "position"):
+        """Full (6,) vector from the free joints' values.
+
+        x : (n,) or (N, n) free-joint values, or a CasADi column of length n.
+        held_value : "position" fills held joints with their fixed positions, "zero" with zeros (rates,
+            accelerations and forces of held joints).
+        """
+        filler = self.fixed if held_value == "position" else (0.0,) * 6
+        if isinstance(x, (ca.SX, ca.MX)):
+            return ca.vertcat(*[x[self.free.index(i)] if i in self.free else filler[i] for i in range(6)])
+        x = np.asarray(x, dtype=float)
+        full = np.broadcast_to(np.asarray(filler, dtype=float), x.shape[:-1] + (6,)).copy()
+        full[..., list(self.free)] = x
+        return full
+
+    def limits(self, params: MachineParams) -> "Limits":
+        """Limits of the free joints (eq. 3.3-3.5), SI."""
+        idx = list(self.free)
+        return Limits(position_min=params.position_min[idx], position_max=params.position_max[idx],
+                      velocity=params.velocity_max[idx], acceleration=params.acceleration_max[idx],
+                      effort=params.effort_max[idx], power=params.power_max[idx], jerk=params.jerk_max[idx])
+
+
+@dataclass(frozen=True, eq=False)
+class Limits:
+    """Limits of a set of joints, one (n,) array per kind of limit, SI (eq. 3.3-3.5).
+
+    position_min, position_max : [rad | m], -inf / inf where a joint is unbounded; velocity
+    [rad/s | m/s], acceleration [rad/s^2 | m/s^2], effort [N*m | N], power [W], jerk [rad/s^3 | m/s^3]
+    (inf where unbounded): symmetric bounds.
+    """
+
+    position_min: np.ndarray
+    position_max: np.ndarray
+    velocity: np.ndarray
+    acceleration: np.ndarray
+    effort: np.ndarray
+    power: np.ndarray
+    jerk: np.ndarray
+
+    @property
+    def smooth(self) -> bool:
+        """True where the jerk is bounded: plans then have continuous, piecewise-linear accelerations."""
+        return bool(np.all(np.isfinite(self.jerk)))
+
+    @property
+    def bounded(self) -> list[int]:
+        """Indices of the joints whose position is bounded."""
+        return [i for i in range(len(self.velocity)) if np.isfinite(self.position_max[i])]
+
+
+CONFIGURATIONS: dict[str, Configuration] = {
+    c.name: c for c in (
+        Configuration("dfs", (0, 3, 4, 5), (0.0, -4.0, -1.0, 0.0, 0.0, 0.0), False,
+                      "dynamic flight simulator: yaw and gimbals, track at -4 m, force along the occupant's "
+                      "vertical (chapter 7)", aligned=True),
+        Configuration("dfs-yaw", (0,), (0.0, -4.0, -1.0, 0.0, 0.0, 0.0), True,
+                      "the thesis' dynamic flight simulator: yaw only, track at -4 m, cue = |f| (chapter 7)"),
+        Configuration("yaw-track", (0, 1), (0.0,) * 6, False,
+                      "yaw and linear track (appendix B, chapters 4-5)"),
+        Configuration("yaw-track-cabin", (0, 1, 4), (0.0,) * 6, False,
+                      "yaw, track and cabin yaw q5 (section 5.6)"),
+        Configuration("full", (0, 1, 2, 3, 4, 5), (0.0,) * 6, False,
+                      "all six joints"),
+    )
+}
+
+
+def get_configuration(config: str | Configuration) -> Configuration:
+    """The configuration called ``config`` (or ``config`` itself); a clear error for an unknown name."""
+    if isinstance(config, Configuration):
+        return config
+    if config not in CONFIGURATIONS:
+        raise ValueError(f"unknown configuration {config!r}; valid configurations: "
+                         f"{', '.join(CONFIGURATIONS)}")
+    return CONFIGURATIONS[config]

@@ -1,0 +1,2 @@
+"""Results a person reads: the result folder (:mod:`.report`), its figures (:mod:`.figures`), the 3D
+replay (:mod:`.view`), and the comparison of results (:mod:`.compare`)."""
