@@ -1,4 +1,5 @@
-"""The service's datagrams, version 1 (``docs/protocol.md``): what a host sends, what the machine gets.
+"""The service's datagrams, version 2 (``docs/protocol.md``): what a host sends, what the machine gets,
+what the machine reports and what an operator commands.
 
 Every datagram is little-endian and begins with the same 20-byte header (:data:`HEADER`): the magic
 word ``DSDM`` (0x4D445344 read as a little-endian uint32), the protocol version (uint16), the kind of
@@ -12,8 +13,14 @@ message (uint16), the sender's sequence number (uint32) and the sender's time [s
   :data:`desdemona.machine.params.JOINT_NAMES`, the position, rate, acceleration and jerk of the cycle that
   starts at ``cycle_time`` and lasts ``step``; the session's status; the command's source; and the
   sequence number of the host message the command answers.
+- :class:`MachineState` (kind 3, machine -> service): every joint's measured position and rate, the
+  motion system's own status (:data:`MACHINE_STATUSES`), a fault's code and joint, and the setpoint
+  (sequence, and the time on the setpoints' time line) its joints were following when measured.
+- :class:`Command` (kind 4, operator -> service or machine): pause, park, resume, emergency stop,
+  reset (:data:`ACTIONS`).
 
-:func:`unpack` refuses anything else with a :class:`ProtocolError` that names the problem; a
+Version 1 had only the first two; a datagram of another version is refused with a message that
+names both versions (no guessing at a layout). :func:`unpack` refuses anything else with a :class:`ProtocolError` that names the problem; a
 receiver drops and counts such datagrams.
 """
 
@@ -26,8 +33,8 @@ from dataclasses import dataclass
 import numpy as np
 
 MAGIC = 0x4D445344  # the bytes b"DSDM"
-VERSION = 1
-KIND_MOTION, KIND_SETPOINT = 1, 2
+VERSION = 2
+KIND_MOTION, KIND_SETPOINT, KIND_STATE, KIND_COMMAND = 1, 2, 3, 4
 
 #: magic, version, kind, sequence, sender's time
 HEADER = struct.Struct("<IHHId")
@@ -36,7 +43,13 @@ MOTION = struct.Struct("<HHd")
 #: status, source, joints (6), a reserved byte, the answered sequence, the cycle's time and step [s];
 #: then per joint position, rate, acceleration, jerk (float64)
 SETPOINT = struct.Struct("<BBBBIdd")
+#: status, fault code, fault joint, joints (6), the applied setpoint's sequence and the time on the
+#: setpoints' time line the joints followed [s]; then per joint measured position and rate (float64)
+STATE = struct.Struct("<BBBBId")
+#: action, then three reserved bytes (0)
+COMMAND = struct.Struct("<BBH")
 JOINTS = 6
+NO_JOINT = 0xFF  # a fault of no particular joint
 NO_ANSWER = 0xFFFFFFFF  # a setpoint that answers no host message (starting, parking, parked)
 
 #: The session's status in a setpoint.
@@ -44,6 +57,17 @@ STATUSES = ("starting", "running", "parking", "parked", "fault")
 #: Where a setpoint's command comes from: this cycle's plan, the previous plan, a braking command when
 #: no plan is left, the watchdog's or a stop's parking.
 SOURCES = ("plan", "previous plan", "brake", "park")
+
+#: The motion system's own status in a state message: ready (at rest, holding, takes a setpoint that
+#: starts where it stands), following the setpoints, braking on its own (no setpoint in time), stopped
+#: (at rest after braking on its own), fault (braked; refuses motion until a reset), e-stop (an
+#: emergency stop: the fastest stop; refuses motion until a reset).
+MACHINE_STATUSES = ("ready", "following", "braking", "stopped", "fault", "e-stop")
+#: A fault's code: none, a joint's drive reported a fault, the motion made broke a limit.
+FAULTS = ("none", "drive", "limit")
+#: An operator's command: pause (park and hold until resume), park, resume, emergency stop, reset (the
+#: motion system's fault or emergency stop cleared, at rest).
+ACTIONS = ("pause", "park", "resume", "emergency stop", "reset")
 
 #: Values beyond these are not a vehicle's motion (as :mod:`desdemona.profiles` refuses files).
 MAX_RATE = 50.0  # rad/s
@@ -91,7 +115,38 @@ class Setpoint:
     jerk: np.ndarray
 
 
-def pack(message: Motion | Setpoint) -> bytes:
+@dataclass(frozen=True)
+class MachineState:
+    """Machine -> service: per joint (6,) measured ``position`` and ``rate`` at ``time`` [s, the
+    machine's clock]; ``status`` (:data:`MACHINE_STATUSES`); ``fault`` (:data:`FAULTS`) and
+    ``fault_joint`` (0-5, None: none in particular); ``applied``: the sequence of the setpoint its joints
+    were following (None: none yet), and ``applied_time`` [s] the time on the setpoints' time line
+    (``cycle_time`` + the time into that cycle) they were following when measured."""
+
+    sequence: int
+    time: float
+    status: str
+    fault: str
+    fault_joint: int | None
+    applied: int | None
+    applied_time: float
+    position: np.ndarray
+    rate: np.ndarray
+
+
+@dataclass(frozen=True)
+class Command:
+    """Operator -> service or machine: ``action`` (:data:`ACTIONS`) at ``time`` [s, the sender's clock]."""
+
+    sequence: int
+    time: float
+    action: str
+
+
+Message = Motion | Setpoint | MachineState | Command
+
+
+def pack(message: Message) -> bytes:
     """The datagram of a message (:class:`ProtocolError` where it could not be read back)."""
     if isinstance(message, Motion):
         values = np.asarray(message.values, dtype="<f8").ravel()
@@ -107,10 +162,20 @@ def pack(message: Motion | Setpoint) -> bytes:
                              float(message.step))
         table = np.column_stack([message.position, message.rate, message.acceleration, message.jerk])
         return head + body + np.asarray(table, dtype="<f8").reshape(JOINTS, 4).tobytes()
+    if isinstance(message, MachineState):
+        head = HEADER.pack(MAGIC, VERSION, KIND_STATE, message.sequence & 0xFFFFFFFF, float(message.time))
+        body = STATE.pack(MACHINE_STATUSES.index(message.status), FAULTS.index(message.fault),
+                          NO_JOINT if message.fault_joint is None else message.fault_joint, JOINTS,
+                          NO_ANSWER if message.applied is None else message.applied, float(message.applied_time))
+        table = np.column_stack([message.position, message.rate])
+        return head + body + np.asarray(table, dtype="<f8").reshape(JOINTS, 2).tobytes()
+    if isinstance(message, Command):
+        head = HEADER.pack(MAGIC, VERSION, KIND_COMMAND, message.sequence & 0xFFFFFFFF, float(message.time))
+        return head + COMMAND.pack(ACTIONS.index(message.action), 0, 0)
     raise TypeError(f"not a message: {type(message).__name__}")
 
 
-def unpack(data: bytes) -> Motion | Setpoint:
+def unpack(data: bytes) -> Message:
     """The message of a datagram; :class:`ProtocolError` naming what is wrong (magic, version, kind,
     length, a value that is not finite or is beyond a vehicle's motion, a malformed forecast)."""
     if len(data) < HEADER.size:
@@ -119,13 +184,18 @@ def unpack(data: bytes) -> Motion | Setpoint:
     if magic != MAGIC:
         raise ProtocolError(f"wrong magic word 0x{magic:08X}")
     if version != VERSION:
-        raise ProtocolError(f"protocol version {version}, this is version {VERSION}")
+        raise ProtocolError(f"protocol version {version}: this is version {VERSION} (docs/protocol.md); "
+                            f"sender and receiver must run the same version")
     if not math.isfinite(time):
         raise ProtocolError("the sender's time is not a finite number")
     if kind == KIND_MOTION:
         return _unpack_motion(data, sequence, time)
     if kind == KIND_SETPOINT:
         return _unpack_setpoint(data, sequence, time)
+    if kind == KIND_STATE:
+        return _unpack_state(data, sequence, time)
+    if kind == KIND_COMMAND:
+        return _unpack_command(data, sequence, time)
     raise ProtocolError(f"unknown message kind {kind}")
 
 
@@ -177,6 +247,33 @@ def _unpack_setpoint(data: bytes, sequence: int, time: float) -> Setpoint:
         raise ProtocolError("setpoint with an absurd joint value")
     return Setpoint(sequence, time, STATUSES[status], SOURCES[source], None if answers == NO_ANSWER else answers,
                     cycle_time, step, *table.T)
+
+
+def _unpack_state(data: bytes, sequence: int, time: float) -> MachineState:
+    expected = HEADER.size + STATE.size + 8 * 2 * JOINTS
+    if len(data) != expected:
+        raise ProtocolError(f"state of {len(data)} bytes, {expected} expected")
+    status, fault, joint, joints, applied, applied_time = STATE.unpack_from(data, HEADER.size)
+    if (joints != JOINTS or status >= len(MACHINE_STATUSES) or fault >= len(FAULTS)
+            or not (joint < JOINTS or joint == NO_JOINT)):
+        raise ProtocolError(f"state with {joints} joints, status {status}, fault {fault}, joint {joint}")
+    table = np.frombuffer(data, dtype="<f8", offset=HEADER.size + STATE.size).astype(float).reshape(JOINTS, 2)
+    if not (np.all(np.isfinite(table)) and math.isfinite(applied_time)):
+        raise ProtocolError("state with a value that is not a finite number")
+    if np.any(np.abs(table) > MAX_JOINT_VALUE):
+        raise ProtocolError("state with an absurd joint value")
+    return MachineState(sequence, time, MACHINE_STATUSES[status], FAULTS[fault], None if joint == NO_JOINT else joint,
+                        None if applied == NO_ANSWER else applied, applied_time, *table.T)
+
+
+def _unpack_command(data: bytes, sequence: int, time: float) -> Command:
+    expected = HEADER.size + COMMAND.size
+    if len(data) != expected:
+        raise ProtocolError(f"command of {len(data)} bytes, {expected} expected")
+    action, _, _ = COMMAND.unpack_from(data, HEADER.size)
+    if action >= len(ACTIONS):
+        raise ProtocolError(f"command with action {action}")
+    return Command(sequence, time, ACTIONS[action])
 
 
 def address(text: str, option: str = "address") -> tuple[str, int]:
