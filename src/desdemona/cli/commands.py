@@ -9,6 +9,7 @@ from __future__ import annotations
 import collections
 import os
 import signal
+import socket
 import sys
 import time
 from pathlib import Path
@@ -521,13 +522,18 @@ def run_serve(args) -> int:
 
 
 def run_machine(args) -> int:
-    from desdemona.service import machine, protocol
+    from desdemona.service import machine, protocol, servo
 
     model = _machine(args)
     try:
         listen = protocol.address(args.listen, "--listen")
-        with guard.handled_here(_stop_here):  # the stand-in writes what it has as it stops
-            report = machine.run(model, listen, args.out, idle=args.idle, duration=args.duration)
+        options = machine.MachineOptions(
+            delay=servo.DELAY if args.delay is None else args.delay,
+            bandwidth_hz=servo.BANDWIDTH_HZ if args.bandwidth is None else args.bandwidth,
+            noise=servo.NOISE if args.noise is None else tuple(args.noise), state_rate=args.state_rate,
+            timeout=args.timeout, late=args.late, fault=None if args.fault is None else machine.parse_fault(args.fault),
+            operator=args.operator, seed=args.seed)
+        report = machine.run(model, listen, args.out, idle=args.idle, duration=args.duration, options=options)
     except ValueError as exc:
         raise UserError(str(exc)) from None
     except OSError as exc:
@@ -542,9 +548,23 @@ def run_machine(args) -> int:
     return 128 + signal.SIGINT if report.stopped.startswith("interrupted") else 0
 
 
-def _stop_here(signum: int) -> None:
-    """Within :func:`guard.handled_here`: a stop signal ends the current loop, once."""
-    raise KeyboardInterrupt
+def run_command(args) -> int:
+    from desdemona.service import protocol
+
+    try:
+        to = protocol.address(args.to, "--to")
+    except ValueError as exc:
+        raise UserError(str(exc)) from None
+    action = {"estop": "emergency stop"}.get(args.action, args.action)
+    # the sequence: the time in milliseconds, so that commands sent one after another increase
+    message = protocol.Command(int(time.time() * 1e3) & 0xFFFFFFFF, time.time(), action)
+    try:
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sock:
+            sock.sendto(protocol.pack(message), to)
+    except OSError as exc:
+        raise UserError(f"--to {args.to}: {exc.strerror or exc}") from None
+    print(f"sent {action} to {args.to}")
+    return 0
 
 
 def _host_options(args) -> dict:

@@ -485,22 +485,59 @@ def _add_serve_parser(sub) -> None:
 
 def _add_machine_parser(sub) -> None:
     machine = sub.add_parser(
-        "machine", help="a stand-in for the motion system: receive the setpoints of 'serve' and check each",
-        description="Receive the setpoints 'desdemona serve' sends (UDP, docs/protocol.md) and check every one "
-                    "on its own, independently of the service: every limit from position to jerk, torque and "
-                    "power over the whole cycle, held joints still, continuity from one setpoint to the next. "
-                    "Writes setpoints.csv, violations.csv and summary.json into --out; exit 1 if any setpoint "
-                    "broke a limit.",
-        epilog="Exit codes: 0 every setpoint kept every limit, 1 a violation, 2 bad input, 130 interrupted.")
+        "machine", help="a stand-in for the motion system: follow the setpoints of 'serve', report, check each",
+        description="A motion system for one computer (UDP, docs/protocol.md): its joints follow the setpoints "
+                    "'desdemona serve' sends through a model of each servo (a transport delay, a position loop, "
+                    "measurement noise) and it sends their State back. Its own safety layer, independent of "
+                    "the service: no setpoint in time (--timeout) -> it brakes every joint to rest, the fastest "
+                    "stop the limits allow, and holds; an emergency stop (a Command from --operator, or "
+                    "SIGUSR1) or an injected --fault -> the same stop, then no motion until a reset Command. "
+                    "It checks every setpoint (every limit over its cycle, held joints, continuity), the motion "
+                    "it made, and when each setpoint came (late, a gap while moving, a burst). Writes "
+                    "setpoints.csv, motion.csv, violations.csv, events.csv (appended as it goes) and "
+                    "summary.json into --out. Ctrl-C stops the machine and ends once it is at rest.",
+        epilog="Exit codes: 0 passed; 1 a violation, a timing fault, or the setpoints ended while the machine "
+               "moved (it braked on its own); 2 bad input; 130 interrupted.")
     _add_machine_options(machine, default_config="dfs")
     machine.add_argument("--listen", required=True, metavar="HOST:PORT",
-                         help="where the setpoints arrive, e.g. 127.0.0.1:5501")
-    machine.add_argument("--out", required=True, metavar="DIR", help="folder for what was received and checked")
+                         help="where the setpoints arrive, e.g. 127.0.0.1:5501; States go back to their sender")
+    machine.add_argument("--out", required=True, metavar="DIR", help="folder for what was received, made and checked")
     machine.add_argument("--idle", type=float, default=2.0, metavar="SECONDS",
-                         help="stop this long after the last setpoint (default: 2)")
+                         help="stop this long after the last datagram, once at rest (default: 2)")
     machine.add_argument("--duration", type=float, default=None, metavar="SECONDS",
                          help="stop after this long (default: when idle or stopped)")
+    machine.add_argument("--delay", type=float, default=None, metavar="SECONDS",
+                         help="each servo's transport delay (default: 0.010)")
+    machine.add_argument("--bandwidth", type=float, default=None, metavar="HZ",
+                         help="each servo's position loop, for what the fed-forward rate and acceleration do "
+                              "not carry (default: 5)")
+    machine.add_argument("--noise", type=float, nargs=2, default=None, metavar=("POSITION", "RATE"),
+                         help="measurement noise, one standard deviation [rad or m, rad/s or m/s] "
+                              "(default: 1e-5 1e-4)")
+    machine.add_argument("--state-rate", type=float, default=100.0, metavar="HZ", dest="state_rate",
+                         help="State messages a second, and rows of motion.csv (default: 100)")
+    machine.add_argument("--timeout", type=int, default=3, metavar="CYCLES",
+                         help="how far behind the setpoints' time line it runs: no setpoint for this many "
+                              "cycles and it brakes on its own (default: 3)")
+    machine.add_argument("--late", type=float, default=1.5, metavar="CYCLES",
+                         help="a setpoint this long after its cycle was due is a timing fault (default: 1.5)")
+    machine.add_argument("--fault", default=None, metavar="AT:JOINT",
+                         help="inject a drive fault on JOINT (yaw, track, heave, outer_gimbal, inner_gimbal, "
+                              "cabin) AT seconds after the first setpoint")
+    machine.add_argument("--operator", default="127.0.0.1", metavar="HOST",
+                         help="the host whose Commands it takes (default: 127.0.0.1)")
+    machine.add_argument("--seed", type=int, default=0, help="seed of the measurement noise (default: 0)")
     machine.set_defaults(run=commands.run_machine)
+
+    command = sub.add_parser(
+        "command", help="an operator's command to 'serve' or 'machine': pause, park, resume, estop, reset",
+        description="Send one Command (docs/protocol.md): pause (the service parks and holds until resume), "
+                    "park, resume, estop (an emergency stop: the fastest stop; no motion until reset), reset "
+                    "(clears the motion system's fault or emergency stop, at rest).")
+    command.add_argument("action", choices=("pause", "park", "resume", "estop", "reset"))
+    command.add_argument("--to", required=True, metavar="HOST:PORT",
+                         help="the service's --listen or the machine's --listen address")
+    command.set_defaults(run=commands.run_command)
 
 
 def _add_host_parser(sub) -> None:

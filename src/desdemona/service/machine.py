@@ -1,51 +1,47 @@
 """A stand-in for the motion system (``desdemona machine``): it receives the service's setpoints over
-UDP and checks every one of them on its own.
+UDP, moves a model of the machine's joints with them, reports what they do, and has its own safety
+layer, independent of the service.
 
-A real motion system does not trust its controller: its own guard refuses a command that would take a
-joint beyond its range, rate, acceleration, jerk, torque or power, that moves a joint which should be
-held, or that jumps from where the machine is. This stand-in plays that part on one computer, so that
-``desdemona serve`` can be tested end to end without the machine: whatever the service sends is
-measured here, independently of how the service computed it (neither its controller nor its own
-guard is used; only the model's limits, the exact motion of :func:`desdemona.machine.plan.advance` and the
-model's torques).
+- **Its joints** (:mod:`desdemona.service.servo`): each joint's servo follows the setpoints' cubic a
+  transport delay late (``delay``), with a position loop of ``bandwidth_hz`` for what the fed-forward
+  rate and acceleration do not carry; measurement noise on what it reports.
+- **Its supervision** (:mod:`desdemona.service.drive`): no setpoint in time (it runs the setpoints' time
+  line ``timeout`` cycles behind) -> it brakes every joint to rest on its own, the fastest stop the
+  limits allow, then holds; an emergency stop (a Command from the ``operator`` host, or SIGUSR1; a
+  first SIGINT or SIGTERM too, after which it ends once at rest) -> the same stop, then no motion until
+  a reset Command; ``fault`` = (seconds after the first setpoint, joint) -> a drive fault on that joint,
+  reported, the same stop, no motion until a reset.
+- **Its State** (protocol version 2): every joint's measured position and rate, its status, a fault
+  and its joint, the setpoint followed and where on its time line, ``state_rate`` times a second, to the
+  address the setpoints come from (setpoints from any other address are dropped).
+- **Its check** (:mod:`desdemona.service.checker`): every setpoint against every limit over its whole
+  cycle, held joints, continuity (or a re-anchor on the measured machine); the motion the joints made,
+  at every step of the servos; and **when** each setpoint came: later than ``late`` cycles after it was
+  due, a gap between arrivals longer than the timeout while moving, or a burst (:data:`BURST`
+  setpoints within a quarter of a cycle) is a timing fault. A stream that ends while the machine moves
+  (it had to brake on its own) is never a pass.
 
-What is checked, for every setpoint (:func:`check_setpoint`):
-
-- every free joint over the whole cycle the setpoint commands, not only at its start: the motion
-  inside the cycle is the exact cubic of :func:`~desdemona.machine.plan.advance` from the setpoint's position,
-  rate, acceleration and jerk, evaluated on :data:`POINTS` points of the cycle and at the instants
-  where a position or a rate turns (so that position, rate and acceleration are checked exactly):
-  position within [position_min, position_max], ``|rate| <= velocity``, ``|acceleration| <=
-  acceleration``, ``|jerk| <= jerk``, ``|torque| <= effort`` and ``|torque * rate| <= power``, each with
-  the relative tolerance of the independent check (:data:`desdemona.check.simulate.TOLERANCE`);
-- every held joint (not in ``config.free``) at its fixed position (``config.fixed``) and at rest:
-  rate, acceleration and jerk zero (``held``);
-- continuity (``continuity``): a setpoint that follows the previous one (the next sequence number)
-  starts where the previous one's cycle ends, the previous one advanced by its ``step`` with its
-  acceleration and jerk: position, rate, and where the machine limits jerk, acceleration, each within
-  :data:`CONTINUITY` of its scale plus :data:`ABSOLUTE`. After a sequence gap (a datagram lost or
-  dropped) only the limits are checked, and the gap is counted;
-- sequence numbers strictly increase: a duplicate or an older one is dropped and counted, as is any
-  datagram that is not a valid setpoint (:func:`desdemona.service.protocol.unpack`): such datagrams are
-  never checked as setpoints.
-
-It stops when no datagram has arrived for ``idle`` seconds after the first one, after ``duration``
-seconds if given, or on Ctrl-C / SIGTERM; it then writes what it has into its folder (each file whole,
-written beside its place and renamed into it; ``summary.json`` last):
+It stops ``idle`` seconds after the last datagram once the machine is at rest, after ``duration``
+seconds, or at rest after a SIGINT/SIGTERM (a second one: at once). Its folder holds, each appended
+and flushed as it goes (a killed stand-in leaves them up to the last sample):
 
 - ``setpoints.csv``: one row per setpoint checked: receive time [s since the socket was bound],
   sequence, the sender's time, status, source, answers, cycle_time, step, then per joint of
   :data:`desdemona.machine.params.JOINT_NAMES` its position, rate, acceleration and jerk;
-- ``violations.csv``: one row per violation: time, sequence, joint, what (position, rate,
-  acceleration, jerk, effort, power, held, continuity), value, limit, and a detail (where in the cycle,
-  or which quantity). For a limit, value is the worst over the cycle and limit the bound it crosses;
-  for ``held`` and ``continuity``, value is what the setpoint says and limit what it should say (the
-  held position or zero; where the previous cycle ends), the quantity and tolerance in the detail;
-- ``summary.json``: counts (received, dropped by reason, gaps, violations by kind), the worst use of
-  every limit (1 = at the limit) and its joint, the first and last cycle time, the statuses and sources
-  seen, and why it stopped.
+- ``motion.csv``: the motion made, one row per State sent: time, status, fault, fault joint, the
+  setpoint followed (sequence) and where on its time line, then per joint the measured position and
+  rate (as the State says: with the noise) and the acceleration;
+- ``violations.csv``: one row per violation: time, sequence, joint, what (position, rate, acceleration,
+  jerk, effort, power, held, continuity; ``made ...`` of the motion made), value, limit, detail;
+- ``events.csv``: every status it entered, command, fault, timing fault and refused setpoint, with its
+  time and a detail;
+- ``summary.json`` (written at the start, and whole at the end): counts (received, dropped by reason,
+  refused by reason, gaps, violations by kind, timing faults by kind), the worst use of every limit by
+  the setpoints and by the motion made, its own stops (why, when, the shortest stop the limits allowed,
+  when at rest), whether the stream ended while moving, and why it stopped.
 
-:func:`exit_code` is the command's exit status: 1 if any violation, 0 otherwise.
+:func:`exit_code` is the command's exit status: 1 unless it passed (no violation, no timing fault, no
+stream that ended while moving), 0 otherwise.
 """
 
 from __future__ import annotations
@@ -55,7 +51,9 @@ import io
 import json
 import math
 import os
+import signal
 import socket
+import threading
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -66,63 +64,104 @@ from desdemona._version import __version__
 from desdemona.check.simulate import TOLERANCE
 from desdemona.machine.model import Model
 from desdemona.machine.params import JOINT_NAMES
-from desdemona.machine.plan import advance
 from desdemona.service import protocol
+from desdemona.service.checker import (ABSOLUTE, CONTINUITY, KINDS, LIMIT_KINDS, MADE_KINDS, POINTS, REANCHOR,
+                                       Checker, Violation)
+from desdemona.service.drive import Drive, Event
+from desdemona.service.servo import BANDWIDTH_HZ, DELAY, NOISE
 from desdemona.support import guard
 from desdemona.support.files import beside
 
-#: Points of each cycle at which the motion is evaluated (both ends included), besides the instants
-#: where a position or a rate turns.
-POINTS = 11
-#: Continuity and rest: relative tolerance (of the limit, or of the position's scale) ...
-CONTINUITY = 1e-6
-#: ... plus this absolute one.
-ABSOLUTE = 1e-9
+__all__ = ["POINTS", "CONTINUITY", "ABSOLUTE", "REANCHOR", "KINDS", "LIMIT_KINDS", "MADE_KINDS", "Checker",
+           "Violation", "MachineOptions", "Report", "run", "exit_code", "drop_reason", "parse_fault", "prepare"]
+
 #: Every receive waits at most this long [s], so the loop notices ``idle``, ``duration`` and signals.
 RECEIVE_TIMEOUT = 0.05
 #: The largest datagram read (a longer one is cut by the kernel, and refused as a wrong length).
 MAX_DATAGRAM = 65536
 #: Violations kept in the :class:`Report` (all are counted and written to ``violations.csv``).
 MAX_KEPT = 1000
-#: The limits measured per free joint, in the order of ``violations.csv``'s ``what``.
-LIMIT_KINDS = ("position", "rate", "acceleration", "jerk", "effort", "power")
-KINDS = LIMIT_KINDS + ("held", "continuity")
-FILES = ("setpoints.csv", "violations.csv", "summary.json")
+#: A burst: this many setpoints arriving within a quarter of a cycle.
+BURST = 3
+TIMING = ("late", "gap", "burst")
+FILES = ("setpoints.csv", "violations.csv", "motion.csv", "events.csv", "summary.json")
 WRITTEN_BY = "desdemona machine"
 
 SETPOINT_COLUMNS = (("time", "sequence", "sent", "status", "source", "answers", "cycle_time", "step")
                     + tuple(f"{name}_{q}" for name in JOINT_NAMES
                             for q in ("position", "rate", "acceleration", "jerk")))
 VIOLATION_COLUMNS = ("time", "sequence", "joint", "what", "value", "limit", "detail")
+MOTION_COLUMNS = (("t", "status", "fault", "fault_joint", "applied", "applied_time")
+                  + tuple(f"{name}_{q}" for name in JOINT_NAMES for q in ("position", "rate", "acceleration")))
+EVENT_COLUMNS = ("time", "what", "detail")
 
 
 @dataclass(frozen=True)
-class Violation:
-    """One limit a setpoint breaks: ``what`` (:data:`KINDS`) of ``joint`` (a name of
-    :data:`JOINT_NAMES`), the worst ``value`` and the ``limit`` it crosses (for ``held`` and
-    ``continuity``: the value expected); ``time`` [s since bound] and ``sequence`` of the setpoint;
-    ``detail`` where in the cycle, or which quantity and its tolerance."""
+class MachineOptions:
+    """The stand-in's servo and supervision: ``delay`` [s] transport delay, ``bandwidth_hz`` of the
+    position loop, ``noise`` (position [rad | m], rate [rad/s | m/s]) one standard deviation, seeded by
+    ``seed``; ``state_rate`` [Hz] of its State messages (and of ``motion.csv``); ``timeout`` [cycles]
+    it runs behind the setpoints' time line (no setpoint for that long: it brakes); ``late``
+    [cycles] after its cycle was due a setpoint counts as late; ``fault``: (seconds after the first
+    setpoint, joint index) of an injected drive fault, or None; ``operator``: the host whose Commands
+    it takes."""
 
-    time: float
-    sequence: int
-    joint: str
-    what: str
-    value: float
-    limit: float
-    detail: str = ""
+    delay: float = DELAY
+    bandwidth_hz: float = BANDWIDTH_HZ
+    noise: tuple[float, float] = NOISE
+    state_rate: float = 100.0
+    timeout: int = 3
+    late: float = 1.5
+    fault: tuple[float, int] | None = None
+    operator: str = "127.0.0.1"
+    seed: int = 0
+
+    def __post_init__(self):
+        for name, value, low in (("--delay", self.delay, 0.0), ("--late", self.late, 0.0),
+                                 ("--noise", min(self.noise), 0.0)):
+            if not (math.isfinite(value) and value >= low):
+                raise ValueError(f"{name} {value!r}: a number >= {low:g}")
+        for name, value in (("--bandwidth", self.bandwidth_hz), ("--state-rate", self.state_rate)):
+            if not (math.isfinite(value) and value > 0):
+                raise ValueError(f"{name} {value!r}: a positive number")
+        if not (isinstance(self.timeout, int) and self.timeout >= 1):
+            raise ValueError(f"--timeout {self.timeout!r}: a whole number of cycles, at least 1")
+
+
+def parse_fault(text: str) -> tuple[float, int]:
+    """(seconds, joint index) of ``--fault AT:JOINT`` (JOINT a name of :data:`JOINT_NAMES` or 0-5);
+    ValueError naming the problem."""
+    at, sep, joint = text.partition(":")
+    try:
+        seconds = float(at)
+    except ValueError:
+        seconds = math.nan
+    if not sep or not (math.isfinite(seconds) and seconds >= 0):
+        raise ValueError(f"--fault {text!r}: give AT:JOINT, seconds after the first setpoint and a joint, "
+                         f"e.g. 3.5:yaw")
+    if joint in JOINT_NAMES:
+        return seconds, JOINT_NAMES.index(joint)
+    if joint.isdigit() and int(joint) < 6:
+        return seconds, int(joint)
+    raise ValueError(f"--fault {text!r}: the joint is one of {', '.join(JOINT_NAMES)} (or 0-5)")
 
 
 @dataclass
 class Report:
-    """What the machine received and found.
+    """What the machine received, did and found.
 
     received : setpoints checked; datagrams : all datagrams read; dropped : {reason: count} of those
-    never checked (:func:`drop_reason`); gaps : sequence gaps (continuity not checked across them),
-    missing : sequence numbers skipped in all; violations : the first :data:`MAX_KEPT`;
-    counts : {kind: count} of all violations; worst : {limit: worst use} over the free joints
-    (1 = at the limit), worst_joint : {limit: joint name}; statuses, sources : {name: count};
-    first_cycle_time, last_cycle_time : of the setpoints checked; stopped : "idle", "duration" or
-    "interrupted (SIGINT)"...; elapsed [s]; out : the folder written; address : the socket bound.
+    never checked (:func:`drop_reason`; from an unexpected address; out of order); refused : {reason:
+    count} of setpoints checked but not followed (a fault, braking, not where the machine stands);
+    gaps : sequence gaps, missing : sequence numbers skipped in all; violations : the first
+    :data:`MAX_KEPT`; counts : {kind: count} of all violations (:data:`KINDS`); worst : {limit: worst
+    use} of the setpoints over the free joints (1 = at the limit), worst_joint : {limit: joint};
+    made, made_joint : the same of the motion made; timing : {late, gap, burst: count}, latest : the
+    latest a setpoint came after it was due [s]; reanchored : setpoints re-anchored on the measured
+    machine; events, stops : of the :class:`~desdemona.service.drive.Drive`; ended_moving : the
+    setpoints ended while the machine moved; states : State messages sent; statuses, sources : {name:
+    count}; first_cycle_time, last_cycle_time : of the setpoints checked; stopped : "idle", "duration"
+    or "interrupted (SIGINT)"...; elapsed [s]; out : the folder written; address : the socket bound.
     """
 
     out: Path
@@ -130,12 +169,22 @@ class Report:
     received: int = 0
     datagrams: int = 0
     dropped: dict = field(default_factory=dict)
+    refused: dict = field(default_factory=dict)
     gaps: int = 0
     missing: int = 0
     violations: list = field(default_factory=list)
-    counts: dict = field(default_factory=dict)
+    counts: dict = field(default_factory=lambda: {k: 0 for k in KINDS})
     worst: dict = field(default_factory=lambda: {k: 0.0 for k in LIMIT_KINDS})
     worst_joint: dict = field(default_factory=dict)
+    made: dict = field(default_factory=lambda: {k: 0.0 for k in LIMIT_KINDS})
+    made_joint: dict = field(default_factory=dict)
+    timing: dict = field(default_factory=lambda: {k: 0 for k in TIMING})
+    latest: float = 0.0
+    reanchored: int = 0
+    events: list = field(default_factory=list)
+    stops: list = field(default_factory=list)
+    ended_moving: bool = False
+    states: int = 0
     statuses: dict = field(default_factory=dict)
     sources: dict = field(default_factory=dict)
     first_cycle_time: float | None = None
@@ -145,8 +194,8 @@ class Report:
 
     @property
     def passed(self) -> bool:
-        """No violation at all."""
-        return not any(self.counts.values())
+        """No violation, no timing fault, and the setpoints did not end while the machine moved."""
+        return not any(self.counts.values()) and not any(self.timing.values()) and not self.ended_moving
 
     @property
     def violation_count(self) -> int:
@@ -154,19 +203,31 @@ class Report:
 
     def describe(self) -> str:
         """A few lines for the terminal."""
-        dropped = ", ".join(f"{k} {v}" for k, v in sorted(self.dropped.items())) or "none"
-        kinds = ", ".join(f"{k} {v}" for k, v in self.counts.items() if v) or "none"
-        worst = ", ".join(f"{k} {v:.3g}" + (f" ({self.worst_joint[k]})" if k in self.worst_joint else "")
-                          for k, v in self.worst.items())
-        return (f"machine: {self.received} setpoints checked, {self.datagrams} datagrams, stopped: {self.stopped}\n"
-                f"  dropped: {dropped}; sequence gaps: {self.gaps} ({self.missing} missing)\n"
-                f"  violations: {kinds}\n"
-                f"  worst use of the limits: {worst}\n"
-                f"  {'PASSED' if self.passed else 'FAILED'}; written to {self.out}")
+        def listed(d):
+            return ", ".join(f"{k} {v}" for k, v in sorted(d.items()) if v) or "none"
+
+        def uses(worst, joints):
+            return ", ".join(f"{k} {v:.3g}" + (f" ({joints[k]})" if k in joints else "") for k, v in worst.items())
+
+        stops = "; ".join(f"{s.why} at {s.start:.3f} s: at rest after {s.rest - s.start:.3f} s (shortest "
+                          f"{s.bound:.3f} s)" if s.rest is not None else f"{s.why} at {s.start:.3f} s: still moving"
+                          for s in self.stops) or "none"
+        verdict = "PASSED" if self.passed else "FAILED" + (
+            " (the setpoints ended while the machine moved: it braked on its own)" if self.ended_moving else "")
+        return (f"machine: {self.received} setpoints checked, {self.datagrams} datagrams, {self.states} states "
+                f"sent, stopped: {self.stopped}\n"
+                f"  dropped: {listed(self.dropped)}; refused: {listed(self.refused)}; sequence gaps: {self.gaps} "
+                f"({self.missing} missing); re-anchored: {self.reanchored}\n"
+                f"  violations: {listed(self.counts)}\n"
+                f"  timing faults: {listed(self.timing)} (latest {1e3 * self.latest:.1f} ms after due)\n"
+                f"  worst use of the limits, setpoints: {uses(self.worst, self.worst_joint)}\n"
+                f"  worst use of the limits, motion made: {uses(self.made, self.made_joint)}\n"
+                f"  its own stops: {stops}\n"
+                f"  {verdict}; written to {self.out}")
 
 
 def exit_code(report: Report) -> int:
-    """The command's exit status: 1 if the machine saw any violation, 0 otherwise."""
+    """The command's exit status: 0 if the machine passed (:attr:`Report.passed`), 1 otherwise."""
     return 0 if report.passed else 1
 
 
@@ -176,109 +237,12 @@ def drop_reason(error: protocol.ProtocolError) -> str:
     for words, reason in (("truncated", "truncated"), ("magic", "wrong magic"), ("protocol version", "version"),
                           ("unknown message kind", "unknown kind"), ("not a finite number", "not finite"),
                           ("absurd", "absurd value"), ("setpoint of", "wrong length"),
-                          ("setpoint with", "malformed"), ("motion", "not a setpoint")):
+                          ("setpoint with", "malformed"), ("state of", "not a setpoint"),
+                          ("state with", "not a setpoint"), ("command of", "wrong length"),
+                          ("command with", "malformed"), ("motion", "not a setpoint")):
         if words in text:
             return reason
     return "invalid"
-
-
-class Checker:
-    """The machine's own guard for one model: :meth:`check` a setpoint against the limits, the held
-    joints and the previous setpoint."""
-
-    def __init__(self, model: Model):
-        self.model = model
-        self.free = list(model.config.free)
-        self.held = [i for i in range(6) if i not in self.free]
-        self.fixed = np.asarray(model.config.fixed, dtype=float)
-        self.names = [JOINT_NAMES[i] for i in self.free]
-        lim = model.limits
-        self.lo, self.hi = np.asarray(lim.position_min, float), np.asarray(lim.position_max, float)
-        self.bounded = np.isfinite(self.lo) & np.isfinite(self.hi)
-        self.mid = np.where(self.bounded, 0.5 * (np.where(self.bounded, self.lo, 0) + np.where(self.bounded, self.hi, 0)), 0.0)
-        self.half = np.where(self.bounded, 0.5 * (np.where(self.bounded, self.hi, 1) - np.where(self.bounded, self.lo, -1)), np.inf)
-        self.velocity, self.acceleration = np.asarray(lim.velocity, float), np.asarray(lim.acceleration, float)
-        self.jerk, self.effort, self.power = (np.asarray(x, float) for x in (lim.jerk, lim.effort, lim.power))
-        self.smooth = bool(lim.smooth)
-        self.tau = model.functions["tau"]
-        p = model.params
-        # scales of the held joints' tolerances (every joint's limits, from the parameters)
-        span = p.position_max - p.position_min
-        self.held_scale = {"position": np.where(np.isfinite(span), span, 1.0), "rate": p.velocity_max,
-                           "acceleration": p.acceleration_max, "jerk": p.jerk_max}
-        # continuity: a position's scale is its range, or a second at the rate limit where unbounded
-        self.position_scale = np.where(self.bounded, self.hi - self.lo, self.velocity)
-
-    def _times(self, q, qd, a, j, step: float) -> np.ndarray:
-        """Instants of the cycle to evaluate: :data:`POINTS` evenly, and where an acceleration would
-        turn a rate (a + j s = 0) or a rate a position (qd + a s + j s^2 / 2 = 0)."""
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-            root = np.sqrt(a * a - 2.0 * j * qd)  # NaN where the rate never reaches zero
-            s = np.concatenate([np.linspace(0.0, step, POINTS), -a / j, (-a + root) / j, (-a - root) / j,
-                                np.where(j == 0, -qd / a, np.nan)])
-        return np.unique(s[np.isfinite(s) & (s >= 0.0) & (s <= step)])
-
-    def check(self, sp: protocol.Setpoint, previous: protocol.Setpoint | None, t: float):
-        """Violations of setpoint ``sp`` (received at ``t``) and the use of each limit {kind: (n,)};
-        ``previous`` : the setpoint it follows, or None where continuity is not checked."""
-        out: list[Violation] = []
-        f = self.free
-        q, qd, a, j = (np.asarray(x, float)[f] for x in (sp.position, sp.rate, sp.acceleration, sp.jerk))
-        s = self._times(q, qd, a, j, sp.step)[:, None]
-        qs, qds = advance(q, qd, a, s, j)
-        accs = a + j * s
-        tau = np.asarray(self.tau(qs.T, qds.T, accs.T)).T.reshape(qs.shape)
-        pw = tau * qds
-        use = {"position": np.abs(qs - self.mid) / self.half, "rate": np.abs(qds) / self.velocity,
-               "acceleration": np.abs(accs) / self.acceleration,
-               "jerk": np.broadcast_to(np.abs(j) / self.jerk, qs.shape),
-               "effort": np.abs(tau) / self.effort, "power": np.abs(pw) / self.power}
-        values = {"position": qs, "rate": qds, "acceleration": accs, "jerk": np.broadcast_to(j, qs.shape),
-                  "effort": tau, "power": pw}
-        limits = {"rate": self.velocity, "acceleration": self.acceleration, "jerk": self.jerk,
-                  "effort": self.effort, "power": self.power}
-        worst = {}
-        for kind in LIMIT_KINDS:
-            u = use[kind]
-            worst[kind] = np.max(u, axis=0)
-            for k in np.flatnonzero(worst[kind] > 1.0 + TOLERANCE):
-                row = int(np.argmax(u[:, k]))
-                value = float(values[kind][row, k])
-                if kind == "position":
-                    limit = float(self.hi[k] if value > self.mid[k] else self.lo[k])
-                else:
-                    limit = float(limits[kind][k])
-                out.append(Violation(t, sp.sequence, self.names[k], kind, value, limit,
-                                     f"{float(s[row, 0]):.6g} s into the cycle of {sp.step:.6g} s"))
-        for i in self.held:
-            for what, value, target in (("position", sp.position[i], self.fixed[i]), ("rate", sp.rate[i], 0.0),
-                                        ("acceleration", sp.acceleration[i], 0.0), ("jerk", sp.jerk[i], 0.0)):
-                scale = self.held_scale[what][i]
-                tol = ABSOLUTE + (CONTINUITY * scale if math.isfinite(scale) else 0.0)
-                if abs(value - target) > tol:
-                    out.append(Violation(t, sp.sequence, JOINT_NAMES[i], "held", float(value), float(target),
-                                         f"{what} of a held joint: {float(value):.9g}, held at {target:.9g}"))
-        if previous is not None:
-            out += self._continuity(sp, previous, t)
-        return out, worst
-
-    def _continuity(self, sp, prev, t) -> list[Violation]:
-        f = self.free
-        pq, pqd, pa, pj = (np.asarray(x, float)[f] for x in (prev.position, prev.rate, prev.acceleration, prev.jerk))
-        eq, eqd = advance(pq, pqd, pa, prev.step, pj)
-        ea = pa + pj * prev.step
-        checks = [("position", eq, np.asarray(sp.position, float)[f], self.position_scale),
-                  ("rate", eqd, np.asarray(sp.rate, float)[f], self.velocity)]
-        if self.smooth:
-            checks.append(("acceleration", ea, np.asarray(sp.acceleration, float)[f], self.acceleration))
-        out = []
-        for what, expected, got, scale in checks:
-            tol = ABSOLUTE + CONTINUITY * scale
-            for k in np.flatnonzero(np.abs(got - expected) > tol):
-                out.append(Violation(t, sp.sequence, self.names[k], "continuity", float(got[k]), float(expected[k]),
-                                     f"{what} {got[k]:.9g} where the previous cycle (sequence {prev.sequence}) "
-                                     f"ends at {expected[k]:.9g}, tolerance {tol[k]:.3g}"))
-        return out
 
 
 def _is_own(folder: Path) -> bool:
@@ -306,17 +270,184 @@ def _number(x: float) -> str:
     return repr(float(x))
 
 
+def _number(x: float) -> str:
+    return repr(float(x))
+
+
+class _Files:
+    """The folder's CSV files, opened for appending rows, each flushed as a State is sent."""
+
+    def __init__(self, out: Path):
+        self.handles = {name: open(out / name, "w", newline="") for name in FILES if name.endswith(".csv")}
+        self.rows = {name: csv.writer(f) for name, f in self.handles.items()}
+        for name, columns in (("setpoints.csv", SETPOINT_COLUMNS), ("violations.csv", VIOLATION_COLUMNS),
+                              ("motion.csv", MOTION_COLUMNS), ("events.csv", EVENT_COLUMNS)):
+            self.rows[name].writerow(columns)
+        self.flush()
+
+    def write(self, name: str, row) -> None:
+        self.rows[name].writerow(row)
+
+    def flush(self) -> None:
+        for f in self.handles.values():
+            f.flush()
+
+    def close(self) -> None:
+        for f in self.handles.values():
+            f.close()
+
+
+class _StandIn:
+    """One run's state: the drive, the check, the service's address, what came when."""
+
+    def __init__(self, model: Model, options: MachineOptions, sock, report: Report, files: _Files):
+        self.model, self.options, self.sock, self.report, self.files = model, options, sock, report, files
+        self.drive = Drive.of(model, options.timeout, options.delay, options.bandwidth_hz)
+        self.checker = Checker(model)
+        self.rng = np.random.default_rng(options.seed)
+        self.previous: protocol.Setpoint | None = None
+        self.service = None  # where the setpoints come from, and the States go
+        self.commands: dict = {}  # the last command sequence per sender
+        self.first_arrival: float | None = None
+        self.last_arrival: float | None = None
+        self.arrivals: list[float] = []  # of setpoints, for bursts
+        self.in_burst = False
+        self.written_events = 0
+        self.faulted = False
+        self.button = False  # the emergency stop's button (SIGUSR1), acted on at the next tick
+
+    def drop(self, reason: str) -> None:
+        self.report.dropped[reason] = self.report.dropped.get(reason, 0) + 1
+
+    def datagram(self, data: bytes, sender, t: float) -> None:
+        self.report.datagrams += 1
+        self.last_arrival = t
+        try:
+            message = protocol.unpack(data)
+        except protocol.ProtocolError as error:
+            return self.drop(drop_reason(error))
+        if isinstance(message, protocol.Setpoint):
+            return self.setpoint(message, sender, t)
+        if isinstance(message, protocol.Command):
+            if sender[0] != self.options.operator:
+                return self.drop("command from an unexpected address")
+            if message.sequence <= self.commands.get(sender, -1):
+                return self.drop("command out of order")
+            self.commands[sender] = message.sequence
+            return self.drive.command(message.action, t)
+        self.drop("not a setpoint")
+
+    def setpoint(self, sp: protocol.Setpoint, sender, t: float) -> None:
+        report, previous = self.report, self.previous
+        if self.service is None:
+            self.service = sender
+        elif sender != self.service:
+            return self.drop("setpoint from an unexpected address")
+        if previous is not None and sp.sequence <= previous.sequence:
+            return self.drop("duplicate" if sp.sequence == previous.sequence else "out of order")
+        follows = previous is not None and sp.sequence == previous.sequence + 1
+        if previous is not None and not follows:
+            report.gaps += 1
+            report.missing += sp.sequence - previous.sequence - 1
+        violations, use = self.checker.check(sp, previous if follows else None, t)
+        report.reanchored = self.checker.reanchored
+        self._timing(sp, t)
+        self.first_arrival = t if self.first_arrival is None else self.first_arrival
+        refused = self.drive.setpoint(sp, t)
+        if refused:
+            reason = refused.split(" (")[0]
+            report.refused[reason] = report.refused.get(reason, 0) + 1
+            if report.refused[reason] == 1:  # the first of each reason
+                self.drive.events.append(Event(t, "setpoint refused", f"{sp.sequence}: {refused}"))
+        _record(report, self.checker, sp, t, violations, use, self.files)
+        self.previous = sp
+
+    def _timing(self, sp: protocol.Setpoint, t: float) -> None:
+        """When ``sp`` came: late after it was due, a gap while moving, a burst."""
+        report, drive, step = self.report, self.drive, sp.step
+        due = drive.due(sp) if drive.status == "following" else None
+        if due is not None:
+            late = t - due
+            report.latest = max(report.latest, late)
+            if late > self.options.late * step:
+                self._timing_fault(t, "late", f"setpoint {sp.sequence} came {1e3 * late:.1f} ms after it was due")
+        if (self.arrivals and drive.status == "following" and t - self.arrivals[-1] > drive.timeout * step
+                and not drive.joints.at_rest(t)):
+            self._timing_fault(t, "gap", f"{1e3 * (t - self.arrivals[-1]):.1f} ms without a setpoint while moving")
+        self.arrivals = [a for a in self.arrivals[-(BURST - 1):] if t - a <= step / 4] + [t]
+        if len(self.arrivals) >= BURST and not self.in_burst:
+            self._timing_fault(t, "burst", f"{len(self.arrivals)} setpoints within {1e3 * step / 4:.1f} ms")
+        self.in_burst = len(self.arrivals) >= BURST
+
+    def _timing_fault(self, t: float, kind: str, detail: str) -> None:
+        self.report.timing[kind] += 1
+        if self.report.timing[kind] <= MAX_KEPT:
+            self.drive.events.append(Event(t, f"timing: {kind}", detail))
+
+    def tick(self, t0: float, t1: float) -> None:
+        """Move the joints from ``t0`` to ``t1``, check the motion made, write it, send the State."""
+        if self.button:
+            self.button = False
+            self.drive.emergency(t0, "SIGUSR1")
+        fault = self.options.fault
+        if fault is not None and not self.faulted and self.first_arrival is not None \
+                and t1 >= self.first_arrival + fault[0]:
+            self.faulted = True
+            self.drive.fault(t1, fault[1])
+        samples = self.drive.run_to(t0, t1)
+        t, q, qd, qdd, jerk = (np.array(x) for x in zip(*samples))
+        applied = self.drive.applied
+        violations, use = self.checker.made(t1, -1 if applied is None else applied.sequence, q, qd, qdd, jerk)
+        self._record_made(violations, use)
+        noisy_q = q[-1] + self.rng.normal(0.0, self.options.noise[0], 6)
+        noisy_qd = qd[-1] + self.rng.normal(0.0, self.options.noise[1], 6)
+        drive = self.drive
+        state = protocol.MachineState(self.report.states + 1, t1, drive.status, drive.fault_code, drive.fault_joint,
+                                      None if applied is None else applied.sequence, drive.applied_time(t1),
+                                      noisy_q, noisy_qd)
+        row = [_number(t1), state.status, state.fault, "" if state.fault_joint is None else state.fault_joint,
+               "" if state.applied is None else state.applied, _number(state.applied_time)]
+        for i in range(6):
+            row += [_number(noisy_q[i]), _number(noisy_qd[i]), _number(qdd[-1, i])]
+        self.files.write("motion.csv", row)
+        if self.service is not None:
+            try:
+                self.sock.sendto(protocol.pack(state), self.service)
+                self.report.states += 1
+            except OSError:
+                self.drop("state not sent")
+        for event in drive.events[self.written_events:]:
+            self.files.write("events.csv", [_number(event.time), event.what, event.detail])
+        self.written_events = len(drive.events)
+        self.report.events, self.report.stops = drive.events, drive.stops
+        self.report.ended_moving = drive.ended_moving
+        self.files.flush()
+
+    def _record_made(self, violations, use) -> None:
+        report = self.report
+        for kind, per_joint in use.items():
+            k = int(np.argmax(per_joint))
+            if per_joint[k] > report.made[kind]:
+                report.made[kind], report.made_joint[kind] = float(per_joint[k]), JOINT_NAMES[k]
+        for v in violations:
+            _violation(report, v, self.files)
+
+    def at_rest(self, t: float) -> bool:
+        return not self.drive.joints.braking and self.drive.joints.at_rest(t, rate=1e-3)
+
+
+
 def run(model: Model, listen: tuple[str, int], out: str | Path, idle: float = 2.0,
-        duration: float | None = None, ready=None) -> Report:
-    """Receive setpoints on UDP ``listen`` = (host, port), check each (:class:`Checker`), and write
-    ``out`` (see the module). Stops ``idle`` seconds after the last datagram (once one came), after
-    ``duration`` seconds if given, or on KeyboardInterrupt / :class:`desdemona.support.guard.Interrupted`; then
-    writes what it has and returns the :class:`Report`. ``ready()`` is called once the socket is bound.
-    ValueError for a folder it must not write into, or an ``idle`` that is not positive.
+        duration: float | None = None, ready=None, options: MachineOptions = MachineOptions()) -> Report:
+    """Receive setpoints on UDP ``listen`` = (host, port), move the joints with them and check
+    everything (see the module), writing ``out`` as it goes. Stops ``idle`` seconds after the last
+    datagram (once one came) with the machine at rest, after ``duration`` seconds if given, or at rest
+    after SIGINT/SIGTERM (at once after a second); returns the :class:`Report`. SIGUSR1 is an
+    emergency stop. ``ready()`` is called once the socket is bound. ValueError for a folder it must not
+    write into, or an ``idle`` that is not positive.
     """
     if not (idle > 0):
         raise ValueError(f"idle {idle!r}: must be a positive number of seconds")
-    checker = Checker(model)
     sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
     try:
         try:
@@ -325,82 +456,77 @@ def run(model: Model, listen: tuple[str, int], out: str | Path, idle: float = 2.
             pass
         sock.bind(listen)  # before the folder: a port in use leaves nothing behind
         out = prepare(out)
-        report = Report(out=out, counts={k: 0 for k in KINDS})
+        report = Report(out=out)
         report.address = sock.getsockname()[:2]
-        with (beside(out / "setpoints.csv") as setpoints_tmp, beside(out / "violations.csv") as violations_tmp,
-              open(setpoints_tmp, "w", newline="") as sfile, open(violations_tmp, "w", newline="") as vfile):
-            srows, vrows = csv.writer(sfile), csv.writer(vfile)
-            srows.writerow(SETPOINT_COLUMNS)
-            vrows.writerow(VIOLATION_COLUMNS)
-            started = time.monotonic()
-            if ready is not None:
-                ready()
-            try:
-                _receive(sock, checker, report, srows, vrows, started, idle, duration)
-            except (KeyboardInterrupt, guard.Interrupted) as stop:
-                report.stopped = f"interrupted ({getattr(stop, 'name', 'SIGINT')})"
+        report.stopped = "running"
+        _write_summary(report, model)  # marks the folder as this command's from the start
+        files = _Files(out)
+        stand_in = _StandIn(model, options, sock, report, files)
+        stops: list[int] = []
+        started = time.monotonic()
+        try:
+            with guard.handled_here(stops.append), _emergency_signal(stand_in, started):
+                if ready is not None:
+                    ready()
+                _loop(stand_in, stops, started, idle, duration)
+        finally:
             # what it has is written whole, not cut by a further signal (held back until it is)
             with guard.deferred():
                 report.elapsed = time.monotonic() - started
-                sfile.close()
-                vfile.close()
-                os.replace(setpoints_tmp, out / "setpoints.csv")
-                os.replace(violations_tmp, out / "violations.csv")
-                _write_summary(report, model)  # the last: it marks the folder as this command's
+                files.close()
+                _write_summary(report, model)
     finally:
         sock.close()
     return report
 
 
-def _receive(sock, checker: Checker, report: Report, srows, vrows, started: float, idle: float,
-             duration: float | None) -> None:
-    """The receive loop: every wait bounded by :data:`RECEIVE_TIMEOUT`; sets ``report.stopped``."""
-    previous: protocol.Setpoint | None = None
-    last_arrival: float | None = None
+def _loop(stand_in: _StandIn, stops: list, started: float, idle: float, duration: float | None) -> None:
+    """Ticks at the State rate; between them, every datagram as it comes. Sets ``report.stopped``."""
+    report, period = stand_in.report, 1.0 / stand_in.options.state_rate
+    k, last = 1, 0.0
     while True:
-        now = time.monotonic()
-        if duration is not None and now - started >= duration:
+        now = time.monotonic() - started
+        if duration is not None and now >= duration:
             report.stopped = "duration"
             return
-        if last_arrival is not None and now - last_arrival >= idle:
+        if stops:
+            if len(stops) == 1 and not stand_in.at_rest(now) and not stand_in.drive.status == "e-stop":
+                stand_in.drive.emergency(now, f"{signal.Signals(stops[0]).name} to the stand-in")
+            if len(stops) > 1 or stand_in.at_rest(now):
+                report.stopped = f"interrupted ({signal.Signals(stops[0]).name})"
+                return
+        quiet = stand_in.last_arrival is not None and now - stand_in.last_arrival >= idle
+        if quiet and stand_in.at_rest(now):
             report.stopped = "idle"
             return
-        wait = RECEIVE_TIMEOUT
-        if duration is not None:
-            wait = min(wait, max(duration - (now - started), 1e-3))
-        sock.settimeout(wait)
-        try:
-            data, _ = sock.recvfrom(MAX_DATAGRAM)
-        except (TimeoutError, BlockingIOError, InterruptedError):
-            continue
-        last_arrival = time.monotonic()
-        t = last_arrival - started
-        report.datagrams += 1
-        try:
-            message = protocol.unpack(data)
-        except protocol.ProtocolError as error:
-            _drop(report, drop_reason(error))
-            continue
-        if not isinstance(message, protocol.Setpoint):
-            _drop(report, "not a setpoint")
-            continue
-        if previous is not None and message.sequence <= previous.sequence:
-            _drop(report, "duplicate" if message.sequence == previous.sequence else "out of order")
-            continue
-        follows = previous is not None and message.sequence == previous.sequence + 1
-        if previous is not None and not follows:
-            report.gaps += 1
-            report.missing += message.sequence - previous.sequence - 1
-        violations, use = checker.check(message, previous if follows else None, t)
-        _record(report, checker, message, t, violations, use, srows, vrows)
-        previous = message
+        tick = k * period
+        while (now := time.monotonic() - started) < tick:
+            stand_in.sock.settimeout(min(tick - now, RECEIVE_TIMEOUT))
+            try:
+                data, sender = stand_in.sock.recvfrom(MAX_DATAGRAM)
+            except (TimeoutError, BlockingIOError, InterruptedError):
+                continue
+            stand_in.datagram(data, sender, time.monotonic() - started)
+        stand_in.tick(last, now)
+        last, k = now, max(k + 1, int(now / period) + 1)
 
 
-def _drop(report: Report, reason: str) -> None:
-    report.dropped[reason] = report.dropped.get(reason, 0) + 1
+class _emergency_signal:
+    """Within the block SIGUSR1 presses the emergency stop's button (main thread only)."""
+
+    def __init__(self, stand_in: _StandIn, started: float):
+        self.stand_in, self.started, self.saved = stand_in, started, None
+
+    def __enter__(self):
+        if threading.current_thread() is threading.main_thread():
+            self.saved = signal.signal(signal.SIGUSR1, lambda *_: setattr(self.stand_in, "button", True))
+
+    def __exit__(self, *exc):
+        if self.saved is not None:
+            signal.signal(signal.SIGUSR1, self.saved)
 
 
-def _record(report: Report, checker: Checker, sp: protocol.Setpoint, t: float, violations, use, srows, vrows):
+def _record(report: Report, checker: Checker, sp: protocol.Setpoint, t: float, violations, use, files: _Files):
     report.received += 1
     report.statuses[sp.status] = report.statuses.get(sp.status, 0) + 1
     report.sources[sp.source] = report.sources.get(sp.source, 0) + 1
@@ -416,12 +542,17 @@ def _record(report: Report, checker: Checker, sp: protocol.Setpoint, t: float, v
            "" if sp.answers is None else sp.answers, _number(sp.cycle_time), _number(sp.step)]
     for i in range(6):
         row += [_number(sp.position[i]), _number(sp.rate[i]), _number(sp.acceleration[i]), _number(sp.jerk[i])]
-    srows.writerow(row)
+    files.write("setpoints.csv", row)
     for v in violations:
-        report.counts[v.what] += 1
-        if len(report.violations) < MAX_KEPT:
-            report.violations.append(v)
-        vrows.writerow([_number(v.time), v.sequence, v.joint, v.what, _number(v.value), _number(v.limit), v.detail])
+        _violation(report, v, files)
+
+
+def _violation(report: Report, v: Violation, files: _Files) -> None:
+    report.counts[v.what] += 1
+    if len(report.violations) < MAX_KEPT:
+        report.violations.append(v)
+    files.write("violations.csv", [_number(v.time), v.sequence, v.joint, v.what, _number(v.value), _number(v.limit),
+                                   v.detail])
 
 
 def summary(report: Report, model: Model) -> dict:
@@ -434,9 +565,15 @@ def summary(report: Report, model: Model) -> dict:
         "config": model.config.name, "params": model.params.name, "free": list(model.config.joint_names),
         "listen": list(report.address), "stopped": report.stopped, "elapsed": report.elapsed,
         "datagrams": report.datagrams, "received": report.received, "dropped": dict(sorted(report.dropped.items())),
-        "gaps": report.gaps, "missing": report.missing,
+        "refused": dict(sorted(report.refused.items())), "gaps": report.gaps, "missing": report.missing,
+        "reanchored": report.reanchored, "states_sent": report.states,
         "violations": dict(report.counts), "violation_count": report.violation_count,
+        "timing_faults": dict(report.timing), "latest_after_due_s": report.latest,
+        "ended_moving": report.ended_moving,
+        "own_stops": [{"why": s.why, "start": s.start, "shortest_stop_s": s.bound, "at_rest": s.rest}
+                      for s in report.stops],
         "worst_use": {k: finite(v) for k, v in report.worst.items()}, "worst_joint": dict(report.worst_joint),
+        "worst_use_made": {k: finite(v) for k, v in report.made.items()}, "worst_joint_made": dict(report.made_joint),
         "first_cycle_time": report.first_cycle_time, "last_cycle_time": report.last_cycle_time,
         "statuses": dict(report.statuses), "sources": dict(report.sources),
         "tolerance": TOLERANCE, "continuity_tolerance": {"relative": CONTINUITY, "absolute": ABSOLUTE},
