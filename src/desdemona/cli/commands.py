@@ -481,7 +481,7 @@ def run_serve(args) -> int:
         listen, send = protocol.address(args.listen, "--listen"), protocol.address(args.send, "--send")
         serving = serve.ServeOptions(listen=listen, send=send,
                                      channels=channels, timeout=args.timeout, duration=args.duration,
-                                     quiet_end=args.quiet_end)
+                                     quiet_end=args.quiet_end, operator=args.operator, state_lost=args.state_lost)
     except ValueError as exc:
         raise UserError(str(exc)) from None
     reference = None if args.reference is None else profiles.load(args.reference)
@@ -511,7 +511,8 @@ def run_serve(args) -> int:
     k0, k1 = served.span()
     report.write_online(result, out, report.command_line(), args.overwrite, protect=_inputs(args), view=args.view,
                         cycle_columns={k: v[k0:k1] for k, v in served.columns.items()},
-                        extra_summary={"service": summary}, files={"session.csv": serve.session_table(served)})
+                        extra_summary={"service": summary}, files={"session.csv": serve.session_table(served),
+                                                                   "events.csv": serve.events_table(served)})
     print(serve.describe(summary) + f"; written to {out}")
     print(f"  felt while following the host: {result.quality.headline()}")
     if served.stopped_by is not None:

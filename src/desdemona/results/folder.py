@@ -17,7 +17,7 @@ RESULT_FORMAT = "desdemona result"  # the mark in summary.json that makes a fold
 
 # Everything a result folder of ours may hold: replacing one never deletes anything else.
 RESULT_FILES = {"trajectory.csv", "summary.json", "trajectory.mat", "cycles.csv", "classical.csv", "view.html",
-                "session.csv"}
+                "session.csv", "events.csv"}
 
 
 class ReportError(RuntimeError):

@@ -27,11 +27,13 @@ import numpy as np
 from desdemona.machine.params import JOINT_NAMES
 from desdemona.machine.plan import advance
 from desdemona.service import protocol
-from desdemona.service.servo import BRAKE_STEP, JointLimits, Joints
+from desdemona.service.servo import JointLimits, Joints
 
 #: A setpoint starts where the machine stands (to follow from rest) within this share of a cycle at
 #: the rate limit (position) and at the acceleration limit (rate).
 START = 0.1
+#: The motion made is moved on and sampled (for its check) every SAMPLE seconds.
+SAMPLE = 0.002
 #: Still: every rate and acceleration within this share of its limit (round-off of a stop at rest).
 STILL = 1e-6
 
@@ -166,10 +168,11 @@ class Drive:
         self._enter(t, status, why)
 
     def run_to(self, t0: float, t1: float) -> list[tuple]:
-        """Move the joints on from ``t0`` to ``t1`` [s] in steps of :data:`BRAKE_STEP`; the motion made
-        at each step's end: [(t, q, qd, qdd, jerk), ...]."""
+        """Move the joints on from ``t0`` to ``t1`` [s] in steps of :data:`SAMPLE` (the brake within
+        them in its own :data:`~desdemona.service.servo.BRAKE_STEP`); the motion made at each step's
+        end: [(t, q, qd, qdd, jerk), ...]."""
         samples = []
-        count = max(1, int(round((t1 - t0) / BRAKE_STEP)))
+        count = max(1, int(round((t1 - t0) / SAMPLE)))
         for i in range(1, count + 1):
             t = t0 + (t1 - t0) * i / count
             self._step(t)
@@ -208,6 +211,8 @@ class Drive:
             if self.joints.braking and self.joints.brake_to(t):
                 self._rested(t)
             return
+        if sp is self.applied and not self.joints.braking:
+            return  # the same cubic goes on: the reference carries it exactly
         s = tau - sp.cycle_time
         q, qd = advance_setpoint(sp, s)
         self.joints.follow(t, q, qd, sp.acceleration + sp.jerk * s, sp.jerk)

@@ -45,9 +45,11 @@ from desdemona.control.mpc import MPC
 from desdemona.control.online import OnlineOptions, OnlineResult, judge
 from desdemona.control.predictors import LIVE, predictor
 from desdemona.machine.model import Model
+from desdemona.machine.params import JOINT_NAMES
 from desdemona.machine.plan import Plan, State, stopping_jerk
 from desdemona.profiles import DesiredPath, ProfileError
 from desdemona.service import protocol
+from desdemona.service.measured import BAND, STOPPED_ON_ITS_OWN, MachineLink, commanded_at
 from desdemona.support import guard
 from desdemona.support.symbolic import call
 
@@ -74,7 +76,8 @@ class ServeOptions:
     a valid host message before the machine is parked; duration : end the session after this many
     seconds (None: run until stopped); quiet_end : end it once parked with no host message for this
     many seconds, after the first one came (None: never); history : seconds of received motion the
-    predictor is given."""
+    predictor is given; operator : the host whose Commands it takes; state_lost : seconds without a
+    State from the machine (once they came) before it parks."""
 
     listen: tuple[str, int]
     send: tuple[str, int]
@@ -83,13 +86,16 @@ class ServeOptions:
     duration: float | None = None
     quiet_end: float | None = None
     history: float = 10.0
+    operator: str = "127.0.0.1"
+    state_lost: float = 0.5
 
     def __post_init__(self):
         if self.channels not in (None, 1, 6):
             raise ValueError(f"--channels {self.channels}: 6 (S) or 1 (the modulus)")
         if not (isinstance(self.timeout, int) and self.timeout >= 1):
             raise ValueError(f"--timeout {self.timeout}: a whole number of cycles, at least 1")
-        for name, value in (("--duration", self.duration), ("--quiet-end", self.quiet_end)):
+        for name, value in (("--duration", self.duration), ("--quiet-end", self.quiet_end),
+                            ("--state-lost", self.state_lost)):
             if value is not None and not (math.isfinite(value) and value > 0):
                 raise ValueError(f"{name} {value:g}: a positive number of seconds")
 
@@ -109,6 +115,9 @@ class Served:
     stopped_by: int | None = None
     deadline: float = 0.0
     offset: float = 0.0  # the session's time [s] of the host's time 0
+    events: list = field(default_factory=list)  # (time [s, the session's clock], what, detail)
+    states: int = 0  # State messages of the machine taken
+    reanchored: int = 0  # cycles planned from the measured machine
 
     def span(self) -> tuple[int, int]:
         """(k0, k1): the cycles the session followed the host, from the first that answered a host
@@ -144,12 +153,18 @@ class _Inbox:
     is taken as the same host back: its times continue from where it left off. ``on_drop(reason)`` is
     told of each new reason to drop a datagram."""
 
-    def __init__(self, sock: socket.socket, channels: int, clock, restart_after: float = np.inf, on_drop=None):
+    def __init__(self, sock: socket.socket, channels: int, clock, restart_after: float = np.inf, on_drop=None,
+                 machine: tuple[socket.socket, MachineLink] | None = None, operator: str = "127.0.0.1"):
         self.sock, self.channels, self.clock = sock, channels, clock
         self.restart_after, self.on_drop = restart_after, on_drop
         self.shift = 0.0  # added to a returning host's times
         self.selector = selectors.DefaultSelector()
         self.selector.register(sock, selectors.EVENT_READ)
+        self.machine, self.operator = machine, operator
+        if machine is not None:
+            self.selector.register(machine[0], selectors.EVENT_READ)
+        self.commands: list[tuple[float, str]] = []  # (arrived, action) not yet acted on
+        self.last_command: dict = {}
         self.dropped: Counter = Counter()
         self.newest: protocol.Motion | None = None
         self.arrived = None  # clock time the newest message arrived
@@ -167,21 +182,28 @@ class _Inbox:
             self.selector.select((min(opens, until) if self.fresh else until) - now)
 
     def drain(self) -> None:
-        while True:
-            try:
-                data = self.sock.recv(65536)
-            except (BlockingIOError, InterruptedError):
-                return
-            except OSError:  # e.g. an ICMP error for an earlier send: not a host message
-                self.dropped["socket error"] += 1
-                continue
-            self._take(data, self.clock())
+        if self.machine is not None:
+            sock, link = self.machine
+            for data, sender in _datagrams(sock, self.dropped):
+                reason = link.take(data, sender, self.clock())
+                if reason and link.dropped[reason] == 1 and self.on_drop is not None:
+                    self.on_drop(reason)
+        for data, sender in _datagrams(self.sock, self.dropped):
+            self._take(data, self.clock(), sender)
 
-    def _take(self, data: bytes, arrived: float) -> None:
+    def _take(self, data: bytes, arrived: float, sender=("", 0)) -> None:
         try:
             message = protocol.unpack(data)
         except protocol.ProtocolError as exc:
             return self._drop(str(exc).split(":")[0])
+        if isinstance(message, protocol.Command):
+            if sender[0] != self.operator:
+                return self._drop("command from an unexpected address")
+            if message.sequence <= self.last_command.get(sender, -1):
+                return self._drop("command out of order or repeated")
+            self.last_command[sender] = message.sequence
+            self.commands.append((arrived, message.action))
+            return None
         if not isinstance(message, protocol.Motion):
             return self._drop("not a motion message")
         if message.channels != self.channels:
@@ -207,6 +229,17 @@ class _Inbox:
         while start > 0 and self.t[start - 1] > self.t[-1] - seconds:
             start -= 1
         return np.asarray(self.t[start:]), np.asarray(self.values[start:])
+
+
+def _datagrams(sock: socket.socket, dropped: Counter):
+    """The datagrams waiting on a non-blocking ``sock``: (data, sender) each."""
+    while True:
+        try:
+            yield sock.recvfrom(65536)
+        except (BlockingIOError, InterruptedError):
+            return
+        except OSError:  # e.g. an ICMP error for an earlier send: not a message
+            dropped["socket error"] += 1
 
 
 class _Preview:
@@ -258,9 +291,12 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             guard.handled_here(stops.append):
         inbound.bind(serving.listen)
         inbound.setblocking(False)
+        outbound.setblocking(False)
         if ready is not None:
             ready()
-        inbox = _Inbox(inbound, channels, clock, serving.timeout * h, on_drop)
+        link = MachineLink(model, h, serving.send, serving.state_lost)
+        inbox = _Inbox(inbound, channels, clock, serving.timeout * h, on_drop, machine=(outbound, link),
+                       operator=serving.operator)
         session = _Session(model, controller, h, guard_use)
         start = clock()
         k = 0
@@ -269,22 +305,27 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             # stopping, the cycles keep their times; else each starts as a new host message comes
             inbox.wait(start + k * h, np.inf) if stops else inbox.wait(closes, opens)
             began = clock()
+            for arrived, action in inbox.commands:
+                session.operator(action, arrived - start)
+                if action in ("emergency stop", "reset"):  # the motion system's own: passed on
+                    _send(outbound, protocol.Command(len(session.events), began - start, action), serving.send, inbox)
+            inbox.commands = []
             alive = inbox.arrived is not None and began - inbox.arrived <= serving.timeout * h
+            machine = session.observe(link, began - start, began)
             if stops:
                 session.park(stop=True, hard=len(stops) > 1)
+            elif machine or session.paused:
+                session.park(reason=machine or f"operator: {session.paused}")
             elif alive:
                 session.run(preview(inbox), inbox.newest.sequence)
             elif inbox.newest is None:
                 session.hold("starting")
             else:
                 session.park()
-            answered = inbox.fresh and alive and not stops
+            answered = inbox.fresh and alive and not (stops or machine or session.paused)
             inbox.fresh = inbox.fresh and not answered
             setpoint = session.setpoint(k, began - start, inbox.newest.sequence if answered else None)
-            try:
-                outbound.sendto(protocol.pack(setpoint), serving.send)
-            except OSError as exc:  # the machine's port: nothing to do but count it
-                inbox.dropped[f"setpoint not sent: {exc.strerror or exc}"] += 1
+            _send(outbound, setpoint, serving.send, inbox)
             sent = clock()
             session.record(k, compute=sent - began, age=np.nan if inbox.arrived is None else began - inbox.arrived,
                            latency=sent - inbox.arrived if answered else np.nan)
@@ -296,8 +337,17 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
                 break
     offset = inbox.arrivals[0] - start - inbox.t[0] if inbox.t else 0.0
     return Served(loop=session.loop(), columns=session.columns(), received_t=np.asarray(inbox.t) + offset,
-                  received=np.asarray(inbox.values).reshape(len(inbox.t), channels), dropped=inbox.dropped,
-                  stopped_by=stops[0] if stops else None, deadline=controller.deadline, offset=offset)
+                  received=np.asarray(inbox.values).reshape(len(inbox.t), channels),
+                  dropped=inbox.dropped + link.dropped, stopped_by=stops[0] if stops else None,
+                  deadline=controller.deadline, offset=offset, events=session.events, states=link.received,
+                  reanchored=session.reanchored)
+
+
+def _send(sock: socket.socket, message, to, inbox: _Inbox) -> None:
+    try:
+        sock.sendto(protocol.pack(message), to)
+    except OSError as exc:  # the machine's port: nothing to do but count it
+        inbox.dropped[f"{type(message).__name__.lower()} not sent: {exc.strerror or exc}"] += 1
 
 
 class _Session:
@@ -313,6 +363,15 @@ class _Session:
         self.u, self.jerks = [], []
         self.was_parked = False
         self.settle = None  # the second cycle's jerks of coming to rest
+        self.starts: list[State] = []  # each cycle's starting state, for the tracking error
+        self.paused: str | None = None  # an operator's pause, park or emergency stop, until resume or reset
+        self.events: list[tuple[float, str, str]] = []
+        self.machine_fault = ""  # why the machine is parked on what it measurably does ("": it is not)
+        self.trusted_from = 1  # the first setpoint sequence a State's tracking error is judged on
+        self.reanchored = 0
+        self.tracking = np.nan  # the use of the tracking tolerance this cycle (1 = a fault)
+        self.machine_status = ""
+        self.told: set[str] = set()
 
     def run(self, preview, sequence: int) -> None:
         if self.was_parked:  # the machine was moved by the watchdog: plan afresh from here
@@ -323,7 +382,76 @@ class _Session:
         self.status, self.source, self.reason = "running", SOURCE_NAMES[command.source], command.reason
         self._guard()
 
-    def park(self, stop: bool = False, hard: bool = False) -> None:
+    def event(self, t: float, what: str, detail: str = "") -> None:
+        self.events.append((t, what, detail))
+
+    def operator(self, action: str, t: float) -> None:
+        """An operator's Command: pause, park (the same, the controller then plans afresh), resume,
+        emergency stop (parked until a reset), reset."""
+        self.event(t, f"command {action}")
+        if action in ("pause", "park", "emergency stop"):
+            self.paused = action
+            if action == "park":
+                self.controller.forget()
+        elif action == "resume" and self.paused in ("pause", "park"):
+            self.paused = None
+        elif action == "reset" and self.paused == "emergency stop":
+            self.paused = None
+
+    def observe(self, link: MachineLink, t: float, now: float) -> str:
+        """Take the newest State of the machine ``link`` at the cycle's time ``t`` [s] (``now`` on the
+        clock): why the machine must be parked on what it measurably does ("" if it need not); the
+        state the cycle plans from is the measured machine carried forward where it is off the
+        command beyond the noise (:data:`~desdemona.service.measured.BAND`)."""
+        if link.newest is None:
+            if t > 1.0 and "no state" not in self.told:
+                self.told.add("no state")
+                self.event(t, "no State from the machine", "planning on its own command (as protocol version 1)")
+            return ""
+        if link.lost(now):
+            return self._machine(t, f"no State from the machine for {now - link.arrived:.2f} s")
+        commanded = commanded_at(self.starts, self.u, [*self.jerks], self.h)
+        tracking = link.tracking(lambda tau: commanded(tau) if link.newest.applied is not None
+                                 and link.newest.applied >= self.trusted_from else None)
+        self.tracking, self.machine_status = tracking.use, tracking.status
+        st = tracking.state
+        if tracking.status in STOPPED_ON_ITS_OWN or (tracking.status == "stopped" and self.status != "parked"
+                                                       and not self.machine_fault):
+            joint = "" if st.fault_joint is None else f" on {JOINT_NAMES[st.fault_joint]}"
+            fault = "" if st.fault == "none" else f" ({st.fault} fault{joint})"
+            return self._machine(t, f"the machine is {tracking.status}{fault}", measured=link.measured())
+        if tracking.use > 1.0:
+            return self._machine(t, f"tracking error {tracking.use:.2f} x its tolerance", error=tracking.error)
+        if self.machine_fault:
+            if self.status != "parked":  # it follows the parking again: no more re-anchoring
+                return self.machine_fault
+            self.event(t, "machine back", f"{tracking.status}: planning afresh from where it stands")
+            self.machine_fault = ""
+        elif tracking.use > BAND:
+            self._carry(tracking.error)
+            self.reanchored += 1
+        return ""
+
+    def _machine(self, t: float, why: str, measured=None, error=None) -> str:
+        """Park on what the machine measurably does: from ``measured`` (q, qd) where it stopped on its
+        own, from the command plus the tracking ``error`` where it drifted off; logged once per reason."""
+        if why != self.machine_fault:
+            self.event(t, "machine fault", why)
+            self.controller.forget()
+        self.machine_fault = why
+        if measured is not None:
+            q, qd = measured
+            self.state, self.settle = State(q, qd, np.zeros_like(q)), None
+            self.trusted_from = len(self.rows) + 1  # the setpoints from now on start where the machine is
+        elif error is not None:
+            self._carry(error)
+        return why
+
+    def _carry(self, error) -> None:
+        q, qd, a = self.state
+        self.state, self.settle = State(q + error[0], qd + error[1], a), None
+
+    def park(self, stop: bool = False, hard: bool = False, reason: str = "") -> None:
         """Stop the machine as quickly as its limits allow (:func:`stopping_jerk`: each joint braking at
         its acceleration limit, reached and left at its jerk limit; at a lower acceleration where the
         cycle's check of every limit asks for it, and as :meth:`MPC.brake` where none passes), and, once
@@ -348,7 +476,7 @@ class _Session:
                     break
             else:
                 self.command = self.controller.brake(q, qd, a)
-        self.source, self.reason = "park", "stop" if stop else "no host message"
+        self.source, self.reason = "park", reason or ("stop" if stop else "no host message")
         self.was_parked = True
         self._guard()
 
@@ -376,10 +504,12 @@ class _Session:
 
     def record(self, k: int, compute: float, age: float, latency: float) -> None:
         qdd, jerk = self.command
+        self.starts.append(self.state)
         self.u.append(qdd)
         self.jerks.append(jerk)
         self.rows.append({"t": k * self.h, "compute_time_s": compute, "message_age_s": age, "latency_s": latency,
-                          "command": self.source, "status": self.status, "reason": self.reason})
+                          "command": self.source, "status": self.status, "reason": self.reason,
+                          "tracking_use": self.tracking, "machine": self.machine_status})
         self.state = self.state.advance(qdd, self.h, jerk)
 
     def loop(self) -> ClosedLoop:
@@ -391,7 +521,8 @@ class _Session:
                           np.array([r["compute_time_s"] for r in self.rows]), tuple(r["reason"] for r in self.rows))
 
     def columns(self) -> dict[str, np.ndarray]:
-        return {key: np.array([r[key] for r in self.rows]) for key in ("message_age_s", "latency_s", "command", "status")}
+        return {key: np.array([r[key] for r in self.rows])
+                for key in ("message_age_s", "latency_s", "command", "status", "tracking_use", "machine")}
 
 
 def result(served: Served, model: Model, options: OnlineOptions) -> OnlineResult:
@@ -406,12 +537,21 @@ def result(served: Served, model: Model, options: OnlineOptions) -> OnlineResult
 def session_table(served: Served) -> str:
     """``session.csv``: every cycle of the session, on its clock (also before the host came and after
     it had gone): its time, status, command, the host message's age, the latency and the compute time
-    [s], and the reason of a fallback."""
+    [s], the reason of a fallback or a parking, the machine's own status as its newest State said and
+    the use of the tracking tolerance (1 = a fault; empty without States)."""
     columns, loop = served.columns, served.loop
-    lines = ["t,status,command,message_age_s,latency_s,compute_time_s,reason"]
+    lines = ["t,status,command,message_age_s,latency_s,compute_time_s,reason,machine,tracking_use"]
     for k, t in enumerate(loop.cycle_times):
         lines.append(f"{t:.6g},{columns['status'][k]},{columns['command'][k]},{columns['message_age_s'][k]:.6g},"
-                     f"{columns['latency_s'][k]:.6g},{loop.compute_times[k]:.6g},\"{loop.reasons[k]}\"")
+                     f"{columns['latency_s'][k]:.6g},{loop.compute_times[k]:.6g},\"{loop.reasons[k]}\","
+                     f"{columns['machine'][k]},{columns['tracking_use'][k]:.6g}")
+    return "\n".join(lines) + "\n"
+
+
+def events_table(served: Served) -> str:
+    """``events.csv``: every operator command, machine fault and notice of the session with its time [s,
+    the session's clock]."""
+    lines = ["t,what,detail"] + [f"{t:.6g},{what},\"{detail}\"" for t, what, detail in served.events]
     return "\n".join(lines) + "\n"
 
 
@@ -437,7 +577,11 @@ def summary(served: Served, serving: ServeOptions) -> dict:
             "compute_over_deadline": int(np.sum(times > served.deadline)),
             "judged_span_s": [float(served.loop.plan.t_nodes[k]) for k in served.span()],
             "host_time_offset_s": served.offset - float(served.loop.plan.t_nodes[served.span()[0]]),
-            "stopped_by": None if served.stopped_by is None else signal.Signals(served.stopped_by).name}
+            "stopped_by": None if served.stopped_by is None else signal.Signals(served.stopped_by).name,
+            "machine_states": served.states, "reanchored_cycles": served.reanchored,
+            "tracking_use_max": None if not np.any(np.isfinite(columns["tracking_use"]))
+            else float(np.nanmax(columns["tracking_use"])),
+            "events": [{"t": t, "what": what, "detail": detail} for t, what, detail in served.events]}
 
 
 def describe(summary: dict) -> str:
@@ -447,5 +591,10 @@ def describe(summary: dict) -> str:
         f"latency median {1e3 * latency['median']:.2f} ms, p99 {1e3 * latency['p99']:.2f} ms")
     dropped = sum(summary["dropped"].values())
     status = ", ".join(f"{k} {v}" for k, v in summary["status"].items())
+    machine = ("no State from the machine (planned on its own command)" if not summary["machine_states"] else
+               f"{summary['machine_states']} machine States, tracking error at most {summary['tracking_use_max']:.3g} "
+               f"of its tolerance, {summary['reanchored_cycles']} cycles re-anchored")
+    faults = [e for e in summary["events"] if e["what"] in ("machine fault",) or e["what"].startswith("command")]
     return (f"served {summary['cycles']} cycles ({status}), {summary['received']} host messages, {lat}, "
-            f"{summary['compute_over_deadline']} over the deadline, {dropped} datagrams dropped")
+            f"{summary['compute_over_deadline']} over the deadline, {dropped} datagrams dropped; {machine}"
+            + "".join(f"\n  {e['t']:.3f} s: {e['what']}" + (f": {e['detail']}" if e["detail"] else "") for e in faults))

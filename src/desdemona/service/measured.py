@@ -1,0 +1,123 @@
+"""What the service knows of the machine it drives: the motion system's State messages (protocol
+version 2), checked, and the tracking error they show.
+
+The tracking error compares like with like: a State says which point of the commanded motion its
+joints were following when measured (``applied_time`` on the setpoints' time line, every transport
+delay and queue of the motion system included), so the error is the measured position and rate less
+the commanded ones at that point. Carried forward to a cycle's time with the commands in flight, the
+machine is expected where the commanded motion is then, plus that error.
+
+Tolerances, from the limits (per free joint, the session's step h):
+
+- **fault**: a position error beyond the way the joint covers in :data:`CYCLES` cycles at its rate
+  limit, or a rate error beyond what it gains in as many cycles at its acceleration limit: the machine
+  is not doing what it was told (the stand-in's own re-anchor allowance is the same);
+- **re-anchor**: beyond :data:`BAND` of those the service plans from the measured machine rather than
+  from its own command (below it, the error is a measurement's noise, and the reference stays
+  continuous for the servos' feed-forward).
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from dataclasses import dataclass
+
+import numpy as np
+
+from desdemona.machine.plan import advance
+from desdemona.service import protocol
+
+#: The fault tolerance in cycles at the rate limit (position) and at the acceleration limit (rate).
+CYCLES = 2.0
+#: The share of the fault tolerance beyond which the plan starts from the measured machine.
+BAND = 0.05
+#: The motion system's statuses in which it does not follow the service.
+STOPPED_ON_ITS_OWN = ("braking", "fault", "e-stop")
+
+
+@dataclass(frozen=True)
+class Tracking:
+    """The newest State carried to a cycle: ``error`` (e_q, e_qd) of the free joints (n,) each, the
+    largest use of the fault tolerance ``use`` (1 = at it), and the State's ``status``."""
+
+    error: tuple[np.ndarray, np.ndarray]
+    use: float
+    status: str
+    state: protocol.MachineState
+
+
+class MachineLink:
+    """The States of the motion system at ``address`` (the service's ``--send``), for ``model`` at the
+    session's step ``h`` [s]: :meth:`take` a datagram; :meth:`tracking` of the newest State against the
+    commanded motion; ``lost_after`` [s] without a State (once they came) is a loss."""
+
+    def __init__(self, model, h: float, address: tuple[str, int], lost_after: float):
+        self.free = list(model.config.free)
+        lim = model.limits
+        self.tolerance = (CYCLES * h * np.asarray(lim.velocity, float), CYCLES * h * np.asarray(lim.acceleration, float))
+        self.address, self.lost_after = address, lost_after
+        self.newest: protocol.MachineState | None = None
+        self.arrived: float | None = None
+        self.received = 0
+        self.dropped: Counter = Counter()
+
+    def take(self, data: bytes, sender, now: float) -> str:
+        """A datagram that came to the service's sending socket: "" if it is a valid State of the
+        machine (kept as the newest), else the reason it was dropped (counted)."""
+        reason = self._check(data, sender)
+        if reason:
+            self.dropped[reason] += 1
+            return reason
+        self.received += 1
+        self.arrived = now
+        return ""
+
+    def _check(self, data: bytes, sender) -> str:
+        if tuple(sender[:2]) != tuple(self.address):
+            return "state from an unexpected address"
+        try:
+            message = protocol.unpack(data)
+        except protocol.ProtocolError as exc:
+            return f"state: {str(exc).split(':')[0]}"
+        if not isinstance(message, protocol.MachineState):
+            return "not a state message"
+        if self.newest is not None and message.sequence <= self.newest.sequence:
+            return "state out of order or repeated"
+        self.newest = message
+        return ""
+
+    def lost(self, now: float) -> bool:
+        """States came, and none for ``lost_after`` seconds."""
+        return self.arrived is not None and now - self.arrived > self.lost_after
+
+    def tracking(self, commanded) -> Tracking | None:
+        """The newest State against ``commanded(t) -> (q, qd)`` of the free joints on the setpoints'
+        time line (None where it has no motion there); None before any State."""
+        state = self.newest
+        if state is None:
+            return None
+        at = commanded(state.applied_time) if state.applied is not None else None
+        if at is None:
+            zero = np.zeros(len(self.free))
+            return Tracking((zero, zero), 0.0, state.status, state)
+        e_q = np.asarray(state.position, float)[self.free] - at[0]
+        e_qd = np.asarray(state.rate, float)[self.free] - at[1]
+        use = float(max(np.max(np.abs(e_q) / self.tolerance[0]), np.max(np.abs(e_qd) / self.tolerance[1])))
+        return Tracking((e_q, e_qd), use, state.status, state)
+
+    def measured(self) -> tuple[np.ndarray, np.ndarray]:
+        """The newest State's free joints' positions and rates."""
+        return (np.asarray(self.newest.position, float)[self.free], np.asarray(self.newest.rate, float)[self.free])
+
+
+def commanded_at(starts, u, jerks, h: float):
+    """``commanded(t)`` of cycles starting at k h from ``starts`` [(q, qd, a), ...] with accelerations
+    ``u`` and jerks: the free joints' (q, qd) at t (None outside the cycles commanded)."""
+    def at(t: float):
+        k = int(np.floor(t / h + 1e-9))
+        if k < 0 or k >= len(u):
+            return None
+        s = min(max(t - k * h, 0.0), h)
+        q, qd, _ = starts[k]
+        return advance(q, qd, u[k], s, jerks[k])
+    return at
