@@ -17,7 +17,7 @@ import pytest
 from desdemona.machine.model import Model
 from desdemona.machine.params import JOINT_NAMES
 from desdemona.machine.plan import State
-from desdemona.service import machine, protocol, servo
+from desdemona.service import machine, protocol
 
 # These tests time what they watch (a real-time loop, a prompt stop): the README runs them alone.
 pytestmark = pytest.mark.realtime

@@ -533,7 +533,7 @@ def run_machine(args) -> int:
             bandwidth_hz=servo.BANDWIDTH_HZ if args.bandwidth is None else args.bandwidth,
             noise=servo.NOISE if args.noise is None else tuple(args.noise), state_rate=args.state_rate,
             timeout=args.timeout, late=args.late, fault=None if args.fault is None else machine.parse_fault(args.fault),
-            operator=args.operator, seed=args.seed)
+            operator=args.operator, seed=args.seed, state_outage=_pair(args.state_outage, "--state-outage"))
         report = machine.run(model, listen, args.out, idle=args.idle, duration=args.duration, options=options)
     except ValueError as exc:
         raise UserError(str(exc)) from None
@@ -547,6 +547,19 @@ def run_machine(args) -> int:
     if not report.passed:
         return machine.exit_code(report)
     return 128 + signal.SIGINT if report.stopped.startswith("interrupted") else 0
+
+
+def _pair(text: str | None, option: str) -> tuple[float, float] | None:
+    """(start, length) of ``START,LENGTH`` in seconds, or None; UserError naming ``option``."""
+    if text is None:
+        return None
+    try:
+        start, length = (float(x) for x in text.split(","))
+    except ValueError:
+        raise UserError(f"{option} {text!r}: give START,LENGTH in seconds, e.g. 2,1") from None
+    if not (start >= 0 and length >= 0):
+        raise UserError(f"{option} {text!r}: START and LENGTH must be numbers >= 0")
+    return start, length
 
 
 def run_command(args) -> int:
@@ -571,14 +584,7 @@ def run_command(args) -> int:
 def _host_options(args) -> dict:
     from desdemona.service import protocol
 
-    outage = None
-    if args.outage is not None:
-        try:
-            outage = tuple(float(x) for x in args.outage.split(","))
-        except ValueError:
-            outage = ()
-        if len(outage) != 2:
-            raise UserError(f"--outage {args.outage!r}: give START,LENGTH in seconds, e.g. 30,1")
+    outage = _pair(args.outage, "--outage")
     try:
         to = protocol.address(args.to, "--to")
     except ValueError as exc:

@@ -532,6 +532,9 @@ def _add_machine_parser(sub) -> None:
     machine.add_argument("--operator", default="127.0.0.1", metavar="HOST",
                          help="the host whose Commands it takes (default: 127.0.0.1)")
     machine.add_argument("--seed", type=int, default=0, help="seed of the measurement noise (default: 0)")
+    machine.add_argument("--state-outage", default=None, metavar="START,LENGTH", dest="state_outage",
+                         help="send no State for LENGTH seconds from START seconds after the first setpoint "
+                              "(a test of the service's loss of them)")
     machine.set_defaults(run=commands.run_machine)
 
     command = sub.add_parser(

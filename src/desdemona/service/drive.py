@@ -172,7 +172,7 @@ class Drive:
         them in its own :data:`~desdemona.service.servo.BRAKE_STEP`); the motion made at each step's
         end: [(t, q, qd, qdd, jerk), ...]."""
         samples = []
-        count = max(1, int(round((t1 - t0) / SAMPLE)))
+        count = max(1, round((t1 - t0) / SAMPLE))
         for i in range(1, count + 1):
             t = t0 + (t1 - t0) * i / count
             self._step(t)

@@ -65,15 +65,40 @@ from desdemona.check.simulate import TOLERANCE
 from desdemona.machine.model import Model
 from desdemona.machine.params import JOINT_NAMES
 from desdemona.service import protocol
-from desdemona.service.checker import (ABSOLUTE, CONTINUITY, KINDS, LIMIT_KINDS, MADE_KINDS, POINTS, REANCHOR,
-                                       Checker, Violation)
+from desdemona.service.checker import (
+    ABSOLUTE,
+    CONTINUITY,
+    KINDS,
+    LIMIT_KINDS,
+    MADE_KINDS,
+    POINTS,
+    REANCHOR,
+    Checker,
+    Violation,
+)
 from desdemona.service.drive import Drive, Event
 from desdemona.service.servo import BANDWIDTH_HZ, DELAY, NOISE
 from desdemona.support import guard
 from desdemona.support.files import beside
 
-__all__ = ["POINTS", "CONTINUITY", "ABSOLUTE", "REANCHOR", "KINDS", "LIMIT_KINDS", "MADE_KINDS", "Checker",
-           "Violation", "MachineOptions", "Report", "run", "exit_code", "drop_reason", "parse_fault", "prepare"]
+__all__ = [
+    "ABSOLUTE",
+    "CONTINUITY",
+    "KINDS",
+    "LIMIT_KINDS",
+    "MADE_KINDS",
+    "POINTS",
+    "REANCHOR",
+    "Checker",
+    "MachineOptions",
+    "Report",
+    "Violation",
+    "drop_reason",
+    "exit_code",
+    "parse_fault",
+    "prepare",
+    "run",
+]
 
 #: Every receive waits at most this long [s], so the loop notices ``idle``, ``duration`` and signals.
 RECEIVE_TIMEOUT = 0.05
@@ -104,7 +129,8 @@ class MachineOptions:
     it runs behind the setpoints' time line (no setpoint for that long: it brakes); ``late``
     [cycles] after its cycle was due a setpoint counts as late; ``fault``: (seconds after the first
     setpoint, joint index) of an injected drive fault, or None; ``operator``: the host whose Commands
-    it takes."""
+    it takes; ``state_outage``: (seconds after the first setpoint, length [s]) in which it sends no
+    State (a test of the service's loss of them), or None."""
 
     delay: float = DELAY
     bandwidth_hz: float = BANDWIDTH_HZ
@@ -115,6 +141,7 @@ class MachineOptions:
     fault: tuple[float, int] | None = None
     operator: str = "127.0.0.1"
     seed: int = 0
+    state_outage: tuple[float, float] | None = None
 
     def __post_init__(self):
         for name, value, low in (("--delay", self.delay, 0.0), ("--late", self.late, 0.0),
@@ -349,7 +376,8 @@ class _StandIn:
         if previous is not None and not follows:
             report.gaps += 1
             report.missing += sp.sequence - previous.sequence - 1
-        violations, use = self.checker.check(sp, previous if follows else None, t)
+        where = self.drive.joints.now(t)[:2]
+        violations, use = self.checker.check(sp, previous if follows else None, t, where)
         report.reanchored = self.checker.reanchored
         self._timing(sp, t)
         self.first_arrival = t if self.first_arrival is None else self.first_arrival
@@ -395,7 +423,7 @@ class _StandIn:
             self.faulted = True
             self.drive.fault(t1, fault[1])
         samples = self.drive.run_to(t0, t1)
-        t, q, qd, qdd, jerk = (np.array(x) for x in zip(*samples))
+        _, q, qd, qdd, jerk = (np.array(x) for x in zip(*samples))
         applied = self.drive.applied
         violations, use = self.checker.made(t1, -1 if applied is None else applied.sequence, q, qd, qdd, jerk)
         self._record_made(violations, use)
@@ -410,7 +438,10 @@ class _StandIn:
         for i in range(6):
             row += [_number(noisy_q[i]), _number(noisy_qd[i]), _number(qdd[-1, i])]
         self.files.write("motion.csv", row)
-        if self.service is not None:
+        outage = self.options.state_outage
+        silent = (outage is not None and self.first_arrival is not None
+                  and 0.0 <= t1 - self.first_arrival - outage[0] < outage[1])
+        if self.service is not None and not silent:
             try:
                 self.sock.sendto(protocol.pack(state), self.service)
                 self.report.states += 1
@@ -490,7 +521,7 @@ def _loop(stand_in: _StandIn, stops: list, started: float, idle: float, duration
             report.stopped = "duration"
             return
         if stops:
-            if len(stops) == 1 and not stand_in.at_rest(now) and not stand_in.drive.status == "e-stop":
+            if len(stops) == 1 and not stand_in.at_rest(now) and stand_in.drive.status != "e-stop":
                 stand_in.drive.emergency(now, f"{signal.Signals(stops[0]).name} to the stand-in")
             if len(stops) > 1 or stand_in.at_rest(now):
                 report.stopped = f"interrupted ({signal.Signals(stops[0]).name})"

@@ -32,7 +32,6 @@ from __future__ import annotations
 
 import math
 import selectors
-import signal
 import socket
 import time
 from collections import Counter
@@ -49,7 +48,25 @@ from desdemona.machine.params import JOINT_NAMES
 from desdemona.machine.plan import Plan, State, stopping_jerk
 from desdemona.profiles import DesiredPath, ProfileError
 from desdemona.service import protocol
-from desdemona.service.measured import BAND, STOPPED_ON_ITS_OWN, MachineLink, commanded_at
+from desdemona.service.measured import (
+    BAND,
+    STOPPED_ON_ITS_OWN,
+    MachineLink,
+    commanded_at,
+)
+from desdemona.service.sessionlog import describe, events_table, session_table, summary
+
+__all__ = [
+    "ServeOptions",
+    "Served",
+    "default_channels",
+    "describe",
+    "events_table",
+    "result",
+    "serve",
+    "session_table",
+    "summary",
+]
 from desdemona.support import guard
 from desdemona.support.symbolic import call
 
@@ -118,6 +135,7 @@ class Served:
     events: list = field(default_factory=list)  # (time [s, the session's clock], what, detail)
     states: int = 0  # State messages of the machine taken
     reanchored: int = 0  # cycles planned from the measured machine
+    breaks: list = field(default_factory=list)  # cycles whose state was set from the machine after a fault
 
     def span(self) -> tuple[int, int]:
         """(k0, k1): the cycles the session followed the host, from the first that answered a host
@@ -127,7 +145,11 @@ class Served:
         if len(running) == 0:
             raise ProfileError("the session never followed the host (no valid host message was answered): "
                                "nothing to judge")
-        return int(running[0]), int(running[-1]) + 1
+        k0, k1 = int(running[0]), int(running[-1]) + 1
+        # the plan is one continuous motion up to where the session planned afresh from the measured
+        # machine after a fault of it: judged up to there
+        later = [k for k in self.breaks if k > k0]
+        return k0, min([k1, *later])
 
     def judged(self, model: Model) -> tuple[DesiredPath, ClosedLoop]:
         """The motion received and the machine's plan over :meth:`span`, the time from its start: the
@@ -340,7 +362,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
                   received=np.asarray(inbox.values).reshape(len(inbox.t), channels),
                   dropped=inbox.dropped + link.dropped, stopped_by=stops[0] if stops else None,
                   deadline=controller.deadline, offset=offset, events=session.events, states=link.received,
-                  reanchored=session.reanchored)
+                  reanchored=session.reanchored, breaks=session.breaks)
 
 
 def _send(sock: socket.socket, message, to, inbox: _Inbox) -> None:
@@ -372,6 +394,7 @@ class _Session:
         self.tracking = np.nan  # the use of the tracking tolerance this cycle (1 = a fault)
         self.machine_status = ""
         self.told: set[str] = set()
+        self.breaks: list[int] = []
 
     def run(self, preview, sequence: int) -> None:
         if self.was_parked:  # the machine was moved by the watchdog: plan afresh from here
@@ -393,9 +416,7 @@ class _Session:
             self.paused = action
             if action == "park":
                 self.controller.forget()
-        elif action == "resume" and self.paused in ("pause", "park"):
-            self.paused = None
-        elif action == "reset" and self.paused == "emergency stop":
+        elif (action, self.paused) in (("resume", "pause"), ("resume", "park"), ("reset", "emergency stop")):
             self.paused = None
 
     def observe(self, link: MachineLink, t: float, now: float) -> str:
@@ -438,6 +459,7 @@ class _Session:
         if why != self.machine_fault:
             self.event(t, "machine fault", why)
             self.controller.forget()
+            self.breaks.append(len(self.rows))
         self.machine_fault = why
         if measured is not None:
             q, qd = measured
@@ -532,69 +554,3 @@ def result(served: Served, model: Model, options: OnlineOptions) -> OnlineResult
     the machine's motion broke a limit."""
     path, loop = served.judged(model)
     return judge(path, model, options, loop, served.deadline)
-
-
-def session_table(served: Served) -> str:
-    """``session.csv``: every cycle of the session, on its clock (also before the host came and after
-    it had gone): its time, status, command, the host message's age, the latency and the compute time
-    [s], the reason of a fallback or a parking, the machine's own status as its newest State said and
-    the use of the tracking tolerance (1 = a fault; empty without States)."""
-    columns, loop = served.columns, served.loop
-    lines = ["t,status,command,message_age_s,latency_s,compute_time_s,reason,machine,tracking_use"]
-    for k, t in enumerate(loop.cycle_times):
-        lines.append(f"{t:.6g},{columns['status'][k]},{columns['command'][k]},{columns['message_age_s'][k]:.6g},"
-                     f"{columns['latency_s'][k]:.6g},{loop.compute_times[k]:.6g},\"{loop.reasons[k]}\","
-                     f"{columns['machine'][k]},{columns['tracking_use'][k]:.6g}")
-    return "\n".join(lines) + "\n"
-
-
-def events_table(served: Served) -> str:
-    """``events.csv``: every operator command, machine fault and notice of the session with its time [s,
-    the session's clock]."""
-    lines = ["t,what,detail"] + [f"{t:.6g},{what},\"{detail}\"" for t, what, detail in served.events]
-    return "\n".join(lines) + "\n"
-
-
-def summary(served: Served, serving: ServeOptions) -> dict:
-    """The ``service`` entry of the session's ``summary.json``: addresses, counts of cycles by status and
-    command, datagrams dropped by reason, and the times that matter for real time [s], all over the
-    whole session; the span it is judged on (``judged_span_s``, on the session's clock) and the
-    judged result's time of the host's time 0 (``host_time_offset_s``)."""
-    columns, times = served.columns, served.loop.compute_times
-    latency, age = columns["latency_s"], columns["message_age_s"]
-
-    def spread(values):
-        values = values[np.isfinite(values)]
-        if len(values) == 0:
-            return None
-        return {"median": float(np.median(values)), "p99": float(np.percentile(values, 99)), "max": float(values.max())}
-
-    return {"listen": f"{serving.listen[0]}:{serving.listen[1]}", "send": f"{serving.send[0]}:{serving.send[1]}",
-            "timeout_cycles": serving.timeout, "cycles": len(times),
-            "status": dict(Counter(map(str, columns["status"]))), "command": dict(Counter(map(str, columns["command"]))),
-            "dropped": dict(served.dropped), "received": int(len(served.received_t)),
-            "latency_s": spread(latency), "message_age_s": spread(age),
-            "compute_over_deadline": int(np.sum(times > served.deadline)),
-            "judged_span_s": [float(served.loop.plan.t_nodes[k]) for k in served.span()],
-            "host_time_offset_s": served.offset - float(served.loop.plan.t_nodes[served.span()[0]]),
-            "stopped_by": None if served.stopped_by is None else signal.Signals(served.stopped_by).name,
-            "machine_states": served.states, "reanchored_cycles": served.reanchored,
-            "tracking_use_max": None if not np.any(np.isfinite(columns["tracking_use"]))
-            else float(np.nanmax(columns["tracking_use"])),
-            "events": [{"t": t, "what": what, "detail": detail} for t, what, detail in served.events]}
-
-
-def describe(summary: dict) -> str:
-    """The session in one line: cycles, latency, deadlines, what was dropped, how it parked."""
-    latency = summary["latency_s"]
-    lat = "no host message answered" if latency is None else (
-        f"latency median {1e3 * latency['median']:.2f} ms, p99 {1e3 * latency['p99']:.2f} ms")
-    dropped = sum(summary["dropped"].values())
-    status = ", ".join(f"{k} {v}" for k, v in summary["status"].items())
-    machine = ("no State from the machine (planned on its own command)" if not summary["machine_states"] else
-               f"{summary['machine_states']} machine States, tracking error at most {summary['tracking_use_max']:.3g} "
-               f"of its tolerance, {summary['reanchored_cycles']} cycles re-anchored")
-    faults = [e for e in summary["events"] if e["what"] in ("machine fault",) or e["what"].startswith("command")]
-    return (f"served {summary['cycles']} cycles ({status}), {summary['received']} host messages, {lat}, "
-            f"{summary['compute_over_deadline']} over the deadline, {dropped} datagrams dropped; {machine}"
-            + "".join(f"\n  {e['t']:.3f} s: {e['what']}" + (f": {e['detail']}" if e["detail"] else "") for e in faults))

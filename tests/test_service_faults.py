@@ -1,0 +1,229 @@
+"""Faults end to end on the loopback address, with the three processes a user runs (``machine``,
+``serve``, ``host replay``): the service killed at speed, a drive fault, an emergency stop, a servo's
+lag, the machine's States lost. Each run is bounded in time; every address is 127.0.0.1.
+
+The stand-in runs with a long queue (``--timeout``) so that a loaded computer's stalls of the service
+do not stop it on their own before the fault each test makes."""
+
+import csv
+import json
+import os
+import signal
+import socket
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from desdemona.machine.params import JOINT_NAMES
+from desdemona.service.checker import MADE_TOLERANCE
+
+pytestmark = [pytest.mark.realtime, pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")]
+
+LOOPBACK = "127.0.0.1"
+RUN = [sys.executable, "-m", "desdemona"]
+WAIT = 120.0  # [s] the longest any wait of these tests lasts (a first compile on a loaded machine)
+QUEUE = 25  # the stand-in's --timeout [cycles]: half a second
+STEP = 0.02  # the session's cycle at 50 Hz
+
+
+def _port() -> int:
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        s.bind((LOOPBACK, 0))
+        return s.getsockname()[1]
+
+
+class Loop:
+    """machine + serve + host replay of ``profile`` on dfs, in ``folder``."""
+
+    def __init__(self, folder: Path, profile: str = "dfs-catapult", machine=(), serve=(), config: str = "dfs"):
+        self.folder, self.machine_port, self.serve_port = folder, _port(), _port()
+        self.machine = subprocess.Popen(
+            [*RUN, "machine", "--config", config, "--listen", f"{LOOPBACK}:{self.machine_port}",
+             "--out", str(folder / "machine"), "--idle", "1", "--duration", str(WAIT), "--timeout", str(QUEUE),
+             "--late", str(QUEUE), *machine], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        self.serve = subprocess.Popen(
+            [*RUN, "serve", "--config", config, "--listen", f"{LOOPBACK}:{self.serve_port}",
+             "--send", f"{LOOPBACK}:{self.machine_port}", "--out", str(folder / "session"), "--horizon", "1",
+             "--duration", str(WAIT), "--quiet-end", "1", "--no-view", *serve],
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        assert "serving" in self.serve.stderr.readline()
+        self.host = subprocess.Popen([*RUN, "host", "replay", profile, "--to", f"{LOOPBACK}:{self.serve_port}"],
+                                     stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+
+    def motion(self) -> list[dict]:
+        """The rows of the stand-in's motion.csv so far (it appends them as it goes)."""
+        try:
+            with open(self.folder / "machine" / "motion.csv", newline="") as f:
+                return [r for r in csv.DictReader(f) if r.get("cabin_acceleration")]
+        except FileNotFoundError:
+            return []
+
+    def wait_for(self, condition, what: str) -> list[dict]:
+        deadline = time.monotonic() + WAIT
+        while time.monotonic() < deadline:
+            rows = self.motion()
+            if rows and condition(rows):
+                return rows
+            time.sleep(0.05)
+        self.end()
+        pytest.fail(f"never: {what}")
+
+    def command(self, action: str, port: int) -> None:
+        subprocess.run([*RUN, "command", action, "--to", f"{LOOPBACK}:{port}"], check=True, timeout=WAIT,
+                       capture_output=True)
+
+    def end(self) -> dict:
+        """Every process ended (the service by SIGINT if it still runs); their outputs."""
+        out = {}
+        for name in ("host", "serve", "machine"):
+            proc = getattr(self, name)
+            if name == "serve" and proc.poll() is None:
+                proc.send_signal(signal.SIGINT)
+            try:
+                out[name] = proc.communicate(timeout=WAIT)[0]
+            except subprocess.TimeoutExpired:
+                proc.kill()
+                out[name] = proc.communicate()[0]
+        return out
+
+    def summary(self, which: str) -> dict:
+        return json.loads((self.folder / which / "summary.json").read_text())
+
+    def events(self, which: str) -> list[dict]:
+        with open(self.folder / which / "events.csv", newline="") as f:
+            return list(csv.DictReader(f))
+
+
+def _yaw_rate(rows, at_least: float) -> bool:
+    return abs(float(rows[-1]["yaw_rate"])) >= at_least
+
+
+def _made_within_limits(summary: dict) -> None:
+    assert all(v == 0 for v in summary["violations"].values()), summary["violations"]
+    assert all(v <= 1.0 + MADE_TOLERANCE for v in summary["worst_use_made"].values()), summary["worst_use_made"]
+
+
+def test_serve_killed_at_speed_the_machine_stops_on_its_own(tmp_path):
+    """SIGKILL of serve with the arm above 1 rad/s: the stand-in's own layer brings every joint to rest
+    within every limit, no later than the shortest stop the limits allow plus its timeout after the
+    last setpoint; the run is not a pass (the stream ended while the machine moved)."""
+    loop = Loop(tmp_path)
+    loop.wait_for(lambda rows: _yaw_rate(rows, 1.0), "the arm above 1 rad/s")
+    os.kill(loop.serve.pid, signal.SIGKILL)
+    killed = time.monotonic()
+    out = loop.end()
+    assert loop.machine.returncode == 1 and "FAILED (the setpoints ended while the machine moved" in out["machine"]
+    summary = loop.summary("machine")
+    assert summary["ended_moving"] and len(summary["own_stops"]) == 1, summary["own_stops"]
+    stop = summary["own_stops"][0]
+    assert stop["why"].startswith("no setpoint in time while moving") and stop["at_rest"] is not None
+    assert stop["at_rest"] - stop["start"] <= stop["shortest_stop_s"] + 0.02
+    assert stop["shortest_stop_s"] > 1.0  # the arm was at speed: a real stop, not a twitch
+    with open(tmp_path / "machine" / "setpoints.csv", newline="") as f:
+        setpoints = list(csv.DictReader(f))
+    # the last setpoint's cycle was due on the stand-in's time line (anchored at the first's arrival);
+    # it runs that line the queue behind, and the transport delay later; then the stop
+    anchor = float(setpoints[0]["time"]) - float(setpoints[0]["cycle_time"])
+    ends = float(setpoints[-1]["cycle_time"]) + STEP + anchor
+    timeout = QUEUE * STEP + 0.010
+    assert stop["at_rest"] - ends <= stop["shortest_stop_s"] + timeout + 0.02
+    _made_within_limits(summary)
+    rows = loop.motion()
+    assert float(rows[-1]["t"]) > stop["at_rest"]  # written on to its last sample, after the stop
+    assert all(abs(float(rows[-1][f"{j}_rate"])) < 1e-3 for j in JOINT_NAMES)
+    assert time.monotonic() - killed < WAIT
+
+
+def test_a_drive_fault_parks_the_service_until_a_reset(tmp_path):
+    """A fault on the outer gimbal 8 s into the session (the arm turning): the stand-in stops and
+    refuses motion; the service parks from where the machine measurably is and logs the fault; it
+    follows the host again only after a reset."""
+    loop = Loop(tmp_path, machine=["--fault", "8:outer_gimbal"])
+    loop.wait_for(lambda rows: rows[-1]["status"] == "fault" and float(rows[-1]["outer_gimbal_rate"]) ** 2 < 1e-6
+                  and abs(float(rows[-1]["yaw_rate"])) < 1e-3, "the machine at rest in its fault")
+    time.sleep(0.5)
+    assert loop.motion()[-1]["status"] == "fault"  # no motion without a reset
+    loop.command("reset", loop.serve_port)  # to the service, which passes it on
+    loop.wait_for(lambda rows: rows[-1]["status"] == "following" and _yaw_rate(rows, 0.05),
+                  "the machine following the service again")
+    out = loop.end()
+    events = loop.events("session")
+    whats = [e["what"] for e in events]
+    fault = whats.index("machine fault")
+    assert "drive fault on outer_gimbal" in events[fault]["detail"] and events[fault]["detail"].startswith(
+        "the machine is fault")
+    assert whats.index("command reset") > fault and whats.index("machine back") > whats.index("command reset")
+    with open(tmp_path / "session" / "session.csv", newline="") as f:
+        session = list(csv.DictReader(f))
+    t_fault, t_back = float(events[fault]["t"]), float(events[whats.index("machine back")]["t"])
+    between = [r for r in session if t_fault < float(r["t"]) < t_back]
+    assert between and all(r["status"] in ("parking", "parked") for r in between)
+    assert any(r["status"] == "running" for r in session if float(r["t"]) > t_back)
+    machine = loop.summary("machine")
+    assert machine["refused"].get("refused: fault", 0) > 0
+    stop = machine["own_stops"][0]
+    assert stop["why"] == "drive fault on outer_gimbal" and stop["at_rest"] - stop["start"] <= stop["shortest_stop_s"] + 0.02
+    _made_within_limits(machine)
+    assert "machine fault" in out["serve"]
+
+
+def test_an_emergency_stop_is_the_fastest_stop(tmp_path):
+    """An emergency stop sent to the machine with the arm at speed: every joint at rest within the
+    shortest stop the limits allow, no limit exceeded; the service parks, and the machine refuses
+    motion until a reset."""
+    loop = Loop(tmp_path)
+    loop.wait_for(lambda rows: _yaw_rate(rows, 1.0), "the arm above 1 rad/s")
+    loop.command("estop", loop.machine_port)
+    loop.wait_for(lambda rows: rows[-1]["status"] == "e-stop" and abs(float(rows[-1]["yaw_rate"])) < 1e-3,
+                  "the machine at rest after its emergency stop")
+    loop.end()
+    machine = loop.summary("machine")
+    stop = machine["own_stops"][0]
+    assert stop["why"] == "emergency stop (a Command)" and stop["shortest_stop_s"] > 1.0
+    assert stop["at_rest"] - stop["start"] <= stop["shortest_stop_s"] + 0.02
+    _made_within_limits(machine)
+    assert not machine["ended_moving"] and machine["refused"].get("refused: e-stop", 0) > 0
+    assert any(e["what"] == "machine fault" and "e-stop" in e["detail"] for e in loop.events("session"))
+
+
+def test_states_lost_for_a_second_park_the_service_which_then_resumes(tmp_path):
+    """The machine sends no State for a second: the service predicts on for --state-lost (0.5 s),
+    then parks from where it last measured the machine; with the States back it follows again."""
+    loop = Loop(tmp_path, machine=["--state-outage", "3,1"])
+    loop.wait_for(lambda rows: float(rows[-1]["t"]) > float(rows[0]["t"]) + 6.0, "6 s of the session")
+    loop.end()
+    events = loop.events("session")
+    lost = [e for e in events if e["what"] == "machine fault" and e["detail"].startswith("no State from the machine")]
+    assert lost, events
+    back = [e for e in events if e["what"] == "machine back" and float(e["t"]) > float(lost[0]["t"])]
+    assert back, events
+    with open(tmp_path / "session" / "session.csv", newline="") as f:
+        session = list(csv.DictReader(f))
+    assert any(r["status"] == "running" for r in session if float(r["t"]) > float(back[0]["t"]))
+    _made_within_limits(loop.summary("machine"))
+
+
+
+@pytest.mark.parametrize("config", ["dfs", "full"])
+def test_a_servo_lag_of_30_ms_keeps_every_limit_and_the_felt_force(tmp_path, config):
+    """The same replay with the servos 30 ms late and without a lag: no violation either way, the
+    tracking error in the session's log, and the felt force's RMS within 10 % of the lag-free run."""
+    profile = "dfs-catapult" if config == "dfs" else "catapult"
+    rms = {}
+    for delay in (0.0, 0.03):
+        folder = tmp_path / f"delay-{delay:g}"
+        loop = Loop(folder, profile=profile, config=config, machine=["--delay", str(delay)])
+        loop.host.wait(timeout=WAIT)
+        loop.serve.wait(timeout=WAIT)  # it ends by itself, parked and the host quiet for a second
+        out = loop.end()
+        assert loop.serve.returncode == 0, out["serve"]
+        machine = loop.summary("machine")
+        _made_within_limits(machine)
+        service = loop.summary("session")["service"]
+        assert service["machine_states"] > 100 and service["tracking_use_max"] is not None
+        assert service["tracking_use_max"] < 1.0  # the delay is known: compensated, never a fault
+        rms[delay] = loop.summary("session")["metrics"]["rms_weighted"]
+    assert abs(rms[0.03] - rms[0.0]) <= 0.1 * rms[0.0], rms
