@@ -117,8 +117,10 @@ def test_serve_killed_at_speed_the_machine_stops_on_its_own(tmp_path):
     out = loop.end()
     assert loop.machine.returncode == 1 and "FAILED (the setpoints ended while the machine moved" in out["machine"]
     summary = loop.summary("machine")
-    assert summary["ended_moving"] and len(summary["own_stops"]) == 1, summary["own_stops"]
-    stop = summary["own_stops"][0]
+    # the last of its own stops is the kill's (a loaded computer's stall of the service may have
+    # stopped the machine earlier: that is the same layer at work)
+    assert summary["ended_moving"] and summary["own_stops"], summary["own_stops"]
+    stop = summary["own_stops"][-1]
     assert stop["why"].startswith("no setpoint in time while moving") and stop["at_rest"] is not None
     assert stop["at_rest"] - stop["start"] <= stop["shortest_stop_s"] + 0.02
     assert stop["shortest_stop_s"] > 1.0  # the arm was at speed: a real stop, not a twitch
@@ -138,10 +140,10 @@ def test_serve_killed_at_speed_the_machine_stops_on_its_own(tmp_path):
 
 
 def test_a_drive_fault_parks_the_service_until_a_reset(tmp_path):
-    """A fault on the outer gimbal 8 s into the session (the arm turning): the stand-in stops and
+    """A fault on the outer gimbal 6 s into a ride (the arm turning): the stand-in stops and
     refuses motion; the service parks from where the machine measurably is and logs the fault; it
     follows the host again only after a reset."""
-    loop = Loop(tmp_path, machine=["--fault", "8:outer_gimbal"])
+    loop = Loop(tmp_path, profile="roller-coaster", machine=["--fault", "6:outer_gimbal"])
     loop.wait_for(lambda rows: rows[-1]["status"] == "fault" and float(rows[-1]["outer_gimbal_rate"]) ** 2 < 1e-6
                   and abs(float(rows[-1]["yaw_rate"])) < 1e-3, "the machine at rest in its fault")
     time.sleep(0.5)
@@ -164,7 +166,7 @@ def test_a_drive_fault_parks_the_service_until_a_reset(tmp_path):
     assert any(r["status"] == "running" for r in session if float(r["t"]) > t_back)
     machine = loop.summary("machine")
     assert machine["refused"].get("refused: fault", 0) > 0
-    stop = machine["own_stops"][0]
+    stop = [s for s in machine["own_stops"] if s["why"] == "drive fault on outer_gimbal"][0]
     assert stop["why"] == "drive fault on outer_gimbal" and stop["at_rest"] - stop["start"] <= stop["shortest_stop_s"] + 0.02
     _made_within_limits(machine)
     assert "machine fault" in out["serve"]
@@ -174,14 +176,14 @@ def test_an_emergency_stop_is_the_fastest_stop(tmp_path):
     """An emergency stop sent to the machine with the arm at speed: every joint at rest within the
     shortest stop the limits allow, no limit exceeded; the service parks, and the machine refuses
     motion until a reset."""
-    loop = Loop(tmp_path)
+    loop = Loop(tmp_path, profile="roller-coaster")
     loop.wait_for(lambda rows: _yaw_rate(rows, 1.0), "the arm above 1 rad/s")
     loop.command("estop", loop.machine_port)
     loop.wait_for(lambda rows: rows[-1]["status"] == "e-stop" and abs(float(rows[-1]["yaw_rate"])) < 1e-3,
                   "the machine at rest after its emergency stop")
     loop.end()
     machine = loop.summary("machine")
-    stop = machine["own_stops"][0]
+    stop = machine["own_stops"][-1]
     assert stop["why"] == "emergency stop (a Command)" and stop["shortest_stop_s"] > 1.0
     assert stop["at_rest"] - stop["start"] <= stop["shortest_stop_s"] + 0.02
     _made_within_limits(machine)
@@ -192,7 +194,7 @@ def test_an_emergency_stop_is_the_fastest_stop(tmp_path):
 def test_states_lost_for_a_second_park_the_service_which_then_resumes(tmp_path):
     """The machine sends no State for a second: the service predicts on for --state-lost (0.5 s),
     then parks from where it last measured the machine; with the States back it follows again."""
-    loop = Loop(tmp_path, machine=["--state-outage", "3,1"])
+    loop = Loop(tmp_path, profile="roller-coaster", machine=["--state-outage", "3,1"])
     loop.wait_for(lambda rows: float(rows[-1]["t"]) > float(rows[0]["t"]) + 6.0, "6 s of the session")
     loop.end()
     events = loop.events("session")

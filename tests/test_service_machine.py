@@ -16,8 +16,8 @@ import pytest
 
 from desdemona.machine.model import Model
 from desdemona.machine.params import JOINT_NAMES
-from desdemona.machine.plan import State
-from desdemona.service import machine, protocol
+from desdemona.machine.plan import State, advance
+from desdemona.service import machine, protocol, servo
 
 # These tests time what they watch (a real-time loop, a prompt stop): the README runs them alone.
 pytestmark = pytest.mark.realtime
@@ -302,3 +302,121 @@ def test_a_cycle_is_checked_where_a_position_turns(model):
     assert violations[0].value == pytest.approx(4.005, abs=1e-12) and violations[0].limit == 4.0
     assert "0.1 s into the cycle" in violations[0].detail
     assert use["position"][1] == pytest.approx(4.005 / 4.0, abs=1e-12) and use["acceleration"][1] == 1.0
+
+
+def test_the_servo_follows_a_continuous_reference_exactly_and_a_jump_as_a_critically_damped_loop():
+    """Against scipy's integration of e'' + 2 w e' + w^2 e = 0 after a jump, and the reference itself
+    where it is continuous: y = r exactly (the delay is the drive's clock, not the servo's)."""
+    from scipy.integrate import solve_ivp
+
+    limits = servo.JointLimits(*(np.full(6, x) for x in (-np.inf, np.inf, 3.0, 2.0, 5.0)))
+    omega = 2 * np.pi * 5.0
+    q, qd, a, j = np.full(6, 0.3), np.zeros(6), np.zeros(6), np.full(6, 0.5)  # from where the joints stand
+    joints = servo.Joints(q, limits, omega)
+    joints.follow(0.0, q, qd, a, j)
+    t = np.linspace(0.0, 0.5, 11)
+    y, yd, ydd, yddd = joints.motion(t)
+    ref_q, ref_qd = advance(q, qd, a, t[:, None], j)
+    np.testing.assert_allclose(y, ref_q, atol=1e-15)
+    np.testing.assert_allclose(yd, ref_qd, atol=1e-15)
+    np.testing.assert_allclose(ydd, a + j * t[:, None], atol=1e-15)
+    # a jump of the reference by 1 mm and 0.01 /s at 0.5 s: the error decays as the loop's ODE says
+    joints.follow(0.5, ref_q[-1] + 1e-3, ref_qd[-1] + 1e-2, a + j * 0.5, j)
+    s = np.linspace(0.0, 0.3, 7)
+    y, yd, ydd, _ = joints.motion(0.5 + s)
+    ode = solve_ivp(lambda _, x: [x[1], -2 * omega * x[1] - omega**2 * x[0]], (0, 0.3), [-1e-3, -1e-2], t_eval=s,
+                    rtol=1e-11, atol=1e-14)
+    rq, rqd = advance(ref_q[-1] + 1e-3, ref_qd[-1] + 1e-2, a + j * 0.5, s[:, None], j)
+    np.testing.assert_allclose(y[:, 0] - rq[:, 0], ode.y[0], atol=1e-11)
+    np.testing.assert_allclose(yd[:, 0] - rqd[:, 0], ode.y[1], atol=1e-9)
+
+
+def test_the_brake_is_the_fastest_stop_within_the_limits():
+    """From the arm at speed and accelerating: rest within the shortest stop of continuous time (plus
+    a brake step's round-off), acceleration and jerk never beyond their limits, and the rate never
+    turning back."""
+    limits = servo.JointLimits.of(Model(config="dfs").params)
+    joints = servo.Joints(np.zeros(6), limits, 2 * np.pi * 5.0)
+    qd0, a0 = np.array([2.5, 0, 0, 1.0, -2.0, 0.5]), np.array([0.3, 0, 0, 0.5, 0.0, -1.0])
+    joints.place(0.0, np.zeros(6), qd0, a0)
+    bound = limits.stopping_time(qd0, a0)
+    joints.brake(0.0)
+    t, rates, accelerations = 0.0, [], []
+    while not joints.brake_to(t) and t < 2 * bound:
+        t += 0.01
+        _, qd, a, _ = joints.now(t)
+        rates.append(qd)
+        accelerations.append(a)
+    assert t <= bound + 0.02
+    rates, accelerations = np.array(rates), np.array(accelerations)
+    assert np.all(np.abs(accelerations) <= limits.acceleration * (1 + 1e-9))
+    assert np.all(rates * np.sign(qd0) >= -1e-6)  # never through zero (but by round-off at rest)
+    assert np.all(np.abs(np.diff(accelerations, axis=0)) <= limits.jerk * 0.01 * (1 + 1e-9))
+
+
+def test_a_stream_that_ends_while_moving_is_braked_and_never_a_pass(model, tmp_path):
+    """The setpoints stop with the track and yaw moving: the stand-in brakes to rest on its own within
+    the shortest stop, keeps every limit, writes the motion to its last sample, and fails the run."""
+    points = brake_motion(model)[:25]
+    report, _, states = serve(model, tmp_path, [protocol.pack(p) for p in points])
+    assert report.ended_moving and not report.passed and machine.exit_code(report) == 1
+    assert [s.why for s in report.stops] == ["no setpoint in time while moving: braking on its own"]
+    stop = report.stops[0]
+    assert stop.rest is not None and stop.rest - stop.start <= stop.bound + 0.01
+    assert report.counts == {k: 0 for k in machine.KINDS}, report.describe()
+    rows = read_csv(tmp_path / "out" / "motion.csv")
+    assert float(rows[-1]["t"]) > stop.rest and abs(float(rows[-1]["track_rate"])) < 1e-3
+    events = [r["what"] for r in read_csv(tmp_path / "out" / "events.csv")]
+    assert events[:3] == ["following", "braking", "at rest"] and "stopped" in events
+    statuses = [s.status for s in states if isinstance(s, protocol.MachineState)]
+    assert statuses[0] in ("ready", "following") and "braking" in statuses and statuses[-1] == "stopped"
+    summary = json.loads((tmp_path / "out" / "summary.json").read_text())
+    assert summary["ended_moving"] and summary["own_stops"][0]["at_rest"] == stop.rest
+
+
+def test_an_emergency_stop_command_stops_and_only_a_reset_clears_it(model, tmp_path):
+    points = brake_motion(model)
+    estop = protocol.pack(protocol.Command(1, 0.0, "emergency stop"))
+    reset = protocol.pack(protocol.Command(2, 0.0, "reset"))
+    stranger = protocol.pack(protocol.Command(3, 0.0, "reset"))
+    extra = [(0.15, estop, None), (0.3, stranger, "127.0.0.2"), (0.45, reset, None)]
+    report, _, states = serve(model, tmp_path, [protocol.pack(p) for p in points], extra=extra)
+    assert [s.why for s in report.stops] == ["emergency stop (a Command)"]
+    stop = report.stops[0]
+    assert stop.rest is not None and stop.rest - stop.start <= stop.bound + 0.01
+    assert report.refused.get("refused: e-stop", 0) > 0 and report.dropped == {"command from an unexpected address": 1}
+    whats = [e.what for e in report.events]
+    assert whats.index("e-stop") < whats.index("at rest") < whats.index("ready")  # reset once at rest
+    assert not report.ended_moving and report.passed, report.describe()
+    statuses = [s.status for s in states]
+    assert "e-stop" in statuses and statuses[-1] in ("ready", "following", "stopped")
+
+
+def test_an_injected_fault_is_reported_with_its_joint_and_refuses_motion(model, tmp_path):
+    points = brake_motion(model)
+    options = machine.MachineOptions(fault=(0.2, JOINT_NAMES.index("track")))
+    report, _, states = serve(model, tmp_path, [protocol.pack(p) for p in points], options=options)
+    faults = [s for s in states if s.status == "fault"]
+    assert faults and all(s.fault == "drive" and s.fault_joint == 1 for s in faults)
+    assert [s.why for s in report.stops] == ["drive fault on track"] and report.refused.get("refused: fault", 0) > 0
+    rows = read_csv(tmp_path / "out" / "motion.csv")
+    assert rows[-1]["status"] == "fault" and rows[-1]["fault_joint"] == "1"
+
+
+def test_when_setpoints_come_late_or_in_a_burst_is_a_timing_fault(model, tmp_path):
+    points = motion(model, [[0, 0, 0]] * 20)  # at rest: only the timing is wrong
+    at = [p.cycle_time + (4 * STEP if k >= 5 else 0.0) for k, p in enumerate(points)]  # 4 cycles late from 5 on
+    for k in range(10, 15):
+        at[k] = at[10]  # five at once
+    options = machine.MachineOptions(timeout=6, late=1.5)
+    report, _, _ = serve(model, tmp_path, [protocol.pack(p) for p in points], at=at, options=options)
+    assert report.timing["late"] >= 1 and report.timing["burst"] == 1, report.describe()
+    assert report.latest >= 3.5 * STEP and not report.passed
+    assert report.counts == {k: 0 for k in machine.KINDS}
+
+
+def test_setpoints_from_a_second_sender_are_dropped(model, tmp_path):
+    points = motion(model, [[0, 0, 0]] * 5)
+    intruder = protocol.pack(setpoint(model, 100, [0.0, 1.0, 0.0], [0, 0, 0], [0, 0, 0], [0, 0, 0]))
+    report, _, _ = serve(model, tmp_path, [protocol.pack(p) for p in points], extra=[(0.02, intruder, "127.0.0.2")])
+    assert report.dropped == {"setpoint from an unexpected address": 1} and report.received == 5

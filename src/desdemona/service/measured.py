@@ -105,9 +105,14 @@ class MachineLink:
         use = float(max(np.max(np.abs(e_q) / self.tolerance[0]), np.max(np.abs(e_qd) / self.tolerance[1])))
         return Tracking((e_q, e_qd), use, state.status, state)
 
-    def measured(self) -> tuple[np.ndarray, np.ndarray]:
-        """The newest State's free joints' positions and rates."""
-        return (np.asarray(self.newest.position, float)[self.free], np.asarray(self.newest.rate, float)[self.free])
+    def measured(self, now: float) -> tuple[np.ndarray, np.ndarray]:
+        """The newest State's free joints' positions and rates, carried to ``now`` (the service's
+        clock) at those rates (the machine's own stop is not known here: its acceleration is not
+        measured); a rate within the noise band (:data:`BAND` of the tolerance) is taken as rest."""
+        q = np.asarray(self.newest.position, float)[self.free]
+        qd = np.asarray(self.newest.rate, float)[self.free]
+        qd = np.where(np.abs(qd) <= BAND * self.tolerance[1], 0.0, qd)
+        return q + qd * max(now - self.arrived, 0.0), qd
 
 
 def commanded_at(starts, u, jerks, h: float):

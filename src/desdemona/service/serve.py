@@ -440,7 +440,7 @@ class _Session:
                                                        and not self.machine_fault):
             joint = "" if st.fault_joint is None else f" on {JOINT_NAMES[st.fault_joint]}"
             fault = "" if st.fault == "none" else f" ({st.fault} fault{joint})"
-            return self._machine(t, f"the machine is {tracking.status}{fault}", measured=link.measured())
+            return self._machine(t, f"the machine is {tracking.status}{fault}", measured=link.measured(now))
         if tracking.use > 1.0:
             return self._machine(t, f"tracking error {tracking.use:.2f} x its tolerance", error=tracking.error)
         if self.machine_fault:

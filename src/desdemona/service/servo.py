@@ -124,6 +124,12 @@ class Joints:
         self.t, self.reference = t, (q, qd, np.asarray(a, dtype=float))
         self.jerk, self.braking = np.asarray(jerk, dtype=float), False
 
+    def place(self, t: float, q, qd, a) -> None:
+        """The joints are at (q, qd, a) (6,) each at ``t``, moving on at that acceleration, and the
+        servo's reference with them (no error)."""
+        self.follow(t, q, qd, a, np.zeros(6))
+        self.error = (np.zeros(6), np.zeros(6))
+
     def brake(self, t: float) -> None:
         """From ``t`` the reference is the brake, starting where the joints are (no jump)."""
         y, yd, ydd, _ = self.now(t)
