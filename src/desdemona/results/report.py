@@ -36,6 +36,7 @@ from desdemona.results.folder import (  # noqa: F401
     RESULT_FILES,
     RESULT_FORMAT,
     ReportError,
+    _foreign,
     check_out_folder,
     check_replaceable,
     is_result_folder,
