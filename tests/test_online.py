@@ -774,8 +774,9 @@ def test_an_unreachable_held_force_does_not_swing_the_plan_from_cycle_to_cycle(s
     held as it is over the horizon): the cabin's yaw turns the small force the machine can hold towards
     it. The Gauss-Newton model leaves out the curvature of that large residual, so one full QP step a
     cycle overshoots and the next swings back: 39 reversals a second of the cabin's acceleration. Half
-    the step from the previous plan (the default) is below one a second ("Damped real-time
-    iteration"), with the held force as it is and with the hold predictor's persistence. Shown with the
+    the step from the previous plan (the default) is below one a second
+    (docs/benchmarks/damped-real-time-iteration.md), with the held force as it is and with the hold predictor's
+    persistence. Shown with the
     raw rotation in the cost, where it was found (the canals' cost happens not to swing here)."""
     t = np.arange(0, 10.0 + 1e-9, 0.01)
     S = np.tile([0.0, 0.0, 0.0, -3.2, 1.2, 8.9], (len(t), 1))

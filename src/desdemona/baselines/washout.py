@@ -91,7 +91,7 @@ class Washout:
 
 #: The tuned washout per configuration, the baseline ``online`` runs beside the MPC (frozen): found by
 #: ``nice -n 10 python benchmarks/tune_classical.py`` on 2026-12-02, a coordinate search of the felt
-#: force on the corpus and the built-in paths (docs/benchmarks.md, "Classical washout, tuned": mean
+#: force on the corpus and the built-in paths (docs/benchmarks/classical-washout-tuned.md: mean
 #: felt force RMS 0.96x the untuned on yaw-track-cabin, 0.80x on full); elsewhere :class:`Washout` ().
 WASHOUT: dict[str, Washout] = {
     "yaw-track-cabin": Washout(omega_hp=0.188, omega_centre=0.188, omega_lp=0.375, tilt_rate=0.279, omega_rot=0.333,

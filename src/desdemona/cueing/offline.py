@@ -215,7 +215,7 @@ def spin_share(problem: CueingProblem, floor: float = SPIN_SHARE) -> float:
     A guess that turns at another rate than the path's sustained force asks has to be brought
     to it by the solver over every interval of the path, one at a time: the arm's acceleration limit
     blocks each step, too slow a spin on the F-16 turn on ``full``, too fast a one on the 747
-    take-off ("Spin of the guesses" in docs/benchmarks.md).
+    take-off (docs/benchmarks/spin-of-the-guesses.md).
     """
     held = float(np.median(sizing.held_modulus(problem.path)))
     return float(np.clip(_held_share(problem.model, held), floor, 1.0))
@@ -240,7 +240,7 @@ def spin_following(problem: CueingProblem, direction: float, floor: float = SPIN
     will ask (a pass backwards), from the start's rate (a pass forwards), and braked to rest at the
     end when the problem ends at rest. A path whose sustained force changes (a sortie's turns and
     straight stretches) is then not left to the solver to spin up and down node by node against the
-    arm's limits ("Spin of the guesses" in docs/benchmarks.md). From node ``start`` on, at the rate
+    arm's limits (docs/benchmarks/spin-of-the-guesses.md). From node ``start`` on, at the rate
     ``rate0`` there (default: the problem's start), and zero before it."""
     model, h, N = problem.model, problem.steps, problem.N
     lim, u = model.limits, np.zeros((N, problem.model.n))
@@ -292,8 +292,7 @@ def settled(problem: CueingProblem, qd, a, accelerations, first: int = 0) -> np.
     from a moving start (a window after the first) would otherwise carry the start's rates on at zero
     acceleration into the end of the travel, where :meth:`CueingProblem.guess` clips its positions and
     leaves its gaps open; a joint that turns freely (the yaw, the gimbals of ``full`` and ``dfs``)
-    keeps its rate, which a steady turn needs ("Later windows' guesses brought to rest" in
-    docs/benchmarks.md)."""
+    keeps its rate, which a steady turn needs (docs/benchmarks/later-windows-guesses-brought-to-rest.md)."""
     lim, u = problem.model.limits, np.array(accelerations, dtype=float)
     joints = np.isfinite(lim.position_min) | np.isfinite(lim.position_max)
     if not joints.any():
