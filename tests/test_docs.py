@@ -67,6 +67,20 @@ def test_every_command_of_the_readme_runs(command, tmp_path, monkeypatch, capsys
     assert capsys.readouterr().out.strip()
 
 
+def test_every_command_line_the_docs_show_is_one_the_command_takes():
+    """The lines a reader copies from the README and the guide (code blocks, comments after ``#`` left
+    out) parse as the command parses them: a renamed option or choice fails here. The measurements'
+    pages keep the commands as they were run."""
+    parser, lines = build_parser(), []
+    for page in [README, *sorted(DOCS.rglob("*.md"))]:
+        if DOCS / "benchmarks" not in page.parents:
+            for block in re.findall(r"```[a-z]*\n(.*?)```", page.read_text(), re.S):
+                lines += [line.split(" #")[0] for line in block.splitlines() if line.startswith("desdemona ")]
+    assert len(lines) > 20
+    for line in lines:
+        parser.parse_args(shlex.split(line)[1:])  # exits 2, naming the option, where a line is wrong
+
+
 def _citations():
     """(file, line number, page, anchor) of every pointer into the docs in the code, the tests, the
     benchmarks and the README."""
