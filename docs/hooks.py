@@ -6,7 +6,9 @@ Python handler's ``extensions``).
 - Each ``<!-- help: COMMAND -->`` line of a page becomes that command's ``--help``, as the installed
   ``desdemona`` prints it, so the reference of the commands cannot drift from the options.
 - The docstrings cross-reference in Sphinx's roles (``:func:`~desdemona.profiles.load```); the site
-  shows each as code, the name as Sphinx would show it (``load`` with the ``~``).
+  shows each as code, the name as Sphinx would show it (``load`` with the ``~``). A docstring's
+  pointer into the docs (``docs/benchmarks/placed-start.md``) becomes a link to that page (the API
+  pages are all in ``docs/api/``).
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ import griffe
 
 ROOT = Path(__file__).resolve().parents[1]
 HELP = re.compile(r"^<!-- help: ([\w ]*?) -->$", re.M)
+CITATION = re.compile(r"(?<![\w/`])docs/((?:[\w-]+/)*[\w.-]+\.md(?:#[\w-]+)?)")
 ROLE = re.compile(r":(?:py:)?(?:func|meth|class|mod|data|attr|exc|obj|const):`(~?)([^`]+)`")
 
 
@@ -58,4 +61,5 @@ class SphinxRoles(griffe.Extension):
 
     def on_instance(self, *, obj, **kwargs) -> None:
         if obj.docstring is not None:
-            obj.docstring.value = plain_roles(obj.docstring.value)
+            text = plain_roles(obj.docstring.value)
+            obj.docstring.value = CITATION.sub(lambda m: f"[docs/{m.group(1)}](../{m.group(1)})", text)
