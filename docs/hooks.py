@@ -3,6 +3,7 @@ Python handler's ``extensions``).
 
 - ``<!-- readme -->`` (the home page) becomes the README, its links into ``docs/`` made relative to
   the site, so the quick start and its measured times are written once.
+- ``<!-- configurations -->`` becomes the table of the configurations the package declares.
 - Each ``<!-- help: COMMAND -->`` line of a page becomes that command's ``--help``, as the installed
   ``desdemona`` prints it, so the reference of the commands cannot drift from the options.
 - The docstrings cross-reference in Sphinx's roles (``:func:`~desdemona.profiles.load```); the site
@@ -43,8 +44,20 @@ def _readme() -> str:
     return text.replace("](docs/", "](")
 
 
+def _configurations() -> str:
+    from desdemona.machine.configs import CONFIGURATIONS
+
+    rows = []
+    for name, config in CONFIGURATIONS.items():
+        joints = ", ".join(f"`{j}`" for j in config.joint_names)
+        rows.append(f"| `{name}` | {joints} | {config.description.replace('|', '&#124;')} |")
+    return "\n".join(["| configuration | free joints | what it is |", "| --- | --- | --- |", *rows])
+
+
 def on_page_markdown(markdown: str, **kwargs) -> str:
     markdown = markdown.replace("<!-- readme -->", _readme())
+    if "<!-- configurations -->" in markdown:
+        markdown = markdown.replace("<!-- configurations -->", _configurations())
     return HELP.sub(lambda m: _help(m.group(1)), markdown)
 
 
