@@ -45,13 +45,15 @@ def _commands(parser, prefix=()) -> set[tuple[str, ...]]:
     return found
 
 
-def test_the_readme_is_short_and_its_table_names_every_command():
+def test_the_readme_is_short_and_it_and_the_reference_name_every_command():
     assert len(README.read_text().splitlines()) <= 250
     named = set()
     for command in _readme_commands():
         argv = shlex.split(command)[1:]
         named.add(tuple(argv[:2] if argv[0] in GROUPS else argv[:1]))
     assert named == _commands(build_parser())
+    reference = (DOCS / "reference" / "commands.md").read_text()
+    assert {tuple(words.split()) for words in re.findall(r"^<!-- help: ([\w ]+) -->$", reference, re.M)} == named
 
 
 @pytest.mark.parametrize("command", _readme_commands())
