@@ -257,6 +257,11 @@ CONFIGURATIONS: dict[str, Configuration] = {
                       "yaw and linear track (appendix B, chapters 4-5)"),
         Configuration("yaw-track-cabin", (0, 1, 4), (0.0,) * 6, False,
                       "yaw, track and cabin yaw q5 (section 5.6)"),
+        # the track held at its outer end: every horizontal force comes from the arm (f = R qd1^2,
+        # R qdd1, eq. 7.7), and at the largest radius a force takes the slowest yaw rate, so the least
+        # rotation the occupant feels and did not ask for; the cabin's yaw q5 turns it where wanted
+        Configuration("yaw-heave-cabin", (0, 2, 4), (0.0, -4.0, 0.0, 0.0, 0.0, 0.0), False,
+                      "yaw, heave and cabin yaw q5, track held at -4 m: the arm's force turned by the cabin"),
         Configuration("full", (0, 1, 2, 3, 4, 5), (0.0,) * 6, False,
                       "all six joints"),
     )
