@@ -77,3 +77,50 @@ def test_the_scan_finds_what_it_forbids(tmp_path):
         "    return config.track if config.moves_track else message\n")
     found = index_tests(tmp_path)
     assert [line.split(":")[:2] for line in found] == [["bad.py", str(k)] for k in (2, 3, 4, 5, 6)]
+
+
+#: A configuration declared in machine/configs.py alone (its one entry of CONFIGURATIONS), which no
+#: other module names: the commands run it with what it says it can do.
+NEW = "yaw-heave-cabin"
+
+
+def test_a_new_configuration_is_one_declaration(tmp_path):
+    """``yaw-heave-cabin`` (yaw q1, heave q3, cabin yaw q5; the track held at -4 m) is declared in
+    machine/configs.py and named nowhere else in the package, and ``optimize``, ``online``, ``view`` and
+    ``batch`` run it: exit 0, their files written, the independent check passed (every limit kept
+    on a grid finer than the solver's). Bounded: the 5 s cosine, 50 intervals, one start; on-line a
+    1 s horizon at 10 Hz."""
+    import csv
+    import json
+
+    from desdemona.cli import main
+
+    named = [str(f.relative_to(PACKAGE)) for f in PACKAGE.rglob("*") if f.is_file()
+             and f.suffix in (".py", ".toml", ".js", ".html") and NEW in f.read_text()]
+    assert named == ["machine/configs.py"]
+    config = CONFIGURATIONS[NEW]
+    assert (config.turns_arm, config.moves_track, config.moves_heave, config.tilts_cabin) == (True, False, True, False)
+    assert config.turns_cabin_only and config.held == {1: -4.0, 3: 0.0, 5: 0.0}
+
+    quick = ["cosine", "--config", NEW, "--no-view"]
+    assert main(["optimize", *quick, "--starts", "1", "--h-u", "0.1", "--out", str(tmp_path / "off")]) == 0
+    assert main(["online", *quick, "--horizon", "1", "--step", "0.1", "--out", str(tmp_path / "on")]) == 0
+    for folder in ("off", "on"):
+        summary = json.loads((tmp_path / folder / "summary.json").read_text())
+        assert summary["configuration"]["name"] == NEW
+        assert summary["configuration"]["free_joints"] == ["yaw", "heave", "inner_gimbal"]
+        assert summary["metrics"]["limits_kept"] is True
+        assert (tmp_path / folder / "trajectory.csv").stat().st_size > 0
+        assert (tmp_path / folder / "joints.png").stat().st_size > 0
+    assert (tmp_path / "on" / "classical.csv").stat().st_size > 0  # the washout ran beside the MPC
+    assert main(["view", str(tmp_path / "on")]) == 0
+    assert "<html" in (tmp_path / "on" / "view.html").read_text()[:2000].lower()
+
+    out = tmp_path / "batch"
+    assert main(["batch", "cosine", "--configs", NEW, "--starts", "1", "--h-u", "0.1", "--processes", "1",
+                 "--no-view", "--out", str(out)]) == 0
+    with open(out / "batch.csv", newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    assert [(r["configuration"], r["status"]) for r in rows] == [(NEW, "ok")]
+    job = json.loads((out / f"cosine--{NEW}" / "summary.json").read_text())
+    assert job["metrics"]["limits_kept"] is True and float(rows[0]["worst_use"]) <= 1.0 + 1e-6
