@@ -41,6 +41,11 @@ YAW, TRACK, HEAVE = range(3)
 OUTER_GIMBAL, INNER_GIMBAL, CABIN_GIMBAL = GIMBALS
 
 
+def _joint(joint: int, doc: str) -> property:
+    """A property of :class:`Configuration`: where ``joint`` sits among its free joints, None where held."""
+    return property(lambda config: config._slot(joint), doc=doc)
+
+
 @dataclass(frozen=True)
 class Configuration:
     """A set of free joints (0-based indices into q1..q6) and the positions of the held ones.
@@ -70,36 +75,13 @@ class Configuration:
 
     # Where each joint sits among the free ones (its index into a free-joint vector), None where held.
     # The free joints keep the order q1..q6, so the yaw, where it is free, is the first.
-
-    @property
-    def yaw(self) -> int | None:
-        """The central yaw q1 among the free joints, None where held."""
-        return self._slot(YAW)
-
-    @property
-    def track(self) -> int | None:
-        """The linear track q2 among the free joints, None where held."""
-        return self._slot(TRACK)
-
-    @property
-    def heave(self) -> int | None:
-        """The heave q3 among the free joints, None where held."""
-        return self._slot(HEAVE)
-
-    @property
-    def outer_gimbal(self) -> int | None:
-        """The outer gimbal q4 (about x: roll) among the free joints, None where held."""
-        return self._slot(OUTER_GIMBAL)
-
-    @property
-    def inner_gimbal(self) -> int | None:
-        """The inner gimbal q5 (about z: the cabin's yaw) among the free joints, None where held."""
-        return self._slot(INNER_GIMBAL)
-
-    @property
-    def cabin_gimbal(self) -> int | None:
-        """The cabin gimbal q6 (about y: pitch) among the free joints, None where held."""
-        return self._slot(CABIN_GIMBAL)
+    yaw = _joint(YAW, "The central yaw q1 among the free joints, None where held.")
+    track = _joint(TRACK, "The linear track q2 among the free joints, None where held.")
+    heave = _joint(HEAVE, "The heave q3 among the free joints, None where held.")
+    outer_gimbal = _joint(OUTER_GIMBAL, "The outer gimbal q4 (about x: roll) among the free joints, None where held.")
+    inner_gimbal = _joint(INNER_GIMBAL, "The inner gimbal q5 (about z: the cabin's yaw) among the free joints, "
+                                        "None where held.")
+    cabin_gimbal = _joint(CABIN_GIMBAL, "The cabin gimbal q6 (about y: pitch) among the free joints, None where held.")
 
     @property
     def gimbals(self) -> tuple[int, int, int] | None:
