@@ -234,7 +234,7 @@ def default_horizon(config) -> float:
     move (dfs), 4 s where the track does, whose position must be planned further ahead than the cue
     (docs/benchmarks/default-horizon.md). A session's plans reach at least this far whatever the horizon
     (``MPCOptions.reach``)."""
-    return 4.0 if 1 in config.free else 2.0
+    return 4.0 if config.moves_track else 2.0
 
 
 class _Solved(NamedTuple):
@@ -259,12 +259,10 @@ class MPC:
 
     def __init__(self, model: Model, options: MPCOptions = MPCOptions(), weights=None):
         if options.far == "auto":  # where the tail doubles: where the cabin tilts (MPCOptions.tail_step)
-            options = dataclasses.replace(options, far=FAR if 3 in model.config.free else None)
+            options = dataclasses.replace(options, far=FAR if model.config.tilts_cabin else None)
         self.model, self.options = model, options
         self.deadline = options.deadline if options.deadline is not None else options.period
-        free = model.config.free
-        turns_only = 4 in free and 3 not in free and not model.config.aligned  # the cabin turns, cannot tilt
-        self.rti_step = options.rti_step or (0.5 if turns_only else 1.0)
+        self.rti_step = options.rti_step or (0.5 if model.config.turns_cabin_only else 1.0)
         steps = options.grid()
         t = np.r_[0.0, np.cumsum(steps)]
         # A placeholder path fixes the problem's shape; the preview arrives as its parameter each step.
@@ -471,8 +469,8 @@ class MPC:
         """Bounds on the start's positions when it is placed: each joint within its limits, except
         the arm, which stays at ``q``: with gravity along its axis its angle changes nothing felt."""
         lower, upper = self.problem.position_bounds()
-        if 0 in self.model.config.free:
-            k = self.model.config.free.index(0)
+        if self.model.config.turns_arm:
+            k = self.model.config.yaw
             lower[k] = upper[k] = q[k]
         return lower, upper
 
@@ -488,7 +486,7 @@ class MPC:
         the mirror: through zero rate (where the modulus is only g) and up the other way, instead of
         speeding up again (docs/benchmarks/one-way-arm-on-dfs.md).
         """
-        prob, k = self.problem, self.model.config.free.index(0)
+        prob, k = self.problem, self.model.config.yaw
         jerk = self.limits.jerk[k] if self.smooth else np.inf
         settle = abs(a[k]) / jerk
         rate = settled_rate(qd[k], a[k], jerk)
@@ -525,9 +523,9 @@ class MPC:
         threshold kicked every joint each time (docs/benchmarks/damped-real-time-iteration.md). Not seeded where the preview asks for
         a modulus of g or less (:meth:`_solve`'s ``turning``, docs/benchmarks/a-steady-spin-of-the-cabin-on-dfs.md).
         """
-        if 0 not in self.model.config.free or self.options.spin_up == 0.0:
+        if not self.model.config.turns_arm or self.options.spin_up == 0.0:
             return u
-        k = self.model.config.free.index(0)
+        k = self.model.config.yaw
         rates = qd[k] + np.cumsum(u[:, k] * self.problem.steps)
         stillness = 1.0 - float(np.max(np.abs(rates))) / REST_RATE
         if stillness <= 0.0:
@@ -594,6 +592,6 @@ class MPC:
     def homing(self, q, qd) -> np.ndarray:
         """The rates that take a braked machine home (:func:`~desdemona.machine.plan.homing_rate`): where a still
         machine cues the last present force best (:func:`~desdemona.baselines.classical.still_home`)."""
-        free, force = self.model.config.free, None if self.present is None else self.present[3:]
+        force = None if self.present is None else self.present[3:]
         home = still_home(q, self.model, force)
-        return homing_rate(q, qd, home, np.isin(np.arange(len(q)), self.limits.bounded), free.index(0) if 0 in free else None)
+        return homing_rate(q, qd, home, np.isin(np.arange(len(q)), self.limits.bounded), self.model.config.yaw)

@@ -417,7 +417,7 @@ class Formulation:
             powers.append(power)
             positions.append(qj)
         residuals, z_next = self._residuals(values, a, jerk, x[self.n_motion:], data, positions)
-        null = gimbal_null_rate(q, qd, self.model.config.free)
+        null = gimbal_null_rate(q, qd, self.model.config.gimbals)
         if null is not None and self.null_weight > 0:
             residuals.append(ca.sqrt(self.null_weight * h_u * data[2]) * null)
         r = ca.vertcat(*residuals)

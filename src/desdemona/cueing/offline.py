@@ -139,7 +139,6 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
 
     a0 = None if problem.options.initial == "free" else start_acceleration(problem.options.initial_state, n)
 
-    free = model.config.free
     fixed = problem.options.initial != "free"  # the start is fixed (at rest, or given)
     random_rate = spin_share(problem) if fixed else None
     if fixed:
@@ -155,7 +154,7 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
         # centripetal specific force points along the mean demanded f_y. The "not turning" row gets a
         # slow turn: at exactly zero yaw rate the centripetal terms have no gradient (a stationary
         # point where the solver stalls).
-        track = free.index(1) if 1 in free else None
+        track = model.config.track
         demand = float(np.mean(problem.path.S_d[:, 4]))
         side = -1.0 if demand >= 0 else 1.0
         spin = 0.5 * lim.velocity[0]
@@ -244,7 +243,7 @@ def spin_following(problem: CueingProblem, direction: float, floor: float = SPIN
     ``rate0`` there (default: the problem's start), and zero before it."""
     model, h, N = problem.model, problem.steps, problem.N
     lim, u = model.limits, np.zeros((N, problem.model.n))
-    if model.config.free[:1] != (0,):  # no yaw to turn
+    if not model.config.turns_arm:
         return u
     held = np.interp(problem.t_nodes, problem.path.t, sizing.held_modulus(problem.path))
     rate = direction * lim.velocity[0] * np.clip(_held_share(model, held), floor, 1.0)
@@ -269,7 +268,7 @@ def _guesses_from_start(problem: CueingProblem, rate: float) -> list[tuple[str, 
     model, guesses = problem.model, []
     q0, qd0 = _start(problem)
     a0 = start_acceleration(problem.options.initial_state, model.n)
-    track = model.config.free.index(1) if 1 in model.config.free else None
+    track = model.config.track
     origin = "from rest" if not (np.any(qd0) or np.any(a0)) else "from the start"  # a later window's moves
     rows = [(f"{origin}: yaw spun up", 0.0, 1.0), (f"{origin}: yaw spun up the other way", 0.0, -1.0)]
     if track is not None and problem.options.initial == "rest" and problem.path.S_d is not None:

@@ -273,8 +273,7 @@ class CueingProblem(Formulation):
             lo, hi = lbx[last], ubx[last]  # views into lbx, ubx
             lo[moving] = hi[moving] = 0.0
             if o.final == "centre":
-                prismatic = [k for k, i in enumerate(self.model.config.free)
-                             if self.model.params.joints[i].kind == "prismatic"]
+                prismatic = np.flatnonzero(self.model.prismatic)
                 lo[prismatic] = hi[prismatic] = 0.0
         self.lbx, self.ubx = lbx, ubx
         self.lbg, self.ubg = self._constraint_bounds(None)
@@ -321,7 +320,7 @@ class CueingProblem(Formulation):
         """Whether the arm (q1) is free and without position limits: then the problem is the same
         whatever its angle, and the start fixes it at 0."""
         config, lim = self.model.config, self.model.limits
-        return bool(config.free and config.free[0] == 0 and not np.isfinite(lim.position_min[0])
+        return bool(config.turns_arm and not np.isfinite(lim.position_min[0])
                     and not np.isfinite(lim.position_max[0]))
 
     def bounds_from(self, q0, qd0=None, a0=None) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
