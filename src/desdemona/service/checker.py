@@ -13,7 +13,7 @@ model's torques.
   velocity``, ``|acceleration| <= acceleration``, ``|jerk| <= jerk``, ``|torque| <= effort`` and
   ``|torque * rate| <= power``, each with the relative tolerance of the independent check
   (:data:`desdemona.check.simulate.TOLERANCE`);
-- every held joint (not in ``config.free``) at its fixed position and at rest (``held``);
+- every held joint at its held position (``config.held``) and at rest (``held``);
 - continuity (``continuity``): a setpoint that follows the previous one (the next sequence number)
   starts where the previous one's cycle ends, within :data:`CONTINUITY` of its scale plus
   :data:`ABSOLUTE`; or, re-anchored on the measured machine (protocol version 2), within
@@ -82,9 +82,9 @@ class Checker:
     def __init__(self, model: Model):
         self.model = model
         self.free = list(model.config.free)
-        self.held = [i for i in range(6) if i not in self.free]
-        self.fixed = np.asarray(model.config.fixed, dtype=float)
-        self.names = [JOINT_NAMES[i] for i in self.free]
+        self.select = model.config.select
+        self.held = model.config.held
+        self.names = list(model.config.joint_names)
         lim = model.limits
         self.lo, self.hi = np.asarray(lim.position_min, float), np.asarray(lim.position_max, float)
         self.bounded = np.isfinite(self.lo) & np.isfinite(self.hi)
@@ -122,8 +122,7 @@ class Checker:
         (positions, rates) (6,) of the joints as they are when it came, or None: a setpoint that starts
         there is re-anchored on the machine (its acceleration free: the machine's is not measured)."""
         out: list[Violation] = []
-        f = self.free
-        q, qd, a, j = (np.asarray(x, float)[f] for x in (sp.position, sp.rate, sp.acceleration, sp.jerk))
+        q, qd, a, j = (self.select(x) for x in (sp.position, sp.rate, sp.acceleration, sp.jerk))
         s = self._times(q, qd, a, j, sp.step)[:, None]
         qs, qds = advance(q, qd, a, s, j)
         accs = a + j * s
@@ -150,8 +149,8 @@ class Checker:
                     limit = float(limits[kind][k])
                 out.append(Violation(t, sp.sequence, self.names[k], kind, value, limit,
                                      f"{float(s[row, 0]):.6g} s into the cycle of {sp.step:.6g} s"))
-        for i in self.held:
-            for what, value, target in (("position", sp.position[i], self.fixed[i]), ("rate", sp.rate[i], 0.0),
+        for i, position in self.held.items():
+            for what, value, target in (("position", sp.position[i], position), ("rate", sp.rate[i], 0.0),
                                         ("acceleration", sp.acceleration[i], 0.0), ("jerk", sp.jerk[i], 0.0)):
                 scale = self.held_scale[what][i]
                 tol = ABSOLUTE + (CONTINUITY * scale if math.isfinite(scale) else 0.0)
@@ -163,14 +162,13 @@ class Checker:
         return out, worst
 
     def _continuity(self, sp, prev, t, where=None) -> list[Violation]:
-        f = self.free
-        pq, pqd, pa, pj = (np.asarray(x, float)[f] for x in (prev.position, prev.rate, prev.acceleration, prev.jerk))
+        pq, pqd, pa, pj = (self.select(x) for x in (prev.position, prev.rate, prev.acceleration, prev.jerk))
         eq, eqd = advance(pq, pqd, pa, prev.step, pj)
         ea = pa + pj * prev.step
-        checks = [("position", eq, np.asarray(sp.position, float)[f], self.position_scale),
-                  ("rate", eqd, np.asarray(sp.rate, float)[f], self.velocity)]
+        checks = [("position", eq, self.select(sp.position), self.position_scale),
+                  ("rate", eqd, self.select(sp.rate), self.velocity)]
         if self.smooth:
-            checks.append(("acceleration", ea, np.asarray(sp.acceleration, float)[f], self.acceleration))
+            checks.append(("acceleration", ea, self.select(sp.acceleration), self.acceleration))
         lim = (self.velocity, self.acceleration)
         if all(np.all(np.abs(got - expected) <= REANCHOR * sp.step * scale)
                for (_, expected, got, _), scale in zip(checks[:2], lim)) and (
@@ -181,7 +179,7 @@ class Checker:
                 self.largest_reanchor = np.maximum(self.largest_reanchor, np.concatenate(jumps))
             return []
         if where is not None and all(
-                np.all(np.abs(np.asarray(got, float) - np.asarray(at, float)[f]) <= REANCHOR * sp.step * scale)
+                np.all(np.abs(got - self.select(at)) <= REANCHOR * sp.step * scale)
                 for (_, _, got, _), at, scale in zip(checks[:2], where, lim)):
             self.reanchored += 1  # started where the machine measurably is (after a stop of its own)
             return []

@@ -52,7 +52,7 @@ class MachineLink:
     commanded motion; ``lost_after`` [s] without a State (once they came) is a loss."""
 
     def __init__(self, model, h: float, address: tuple[str, int], lost_after: float):
-        self.free = list(model.config.free)
+        self.select = model.config.select
         lim = model.limits
         self.tolerance = (CYCLES * h * np.asarray(lim.velocity, float), CYCLES * h * np.asarray(lim.acceleration, float))
         self.address, self.lost_after = address, lost_after
@@ -98,10 +98,10 @@ class MachineLink:
             return None
         at = commanded(state.applied_time) if state.applied is not None else None
         if at is None:
-            zero = np.zeros(len(self.free))
+            zero = np.zeros_like(self.tolerance[0])
             return Tracking((zero, zero), 0.0, state.status, state)
-        e_q = np.asarray(state.position, float)[self.free] - at[0]
-        e_qd = np.asarray(state.rate, float)[self.free] - at[1]
+        e_q = self.select(state.position) - at[0]
+        e_qd = self.select(state.rate) - at[1]
         use = float(max(np.max(np.abs(e_q) / self.tolerance[0]), np.max(np.abs(e_qd) / self.tolerance[1])))
         return Tracking((e_q, e_qd), use, state.status, state)
 
@@ -109,8 +109,7 @@ class MachineLink:
         """The newest State's free joints' positions and rates, carried to ``now`` (the service's
         clock) at those rates (the machine's own stop is not known here: its acceleration is not
         measured); a rate within the noise band (:data:`BAND` of the tolerance) is taken as rest."""
-        q = np.asarray(self.newest.position, float)[self.free]
-        qd = np.asarray(self.newest.rate, float)[self.free]
+        q, qd = self.select(self.newest.position), self.select(self.newest.rate)
         qd = np.where(np.abs(qd) <= BAND * self.tolerance[1], 0.0, qd)
         return q + qd * max(now - self.arrived, 0.0), qd
 
