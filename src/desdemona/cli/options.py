@@ -7,7 +7,7 @@ import argparse
 import difflib
 
 from desdemona._version import __version__
-from desdemona.cli import commands
+from desdemona.cli import commands, serving
 from desdemona.cli.exits import EXIT_CODES, SEE_EXIT_CODES
 from desdemona.control.predictors import LIVE
 from desdemona.machine.configs import CONFIGURATIONS
@@ -485,7 +485,7 @@ def _add_serve_parser(sub) -> None:
     _add_cost_options(serve)
     _add_overwrite_option(serve)
     _add_view_option(serve)
-    serve.set_defaults(run=commands.run_serve)
+    serve.set_defaults(run=serving.run_serve)
 
 
 def _add_machine_parser(sub) -> None:
@@ -535,7 +535,7 @@ def _add_machine_parser(sub) -> None:
     machine.add_argument("--state-outage", default=None, metavar="START,LENGTH", dest="state_outage",
                          help="send no State for LENGTH seconds from START seconds after the first setpoint "
                               "(a test of the service's loss of them)")
-    machine.set_defaults(run=commands.run_machine)
+    machine.set_defaults(run=serving.run_machine)
 
     command = sub.add_parser(
         "command", help="an operator's command to 'serve' or 'machine': pause, park, resume, estop, reset",
@@ -545,7 +545,7 @@ def _add_machine_parser(sub) -> None:
     command.add_argument("action", choices=("pause", "park", "resume", "estop", "reset"))
     command.add_argument("--to", required=True, metavar="HOST:PORT",
                          help="the service's --listen or the machine's --listen address")
-    command.set_defaults(run=commands.run_command)
+    command.set_defaults(run=serving.run_command)
 
 
 def _add_host_parser(sub) -> None:
@@ -558,7 +558,7 @@ def _add_host_parser(sub) -> None:
                               description="Send every sample of a path at its time (divided by --speed).")
     replay.add_argument("profile", metavar="PROFILE_OR_CSV")
     _add_host_options(replay)
-    replay.set_defaults(run=commands.run_host_replay)
+    replay.set_defaults(run=serving.run_host_replay)
     flight = kinds.add_parser("jsbsim", help="fly a JSBSim script in real time and send its pilot's motion",
                               description="Fly a JSBSim script (by name, or an XML file) in real time and send "
                                           "the pilot's motion at --rate, converted as 'import jsbsim' does "
@@ -570,7 +570,7 @@ def _add_host_parser(sub) -> None:
     flight.add_argument("--end", type=float, default=None, metavar="SECONDS",
                         help="the flight's time of the last message (default: the script's end)")
     _add_host_options(flight)
-    flight.set_defaults(run=commands.run_host_jsbsim)
+    flight.set_defaults(run=serving.run_host_jsbsim)
 
 
 def _add_host_options(parser) -> None:

@@ -46,11 +46,8 @@ stream that ended while moving), 0 otherwise.
 
 from __future__ import annotations
 
-import csv
-import io
 import json
 import math
-import os
 import signal
 import socket
 import threading
@@ -60,65 +57,29 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona._version import __version__
-from desdemona.check.simulate import TOLERANCE
 from desdemona.machine.model import Model
 from desdemona.machine.params import JOINT_NAMES
 from desdemona.service import protocol
-from desdemona.service.checker import (
-    ABSOLUTE,
-    CONTINUITY,
-    KINDS,
-    LIMIT_KINDS,
-    MADE_KINDS,
-    POINTS,
-    REANCHOR,
-    Checker,
-    Violation,
-)
+from desdemona.service.checker import (ABSOLUTE, CONTINUITY, KINDS, LIMIT_KINDS, MADE_KINDS, POINTS, REANCHOR,
+                                       Checker, Violation)
 from desdemona.service.drive import Drive, Event
+from desdemona.service.machinelog import (FILES, MAX_KEPT, WRITTEN_BY, Files, number, record, summary, violation,
+                                          write_summary)
 from desdemona.service.servo import BANDWIDTH_HZ, DELAY, NOISE
 from desdemona.support import guard
-from desdemona.support.files import beside
 
-__all__ = [
-    "ABSOLUTE",
-    "CONTINUITY",
-    "KINDS",
-    "LIMIT_KINDS",
-    "MADE_KINDS",
-    "POINTS",
-    "REANCHOR",
-    "Checker",
-    "MachineOptions",
-    "Report",
-    "Violation",
-    "drop_reason",
-    "exit_code",
-    "parse_fault",
-    "prepare",
-    "run",
-]
+__all__ = ["ABSOLUTE", "CONTINUITY", "FILES", "KINDS", "LIMIT_KINDS", "MADE_KINDS", "POINTS", "REANCHOR", "Checker",
+           "MachineOptions", "Report", "Violation", "drop_reason", "exit_code", "parse_fault", "prepare", "run",
+           "summary"]
 
 #: Every receive waits at most this long [s], so the loop notices ``idle``, ``duration`` and signals.
 RECEIVE_TIMEOUT = 0.05
 #: The largest datagram read (a longer one is cut by the kernel, and refused as a wrong length).
 MAX_DATAGRAM = 65536
-#: Violations kept in the :class:`Report` (all are counted and written to ``violations.csv``).
-MAX_KEPT = 1000
 #: A burst: this many setpoints arriving within a quarter of a cycle.
 BURST = 3
 TIMING = ("late", "gap", "burst")
-FILES = ("setpoints.csv", "violations.csv", "motion.csv", "events.csv", "summary.json")
-WRITTEN_BY = "desdemona machine"
 
-SETPOINT_COLUMNS = (("time", "sequence", "sent", "status", "source", "answers", "cycle_time", "step")
-                    + tuple(f"{name}_{q}" for name in JOINT_NAMES
-                            for q in ("position", "rate", "acceleration", "jerk")))
-VIOLATION_COLUMNS = ("time", "sequence", "joint", "what", "value", "limit", "detail")
-MOTION_COLUMNS = (("t", "status", "fault", "fault_joint", "applied", "applied_time")
-                  + tuple(f"{name}_{q}" for name in JOINT_NAMES for q in ("position", "rate", "acceleration")))
-EVENT_COLUMNS = ("time", "what", "detail")
 
 
 @dataclass(frozen=True)
@@ -293,41 +254,14 @@ def prepare(out: str | Path) -> Path:
     return out
 
 
-def _number(x: float) -> str:
-    return repr(float(x))
 
 
-def _number(x: float) -> str:
-    return repr(float(x))
-
-
-class _Files:
-    """The folder's CSV files, opened for appending rows, each flushed as a State is sent."""
-
-    def __init__(self, out: Path):
-        self.handles = {name: open(out / name, "w", newline="") for name in FILES if name.endswith(".csv")}
-        self.rows = {name: csv.writer(f) for name, f in self.handles.items()}
-        for name, columns in (("setpoints.csv", SETPOINT_COLUMNS), ("violations.csv", VIOLATION_COLUMNS),
-                              ("motion.csv", MOTION_COLUMNS), ("events.csv", EVENT_COLUMNS)):
-            self.rows[name].writerow(columns)
-        self.flush()
-
-    def write(self, name: str, row) -> None:
-        self.rows[name].writerow(row)
-
-    def flush(self) -> None:
-        for f in self.handles.values():
-            f.flush()
-
-    def close(self) -> None:
-        for f in self.handles.values():
-            f.close()
 
 
 class _StandIn:
     """One run's state: the drive, the check, the service's address, what came when."""
 
-    def __init__(self, model: Model, options: MachineOptions, sock, report: Report, files: _Files):
+    def __init__(self, model: Model, options: MachineOptions, sock, report: Report, files: Files):
         self.model, self.options, self.sock, self.report, self.files = model, options, sock, report, files
         self.drive = Drive.of(model, options.timeout, options.delay, options.bandwidth_hz)
         self.checker = Checker(model)
@@ -387,7 +321,7 @@ class _StandIn:
             report.refused[reason] = report.refused.get(reason, 0) + 1
             if report.refused[reason] == 1:  # the first of each reason
                 self.drive.events.append(Event(t, "setpoint refused", f"{sp.sequence}: {refused}"))
-        _record(report, self.checker, sp, t, violations, use, self.files)
+        record(report, self.checker, sp, t, violations, use, self.files)
         self.previous = sp
 
     def _timing(self, sp: protocol.Setpoint, t: float) -> None:
@@ -433,10 +367,10 @@ class _StandIn:
         state = protocol.MachineState(self.report.states + 1, t1, drive.status, drive.fault_code, drive.fault_joint,
                                       None if applied is None else applied.sequence, drive.applied_time(t1),
                                       noisy_q, noisy_qd)
-        row = [_number(t1), state.status, state.fault, "" if state.fault_joint is None else state.fault_joint,
-               "" if state.applied is None else state.applied, _number(state.applied_time)]
+        row = [number(t1), state.status, state.fault, "" if state.fault_joint is None else state.fault_joint,
+               "" if state.applied is None else state.applied, number(state.applied_time)]
         for i in range(6):
-            row += [_number(noisy_q[i]), _number(noisy_qd[i]), _number(qdd[-1, i])]
+            row += [number(noisy_q[i]), number(noisy_qd[i]), number(qdd[-1, i])]
         self.files.write("motion.csv", row)
         outage = self.options.state_outage
         silent = (outage is not None and self.first_arrival is not None
@@ -448,7 +382,7 @@ class _StandIn:
             except OSError:
                 self.drop("state not sent")
         for event in drive.events[self.written_events:]:
-            self.files.write("events.csv", [_number(event.time), event.what, event.detail])
+            self.files.write("events.csv", [number(event.time), event.what, event.detail])
         self.written_events = len(drive.events)
         self.report.events, self.report.stops = drive.events, drive.stops
         self.report.ended_moving = drive.ended_moving
@@ -461,7 +395,7 @@ class _StandIn:
             if per_joint[k] > report.made[kind]:
                 report.made[kind], report.made_joint[kind] = float(per_joint[k]), JOINT_NAMES[k]
         for v in violations:
-            _violation(report, v, self.files)
+            violation(report, v, self.files)
 
     def at_rest(self, t: float) -> bool:
         return not self.drive.joints.braking and self.drive.joints.at_rest(t, rate=1e-3)
@@ -490,8 +424,8 @@ def run(model: Model, listen: tuple[str, int], out: str | Path, idle: float = 2.
         report = Report(out=out)
         report.address = sock.getsockname()[:2]
         report.stopped = "running"
-        _write_summary(report, model)  # marks the folder as this command's from the start
-        files = _Files(out)
+        write_summary(report, model)  # marks the folder as this command's from the start
+        files = Files(out)
         stand_in = _StandIn(model, options, sock, report, files)
         stops: list[int] = []
         started = time.monotonic()
@@ -505,7 +439,7 @@ def run(model: Model, listen: tuple[str, int], out: str | Path, idle: float = 2.
             with guard.deferred():
                 report.elapsed = time.monotonic() - started
                 files.close()
-                _write_summary(report, model)
+                write_summary(report, model)
     finally:
         sock.close()
     return report
@@ -555,66 +489,3 @@ class _emergency_signal:
     def __exit__(self, *exc):
         if self.saved is not None:
             signal.signal(signal.SIGUSR1, self.saved)
-
-
-def _record(report: Report, checker: Checker, sp: protocol.Setpoint, t: float, violations, use, files: _Files):
-    report.received += 1
-    report.statuses[sp.status] = report.statuses.get(sp.status, 0) + 1
-    report.sources[sp.source] = report.sources.get(sp.source, 0) + 1
-    if report.first_cycle_time is None:
-        report.first_cycle_time = sp.cycle_time
-    report.last_cycle_time = sp.cycle_time
-    for kind, per_joint in use.items():
-        k = int(np.argmax(per_joint))
-        if per_joint[k] > report.worst[kind]:
-            report.worst[kind] = float(per_joint[k])
-            report.worst_joint[kind] = checker.names[k]
-    row = [_number(t), sp.sequence, _number(sp.time), sp.status, sp.source,
-           "" if sp.answers is None else sp.answers, _number(sp.cycle_time), _number(sp.step)]
-    for i in range(6):
-        row += [_number(sp.position[i]), _number(sp.rate[i]), _number(sp.acceleration[i]), _number(sp.jerk[i])]
-    files.write("setpoints.csv", row)
-    for v in violations:
-        _violation(report, v, files)
-
-
-def _violation(report: Report, v: Violation, files: _Files) -> None:
-    report.counts[v.what] += 1
-    if len(report.violations) < MAX_KEPT:
-        report.violations.append(v)
-    files.write("violations.csv", [_number(v.time), v.sequence, v.joint, v.what, _number(v.value), _number(v.limit),
-                                   v.detail])
-
-
-def summary(report: Report, model: Model) -> dict:
-    """The contents of ``summary.json``."""
-    def finite(x):
-        return x if x is None or math.isfinite(x) else str(x)
-
-    return {
-        "written_by": WRITTEN_BY, "version": __version__, "passed": report.passed,
-        "config": model.config.name, "params": model.params.name, "free": list(model.config.joint_names),
-        "listen": list(report.address), "stopped": report.stopped, "elapsed": report.elapsed,
-        "datagrams": report.datagrams, "received": report.received, "dropped": dict(sorted(report.dropped.items())),
-        "refused": dict(sorted(report.refused.items())), "gaps": report.gaps, "missing": report.missing,
-        "reanchored": report.reanchored, "states_sent": report.states,
-        "violations": dict(report.counts), "violation_count": report.violation_count,
-        "timing_faults": dict(report.timing), "latest_after_due_s": report.latest,
-        "ended_moving": report.ended_moving,
-        "own_stops": [{"why": s.why, "start": s.start, "shortest_stop_s": s.bound, "at_rest": s.rest}
-                      for s in report.stops],
-        "worst_use": {k: finite(v) for k, v in report.worst.items()}, "worst_joint": dict(report.worst_joint),
-        "worst_use_made": {k: finite(v) for k, v in report.made.items()}, "worst_joint_made": dict(report.made_joint),
-        "first_cycle_time": report.first_cycle_time, "last_cycle_time": report.last_cycle_time,
-        "statuses": dict(report.statuses), "sources": dict(report.sources),
-        "tolerance": TOLERANCE, "continuity_tolerance": {"relative": CONTINUITY, "absolute": ABSOLUTE},
-    }
-
-
-def _write_summary(report: Report, model: Model) -> None:
-    target = report.out / "summary.json"
-    with beside(target) as tmp:
-        text = io.StringIO()
-        json.dump(summary(report, model), text, indent=2)
-        tmp.write_text(text.getvalue() + "\n")
-        os.replace(tmp, target)
