@@ -214,8 +214,11 @@ def test_sigint_parks_the_machine_writes_the_session_and_exits_130(tmp_path):
     summary = json.loads((out / "summary.json").read_text())
     assert summary["service"]["stopped_by"] == "SIGINT"
     rows = (out / "cycles.csv").read_text().splitlines()  # the cycles it followed the host
-    assert rows[0].split(",")[-4:] == ["message_age_s", "latency_s", "command", "status"]
-    assert rows[-1].endswith(",plan,running")
+    assert rows[0].split(",")[-6:] == ["message_age_s", "latency_s", "command", "status", "tracking_use", "machine"]
+    assert rows[-1].split(",")[-4:-2] == ["plan", "running"]
+    assert rows[-1].endswith(",nan,")  # this stand-in sends no State: no tracking error, no machine status
+    events = (out / "events.csv").read_text()
+    assert "no State from the machine" in events and summary["service"]["machine_states"] == 0
     session = (out / "session.csv").read_text().splitlines()  # every cycle, the parking too
     assert session[-1].split(",")[1:3] == ["parked", "park"]
     assert summary["service"]["judged_span_s"][1] < float(session[-1].split(",")[0])

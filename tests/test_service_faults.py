@@ -137,6 +137,12 @@ def test_serve_killed_at_speed_the_machine_stops_on_its_own(tmp_path):
     assert float(rows[-1]["t"]) > stop["at_rest"]  # written on to its last sample, after the stop
     assert all(abs(float(rows[-1][f"{j}_rate"])) < 1e-3 for j in JOINT_NAMES)
     assert time.monotonic() - killed < WAIT
+    # the killed service's log, written as it went: every cycle to the last, commanded and measured
+    with open(tmp_path / "session" / "session.csv", newline="") as f:
+        session = list(csv.DictReader(f))
+    assert len(session) > 100 and session[-1]["status"] == "running"
+    assert abs(float(session[-1]["measured_yaw_rate"]) - float(session[-1]["commanded_yaw_rate"])) < 0.1
+    assert json.loads((tmp_path / "session" / "summary.json").read_text())["live"]
 
 
 def test_a_drive_fault_parks_the_service_until_a_reset(tmp_path):

@@ -18,7 +18,7 @@ from desdemona.runs import session
 
 def run_serve(args) -> int:
     from desdemona.results import report
-    from desdemona.service import protocol, serve
+    from desdemona.service import protocol, serve, sessionlog
 
     model = _machine(args)
     out = _result_folder(args)
@@ -36,29 +36,38 @@ def run_serve(args) -> int:
                             tail_step=args.tail_step)
     options = resolved.options
 
-    def ready():
+    def say_ready():
         print(f"desdemona: serving {model.config.name} at {1.0 / options.mpc.step:g} Hz: motion from {args.listen}, "
               f"setpoints to {args.send}; Ctrl-C parks the machine and ends the session", file=sys.stderr, flush=True)
 
     def dropping(reason):
         print(f"desdemona: dropping datagrams: {reason}", file=sys.stderr, flush=True)
 
+    log = None
+
+    def ready():
+        nonlocal log  # the log is begun once the service listens: a port in use leaves nothing behind
+        log = sessionlog.LiveLog(out, model.config.joint_names, report.RESULT_FORMAT)
+        say_ready()
+
     try:
-        served = serve.serve(model, options, serving, ready=ready, on_drop=dropping)
+        served = serve.serve(model, options, serving, ready=ready, on_drop=dropping, log=_Later(lambda: log))
     except OSError as exc:
         raise UserError(f"--listen {args.listen}: {exc.strerror or exc}") from None
+    finally:
+        logged = None if log is None else log.close()
     if not np.any(served.columns["status"] == "running"):
         dropped = sum(served.dropped.values())
         print(f"desdemona: the session never followed the host: no valid motion came to {args.listen} "
-              f"({dropped} datagrams dropped); nothing written", file=sys.stderr)
+              f"({dropped} datagrams dropped); only its log is in {out}", file=sys.stderr)
         return EXIT_USAGE if served.stopped_by is None else 128 + served.stopped_by
     result = serve.result(served, model, options)
     summary = serve.summary(served, serving)
     k0, k1 = served.span()
-    report.write_online(result, out, report.command_line(), args.overwrite, protect=_inputs(args), view=args.view,
+    # the whole result replaces the log written as the session went, keeping that log's rows
+    report.write_online(result, out, report.command_line(), True, protect=_inputs(args), view=args.view,
                         cycle_columns={k: v[k0:k1] for k, v in served.columns.items()},
-                        extra_summary={"service": summary}, files={"session.csv": serve.session_table(served),
-                                                                   "events.csv": serve.events_table(served)})
+                        extra_summary={"service": summary}, files={"session.csv": logged[0], "events.csv": logged[1]})
     print(serve.describe(summary) + f"; written to {out}")
     print(f"  felt while following the host: {result.quality.headline()}")
     if served.stopped_by is not None:
@@ -171,3 +180,15 @@ def run_host_jsbsim(args) -> int:
     _say_sent(counts, args.to)
     print(f"  {counts['aircraft']}, from {counts['start']:g} s ({counts['start_reason']}); {counts['ended']}")
     return 0
+
+
+class _Later:
+    """The log the service writes to, once it exists (it is begun when the service listens)."""
+
+    def __init__(self, get):
+        self.get = get
+
+    def cycle(self, *args) -> None:
+        log = self.get()
+        if log is not None:
+            log.cycle(*args)

@@ -307,11 +307,14 @@ class _StandIn:
         if previous is not None and sp.sequence <= previous.sequence:
             return self.drop("duplicate" if sp.sequence == previous.sequence else "out of order")
         follows = previous is not None and sp.sequence == previous.sequence + 1
+        # continuity matters for a motion the drive follows on: not for setpoints it refuses (stopped on
+        # its own) or takes afresh from where it stands
+        continued = follows and self.drive.status == "following"
         if previous is not None and not follows:
             report.gaps += 1
             report.missing += sp.sequence - previous.sequence - 1
         where = self.drive.joints.now(t)[:2]
-        violations, use = self.checker.check(sp, previous if follows else None, t, where)
+        violations, use = self.checker.check(sp, previous if continued else None, t, where)
         report.reanchored = self.checker.reanchored
         self._timing(sp, t)
         self.first_arrival = t if self.first_arrival is None else self.first_arrival

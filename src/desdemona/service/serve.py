@@ -289,12 +289,13 @@ class _Preview:
 
 
 def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=time.monotonic, ready=None,
-          on_drop=None) -> Served:
+          on_drop=None, log=None) -> Served:
     """Run a session (see the module's docstring) until ``serving.duration``, ``serving.quiet_end`` or
     a stop signal; returns what it did. The controller's options are ``options.mpc`` (a plan every
     step: the session's step is the cycle); its predictor ``options.predictor``
     (:data:`desdemona.control.predictors.LIVE`). ``ready()``, if given, is called once the service listens;
-    ``on_drop(reason)`` the first time a datagram is dropped for a reason."""
+    ``on_drop(reason)`` the first time a datagram is dropped for a reason; ``log``, if given, a
+    :class:`~desdemona.service.sessionlog.LiveLog` that gets every cycle as it ends."""
     mpc = options.mpc
     if options.predictor not in LIVE:
         raise ValueError(f"predictor {options.predictor!r}: a live session uses one of {', '.join(LIVE)}")
@@ -351,6 +352,11 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             sent = clock()
             session.record(k, compute=sent - began, age=np.nan if inbox.arrived is None else began - inbox.arrived,
                            latency=sent - inbox.arrived if answered else np.nan)
+            if log is not None:
+                state = link.newest
+                log.cycle(session.rows[-1], session.starts[-1][:2], None if state is None else (
+                    *(model.config.select(x) for x in (state.position, state.rate)), state.applied_time),
+                    session.events)
             k += 1
             quiet = inbox.arrived is not None and clock() - inbox.arrived > (serving.quiet_end or np.inf)
             if ((stops and (session.status == "parked" or len(stops) > 1))

@@ -74,3 +74,52 @@ def describe(summary: dict) -> str:
     return (f"served {summary['cycles']} cycles ({status}), {summary['received']} host messages, {lat}, "
             f"{summary['compute_over_deadline']} over the deadline, {dropped} datagrams dropped; {machine}"
             + "".join(f"\n  {e['t']:.3f} s: {e['what']}" + (f": {e['detail']}" if e["detail"] else "") for e in faults))
+
+
+class LiveLog:
+    """The session's log written as it goes into its result folder ``out``: ``session.csv`` (every cycle:
+    the columns of :func:`session_table`, then per free joint the commanded position and rate at the
+    cycle's start and the newest State's measured ones with the time on the setpoints' time line they
+    were measured at) and ``events.csv``, each row appended and flushed, so that a service that is
+    killed leaves them to its last cycle; ``summary.json`` marks the folder as a result of ours being
+    written (``"live": true``), so that the session's end replaces it with the whole result."""
+
+    def __init__(self, out, names, result_format: str):
+        import json
+        from pathlib import Path
+
+        self.out = Path(out)
+        self.out.mkdir(parents=True, exist_ok=True)
+        (self.out / "summary.json").write_text(json.dumps({"format": result_format, "live": True,
+                                                           "written_by": "desdemona serve, as it goes"}))
+        self.session = open(self.out / "session.csv", "w")  # noqa: SIM115 -- appended to cycle by cycle
+        self.events = open(self.out / "events.csv", "w")  # noqa: SIM115
+        joints = [f"{kind}_{name}_{q}" for kind in ("commanded", "measured") for name in names
+                  for q in ("position", "rate")]
+        self.session.write(",".join(["t,status,command,message_age_s,latency_s,compute_time_s,reason,machine,"
+                                     "tracking_use", *joints, "measured_at"]) + "\n")
+        self.events.write("t,what,detail\n")
+        self.written = 0
+
+    def cycle(self, row: dict, commanded, measured, events) -> None:
+        """One cycle's ``row`` (as :class:`desdemona.service.serve` records it), ``commanded`` (q, qd)
+        and ``measured`` (q, qd, time on the setpoints' line) or None, and every event so far."""
+        n = len(commanded[0])
+        values = [*commanded[0], *commanded[1], *(measured[0] if measured else [np.nan] * n),
+                  *(measured[1] if measured else [np.nan] * n)]
+        self.session.write(f"{row['t']:.6g},{row['status']},{row['command']},{row['message_age_s']:.6g},"
+                           f"{row['latency_s']:.6g},{row['compute_time_s']:.6g},\"{row['reason']}\","
+                           f"{row['machine']},{row['tracking_use']:.6g},"
+                           + ",".join(f"{v:.10g}" for v in values)
+                           + f",{measured[2] if measured else np.nan:.6g}\n")
+        for t, what, detail in events[self.written:]:
+            self.events.write(f"{t:.6g},{what},\"{detail}\"\n")
+        self.written = len(events)
+        self.session.flush()
+        self.events.flush()
+
+    def close(self) -> tuple[str, str]:
+        """Closed; the text of session.csv and events.csv, to go into the whole result."""
+        self.session.close()
+        self.events.close()
+        return (self.out / "session.csv").read_text(), (self.out / "events.csv").read_text()
