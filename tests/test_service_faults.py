@@ -2,8 +2,9 @@
 ``serve``, ``host replay``): the service killed at speed, a drive fault, an emergency stop, a servo's
 lag, the machine's States lost. Each run is bounded in time; every address is 127.0.0.1.
 
-The stand-in runs with a long queue (``--timeout``) so that a loaded computer's stalls of the service
-do not stop it on their own before the fault each test makes."""
+The service runs at 25 Hz and the stand-in with a long queue (``--timeout``) so that a loaded
+computer's stalls of the service do not stop the machine on their own before the fault each test
+makes (on two cores shared by many jobs, 50 Hz fell behind real time by more than half a second)."""
 
 import csv
 import json
@@ -18,15 +19,15 @@ from pathlib import Path
 import pytest
 
 from desdemona.machine.params import JOINT_NAMES
-from desdemona.service.checker import MADE_TOLERANCE
+from desdemona.service.checker import MADE_JERK_TOLERANCE, MADE_TOLERANCE
 
 pytestmark = [pytest.mark.realtime, pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")]
 
 LOOPBACK = "127.0.0.1"
 RUN = [sys.executable, "-m", "desdemona"]
 WAIT = 120.0  # [s] the longest any wait of these tests lasts (a first compile on a loaded machine)
-QUEUE = 25  # the stand-in's --timeout [cycles]: half a second
-STEP = 0.02  # the session's cycle at 50 Hz
+QUEUE = 25  # the stand-in's --timeout [cycles]: a second
+STEP = 0.04  # the session's cycle at 25 Hz (--rate): a loaded computer keeps it
 
 
 def _port() -> int:
@@ -47,7 +48,7 @@ class Loop:
         self.serve = subprocess.Popen(
             [*RUN, "serve", "--config", config, "--listen", f"{LOOPBACK}:{self.serve_port}",
              "--send", f"{LOOPBACK}:{self.machine_port}", "--out", str(folder / "session"), "--horizon", "1",
-             "--duration", str(WAIT), "--quiet-end", "1", "--no-view", *serve],
+             "--duration", str(WAIT), "--quiet-end", "1", "--rate", str(round(1 / STEP)), "--no-view", *serve],
             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         assert "serving" in self.serve.stderr.readline()
         self.host = subprocess.Popen([*RUN, "host", "replay", profile, "--to", f"{LOOPBACK}:{self.serve_port}"],
@@ -103,7 +104,8 @@ def _yaw_rate(rows, at_least: float) -> bool:
 
 def _made_within_limits(summary: dict) -> None:
     assert all(v == 0 for v in summary["violations"].values()), summary["violations"]
-    assert all(v <= 1.0 + MADE_TOLERANCE for v in summary["worst_use_made"].values()), summary["worst_use_made"]
+    assert all(v <= 1.0 + (MADE_JERK_TOLERANCE if k == "jerk" else MADE_TOLERANCE)
+               for k, v in summary["worst_use_made"].items()), summary["worst_use_made"]
 
 
 def test_serve_killed_at_speed_the_machine_stops_on_its_own(tmp_path):
@@ -205,7 +207,7 @@ def test_states_lost_for_a_second_park_the_service_which_then_resumes(tmp_path):
     loop.end()
     events = loop.events("session")
     lost = [e for e in events if e["what"] == "machine fault" and e["detail"].startswith("no State from the machine")]
-    assert lost, events
+    assert len(lost) == 1, events  # logged once
     back = [e for e in events if e["what"] == "machine back" and float(e["t"]) > float(lost[0]["t"])]
     assert back, events
     with open(tmp_path / "session" / "session.csv", newline="") as f:

@@ -328,13 +328,13 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             # stopping, the cycles keep their times; else each starts as a new host message comes
             inbox.wait(start + k * h, np.inf) if stops else inbox.wait(closes, opens)
             began = clock()
-            for arrived, action in inbox.commands:
-                session.operator(action, arrived - start)
+            for _, action in inbox.commands:  # logged at the cycle that acts on it, as every event
+                session.operator(action, k * h)
                 if action in ("emergency stop", "reset"):  # the motion system's own: passed on
                     _send(outbound, protocol.Command(len(session.events), began - start, action), serving.send, inbox)
             inbox.commands = []
             alive = inbox.arrived is not None and began - inbox.arrived <= serving.timeout * h
-            machine = session.observe(link, began - start, began)
+            machine = session.observe(link, k * h, began)
             if stops:
                 session.park(stop=True, hard=len(stops) > 1)
             elif machine or session.paused:
@@ -436,7 +436,7 @@ class _Session:
                 self.event(t, "no State from the machine", "planning on its own command (as protocol version 1)")
             return ""
         if link.lost(now):
-            return self._machine(t, f"no State from the machine for {now - link.arrived:.2f} s")
+            return self._machine(t, f"no State from the machine for more than {link.lost_after:g} s")
         commanded = commanded_at(self.starts, self.u, [*self.jerks], self.h)
         tracking = link.tracking(lambda tau: commanded(tau) if link.newest.applied is not None
                                  and link.newest.applied >= self.trusted_from else None)
