@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import os
 from dataclasses import dataclass
 
 import numpy as np
@@ -102,13 +103,17 @@ class Choices:
 class Session:
     """A resolved session: the desired path the configuration follows (with the gain), and the
     options of its problem (:class:`~desdemona.cueing.formulation.ProblemOptions` off-line,
-    :class:`~desdemona.control.online.OnlineOptions` on-line), and its size (:mod:`desdemona.cueing.sizing`)."""
+    :class:`~desdemona.control.online.OnlineOptions` on-line), and its size (:mod:`desdemona.cueing.sizing`);
+    off-line also the window it is solved in (None: whole), the processes its starts run on, and its
+    method ("optimize", or "thesis": the thesis' own optimiser, :func:`thesis`)."""
 
     path: DesiredPath
     model: Model
     options: object
     size: sizing.Size
     window: float | None = None
+    workers: int = 1
+    method: str = "optimize"
 
 
 def cued(path: DesiredPath, model: Model, choices: Choices) -> DesiredPath:
@@ -145,13 +150,28 @@ def start(model: Model, choices: Choices, allowed: tuple[str, ...]) -> tuple[str
 
 
 def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solver: str = "auto",
-            perception=None, workers: int = 1) -> Session:
+            perception=None, workers: int | None = 1, starts: int = 1) -> Session:
     """The session of ``optimize`` and of each job of ``batch``: the cued path and its
-    :class:`~desdemona.cueing.formulation.ProblemOptions`, checked to fit in memory with ``workers`` at once.
-    solver "auto": fatrop on three joints or more (``yaw-track-cabin``, ``full``, ``dfs``) where a
-    solve (the path, or its window) has at most :data:`FATROP_UP_TO` intervals, and on a longer path
-    there in windows of :data:`~desdemona.cueing.windows.DEFAULT_WINDOW` unless a window is asked for; IPOPT
-    elsewhere."""
+    :class:`~desdemona.cueing.formulation.ProblemOptions`, checked to fit in memory with ``workers`` at once
+    (None: fitted, one process per core and at most one per start, fewer where they would not fit in
+    memory together). solver "auto": fatrop on three joints or more (``yaw-track-cabin``, ``full``,
+    ``dfs``) where a solve (the path, or its window) has at most :data:`FATROP_UP_TO` intervals, and on
+    a longer path there in windows of :data:`~desdemona.cueing.windows.DEFAULT_WINDOW` unless a window
+    is asked for; IPOPT elsewhere."""
+    if workers is not None:
+        return _offline(path, model, choices, solver, perception, workers)
+    workers = max(1, min(len(os.sched_getaffinity(0)), starts))
+    while True:
+        try:
+            return _offline(path, model, choices, solver, perception, workers)
+        except sizing.TooLarge:
+            if workers == 1:
+                raise
+            workers -= 1
+
+
+def _offline(path: DesiredPath, model: Model, choices: Choices, solver: str, perception, workers: int) -> Session:
+    """:func:`offline` on ``workers`` processes."""
     from desdemona.cueing import windows
     from desdemona.cueing.formulation import ProblemOptions
 
@@ -174,7 +194,7 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
         few = round(part.duration / choices.h_u) <= FATROP_UP_TO
         problem = dataclasses.replace(problem, solver="fatrop" if staged and few else "ipopt")
     size = sizing.check_fits(part, model.config, problem, workers, model.limits.smooth)
-    return Session(path, model, problem, size, window)
+    return Session(path, model, problem, size, window, workers)
 
 
 def _window(path: DesiredPath, model: Model, problem, asked: float | None, workers: int,
@@ -205,7 +225,7 @@ def thesis(path: DesiredPath, model: Model, choices: Choices = Choices()) -> Ses
     path = path.with_gain(choices.gain)
     problem = ProblemOptions(h_u=max(choices.h_u, 0.1))
     size = sizing.check_fits(path, model.config, problem, 1, model.limits.smooth)
-    return Session(path, model, problem, size)
+    return Session(path, model, problem, size, method="thesis")
 
 
 def default_rotation_band(config) -> float:
