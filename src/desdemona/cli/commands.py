@@ -272,11 +272,13 @@ def fallback_warning(sources, reasons, times, deadline: float) -> str:
 
 def _forecast(args, path):
     """The forecast file of ``online --forecast``, read on the motion file's clock; None without one."""
+    from desdemona.control import predictors
     from desdemona.profiles import forecast
 
-    if (args.predictor == "forecast") != (args.forecast is not None):
-        raise UserError("--predictor forecast needs --forecast FILE, the vehicle's forecasts (README, 'Predictors')"
-                        if args.forecast is None else "--forecast is used only with --predictor forecast")
+    try:  # before the file is read
+        predictors.check(args.predictor, False, args.reference is not None, args.forecast is not None)
+    except ValueError as exc:
+        raise UserError(str(exc)) from None
     if args.forecast is None:
         return None
     return forecast.read_forecast(args.forecast, path, origin=forecast.time_origin(args.profile))

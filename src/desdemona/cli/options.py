@@ -9,7 +9,7 @@ import difflib
 from desdemona._version import __version__
 from desdemona.cli import commands
 from desdemona.cli.exits import EXIT_CODES, SEE_EXIT_CODES
-from desdemona.control.predictors import LIVE
+from desdemona.control import predictors
 from desdemona.machine.configs import CONFIGURATIONS
 from desdemona.machine.params import BUILTIN_SETS
 from desdemona.occupant import perception as perception_models
@@ -137,16 +137,15 @@ def build_parser() -> argparse.ArgumentParser:
                              "--replan 0.4 --delay)")
     online.add_argument("--deadline", type=float, default=None, metavar="SECONDS",
                         help="compute budget per plan; a later plan is not used (default: T_c)")
-    online.add_argument("--predictor", choices=("perfect", "hold", "linear", "route", "forecast"), default="perfect",
-                        help="how the future path is guessed from what is known now: the true future "
-                             "(perfect), the present held (hold), extrapolated (linear), from a "
-                             "recording of the same course aligned to the live signal (route, needs "
-                             "--reference), or the vehicle's own forecasts, its model run ahead "
-                             "(forecast, needs --forecast) (default: perfect)")
-    online.add_argument("--reference", metavar="PROFILE_OR_CSV", default=None,
-                        help="with --predictor route: a recording of the course (same channels as the path)")
-    online.add_argument("--forecast", metavar="FILE", default=None,
-                        help="with --predictor forecast: the vehicle's forecasts, a CSV file with columns "
+    online.add_argument("--predictor", choices=predictors.names(), default="perfect",
+                        help=f"how the future path is guessed from what is known now: {predictors.describe()} "
+                             "(default: perfect)")
+    online.add_argument(predictors.REFERENCE.option, metavar=predictors.REFERENCE.metavar, default=None,
+                        help=f"with --predictor {' or '.join(predictors.users(predictors.REFERENCE))}: "
+                             f"{predictors.REFERENCE.what}")
+    online.add_argument(predictors.FORECAST.option, metavar=predictors.FORECAST.metavar, default=None,
+                        help=f"with --predictor {' or '.join(predictors.users(predictors.FORECAST))}: the "
+                             "vehicle's forecasts, a CSV file with columns "
                              "t0,t,wx,wy,wz,fx,fy,fz (or t0,t,M, as the path): for each issue time t0, the "
                              "forecast samples from t = t0 on, times on the motion file's clock (README, "
                              "'Predictors')")
@@ -458,11 +457,12 @@ def _add_serve_parser(sub) -> None:
     serve.add_argument("--channels", type=int, choices=(6, 1), default=None,
                        help="what the host sends: 6, the path S; 1, the modulus M (default: 1 on dfs and "
                             "dfs-yaw, 6 elsewhere)")
-    serve.add_argument("--predictor", choices=LIVE, default="hold",
-                       help="how the controller sees ahead: hold (default), linear, route (with --reference), "
-                            "forecast (the forecast block the host sends with its motion)")
-    serve.add_argument("--reference", metavar="PROFILE_OR_CSV", default=None,
-                       help="with --predictor route: a recording of the course")
+    serve.add_argument("--predictor", choices=predictors.names(live=True), default=predictors.LIVE_DEFAULT,
+                       help=f"how the controller sees ahead: {predictors.describe(live=True)} "
+                            f"(default: {predictors.LIVE_DEFAULT})")
+    serve.add_argument(predictors.REFERENCE.option, metavar=predictors.REFERENCE.metavar, default=None,
+                       help=f"with --predictor {' or '.join(predictors.users(predictors.REFERENCE))}: "
+                            f"{predictors.REFERENCE.what}")
     serve.add_argument("--horizon", type=float, default=None, metavar="SECONDS",
                        help="T_h (default: 2 on dfs and dfs-yaw; 4 with the track)")
     serve.add_argument("--reach", type=float, default=None, metavar="SECONDS",
