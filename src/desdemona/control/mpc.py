@@ -202,10 +202,6 @@ class MPCOptions:
         return self.step * np.array(sizes, dtype=float)
 
 
-#: The fields each plan's :class:`ProblemOptions` takes from :class:`MPCOptions`: all they share, by name.
-SHARED_OPTIONS = sorted({f.name for f in dataclasses.fields(MPCOptions)} & {f.name for f in dataclasses.fields(ProblemOptions)})
-
-
 @dataclass(frozen=True)
 class Command:
     """What one cycle returns: the joint accelerations of its steps, and why.
@@ -275,7 +271,8 @@ class MPC:
         placeholder = DesiredPath("preview", t, None if model.config.modulus_cost else np.zeros((len(t), 6)),
                                   weights=weights or (ALIGNED_WEIGHTS if model.config.aligned else (1.0,) * 6),
                                   modulus=np.zeros(len(t)) if model.config.modulus_cost else None)
-        shared = {name: getattr(options, name) for name in SHARED_OPTIONS}  # the same name, the same meaning
+        mine = {f.name for f in dataclasses.fields(options)}  # the fields both have: the same name, the same meaning
+        shared = {f.name: getattr(options, f.name) for f in dataclasses.fields(ProblemOptions) if f.name in mine}
         shared["null_weight"] = options.null_weight if options.null_weight is not None or options.plan_method == "rti" else 0.0
         problem_options = ProblemOptions(h_u=options.step, initial="given", initial_state=(np.zeros(model.n),
             np.zeros(model.n)), tol=1e-6, stoppable=True, brake_step=options.step, initial_filter="given",
