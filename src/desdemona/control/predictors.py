@@ -67,7 +67,7 @@ HOLD_BAND = 2.0
 #: washout's 9.2, correlation -0.58, false rotation 213 deg/s). A modulus path (``dfs``) is held as it
 #: is: there a modulus below g is planned as g and cannot turn the cabin over, and the arm's spin-up
 #: needs a sustained modulus seen early (measured worse with the persistence on 6 of the 7 corpus
-#: cases); see docs/benchmarks.md, "Hold predictor".
+#: cases); see docs/benchmarks/hold-predictor.md.
 HOLD_PERSISTENCE = 0.5
 
 #: The share of a channel's present departure from rest below which its cue counts as begun afresh.
@@ -318,7 +318,7 @@ class Need:
 #: A recording of the same course (``route``).
 REFERENCE = Need("--reference", "PROFILE_OR_CSV", "a recording of the same course (same channels as the path)")
 #: The vehicle's forecasts (``forecast``): a file on-line, the block a simulator host sends in a live session.
-FORECAST = Need("--forecast", "FILE", "the vehicle's forecasts (README, 'Predictors')",
+FORECAST = Need("--forecast", "FILE", "the vehicle's forecasts (docs/guide/online.md#predictors)",
                 live="the forecast block the host sends with its motion")
 
 

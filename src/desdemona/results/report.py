@@ -125,8 +125,7 @@ def run_description(path, config) -> dict:
     """The "path" and "configuration" entries of a summary.json."""
     return {"path": {"name": path.name, "description": path.description, "duration_s": path.duration,
                      "weights": list(path.weights)},
-            "configuration": {"name": config.name, "free_joints": list(config.joint_names),
-                              "held_positions": list(config.fixed)}}
+            "configuration": config.summary()}
 
 
 def write(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False,
