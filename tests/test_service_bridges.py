@@ -377,3 +377,15 @@ def test_a_frozen_simulator_never_starts():
         with pytest.raises(ProfileError, match="never changed: the simulation is paused"):
             flightgear.run(("127.0.0.1", port), rx.to, wait=1.2)
     assert not rx.got
+
+
+def test_a_silent_simulator_stops_the_forwarding_once():
+    """Forwarding, then no packet for a second: said once; the next packets are checked afresh."""
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sock:
+        link = bridge.Bridge(sock, ("127.0.0.1", 9), "stream", xplane.FIXES, say=lambda text: None)
+        link.forwarding, link.watch.last = True, (10.0, xp_sample(10.0))
+        link.quiet(10.5)
+        assert link.forwarding and not link.stops
+        link.quiet(11.2)
+        link.quiet(12.0)
+        assert not link.forwarding and len(link.stops) == 1 and "no packet for 1.2" in link.stops[0][1]

@@ -50,7 +50,7 @@ def run_host_flightgear(args) -> int:
     except OSError as exc:
         raise UserError(f"--listen {args.listen} / --to {args.to}: {exc.strerror or exc}") from None
     _report(result, args.to)
-    return 0
+    return result.get("stopped_by", 0)
 
 
 def run_host_xplane(args) -> int:
@@ -68,4 +68,4 @@ def run_host_xplane(args) -> int:
     except OSError as exc:
         raise UserError(f"--listen {args.listen} / --xplane {args.xplane}: {exc.strerror or exc}") from None
     _report(result, args.to)
-    return 0
+    return result.get("stopped_by", 0)

@@ -50,6 +50,9 @@ FROZEN_SECONDS = 0.5
 #: :data:`JUMP_MARGIN` [m], is a reset or a jump (a new position), not flight.
 JUMP_SPEED_FACTOR = 3.0
 JUMP_MARGIN = 50.0
+#: [s] no packet this long while forwarding: the simulator stopped sending (said once; ``serve``'s own
+#: watchdog parks the machine after its timeout, whatever the bridge says)
+QUIET_SECONDS = 1.0
 #: The WGS 84 ellipsoid: the aircraft's place as a point (the jump check), from latitude and longitude.
 _A, _E2 = 6378137.0, 6.69437999014e-3
 
@@ -220,14 +223,23 @@ class Bridge:
             problem = self.watch.problem(arrived, sample, S)
             if problem is None:
                 self._forward(S, arrived)
-                return
-            self.forwarding = False
-            self.window = []
-            self.stops.append((arrived - self.begun, problem))
-            self.say(f"stopped forwarding at {arrived - self.begun:.2f} s: {problem}; the service parks the "
-                     f"machine when it hears nothing; waiting for the stream to run and pass the start check")
+            else:
+                self._stop(arrived, problem)
             return
         self._wait(sample, S, arrived)
+
+    def quiet(self, now: float) -> None:
+        """Nothing came for a while: past :data:`QUIET_SECONDS` while forwarding, say so (the simulator
+        stopped or went away) and check the stream afresh when it comes back."""
+        if self.forwarding and self.watch.last is not None and now - self.watch.last[0] >= QUIET_SECONDS:
+            self._stop(now, f"no packet for {now - self.watch.last[0]:.2f} s: the simulator stopped sending")
+
+    def _stop(self, now: float, problem: str) -> None:
+        self.forwarding = False
+        self.window = []
+        self.stops.append((now - self.begun, problem))
+        self.say(f"stopped forwarding at {now - self.begun:.2f} s: {problem}; the service parks the "
+                 f"machine when it hears nothing; waiting for the stream to run and pass the start check")
 
     def _wait(self, sample: Sample, S: np.ndarray, arrived: float) -> None:
         """Collect the stream while it runs; start forwarding once its first seconds pass the check."""
@@ -280,8 +292,17 @@ def run(sock: socket.socket, decode, bridge: Bridge, wait: float, duration: floa
     """Receive the simulator's packets on ``sock`` (bound by the caller) and hand each decoded one to
     ``bridge``, until ``duration`` [s] (None: until stopped) or Ctrl-C. ``wait`` [s]: the longest the
     stream may take to pass the start check; ProfileError beyond it, saying what came. ``idle()`` is
-    called when nothing came for a fifth of a second (X-Plane: subscribe again)."""
+    called when nothing came for a fifth of a second (X-Plane: subscribe again). Ctrl-C ends it with
+    the result, ``stopped_by`` the exit code it asks for (130, 143)."""
     sock.settimeout(0.2)
+    try:
+        _receive(sock, decode, bridge, wait, duration, idle)
+    except (guard.Interrupted, KeyboardInterrupt) as stop:  # Ctrl-C: the session's end, with its report
+        return {**bridge.result(), "stopped_by": getattr(stop, "code", 130)}
+    return bridge.result()
+
+
+def _receive(sock: socket.socket, decode, bridge: Bridge, wait: float, duration: float | None, idle) -> None:
     while duration is None or bridge.clock() - bridge.begun < duration:
         guard.check()
         if not bridge.starts and bridge.clock() - bridge.begun > wait:
@@ -289,6 +310,7 @@ def run(sock: socket.socket, decode, bridge: Bridge, wait: float, duration: floa
         try:
             data = sock.recv(65536)
         except TimeoutError:
+            bridge.quiet(bridge.clock())
             if idle is not None:
                 idle()
             continue
@@ -301,7 +323,6 @@ def run(sock: socket.socket, decode, bridge: Bridge, wait: float, duration: floa
             continue
         if sample is not None:
             bridge.take(sample, arrived)
-    return bridge.result()
 
 
 def _never_started(bridge: Bridge, wait: float) -> str:
