@@ -9,7 +9,7 @@ It needs Debian's FlightGear (``apt-get install -y --no-install-recommends fligh
 (``pip install 'desdemona[flightgear]'``). It is a benchmark, not a test: FlightGear takes 2 GB and most
 of a core, and its first packets come 10-70 s after launch.
 
-Five processes, as a user starts them (docs/simulators.md): an X server without a screen (``Xvfb``);
+Five processes, as a user starts them (docs/guide/simulators.md): an X server without a screen (``Xvfb``);
 the motion system's stand-in (``desdemona machine``); the service (``desdemona serve``, ending a few
 seconds after the host has gone quiet and the machine is parked); the bridge (``desdemona host
 flightgear``); and FlightGear, the Cessna 172 started in the air, with the scene's drawing switched off
