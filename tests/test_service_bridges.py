@@ -17,7 +17,8 @@ import pytest
 
 from desdemona.cli import main
 from desdemona.profiles.path import G, ProfileError
-from desdemona.service import bridge, protocol, xplane
+from desdemona.service import bridge, xplane
+from tests.test_service_hosts import Receiver
 
 fdm_v24 = pytest.importorskip("flightgear_python.fdm_v24", reason="host flightgear needs flightgear-python")
 from desdemona.service import flightgear  # noqa: E402
@@ -210,36 +211,6 @@ def test_watch_sees_rates_held_in_deg_s():
 
 
 # -- bridges on loopback -------------------------------------------------------------------------------
-
-class Receiver:
-    """The service's end: a UDP socket on 127.0.0.1 read by a thread, the Motion messages kept."""
-
-    def __init__(self):
-        self.socket = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-        self.socket.bind(("127.0.0.1", 0))
-        self.socket.settimeout(0.05)
-        self.to = self.socket.getsockname()
-        self.got: list[tuple[float, protocol.Motion]] = []
-        self.stop = threading.Event()
-        self.thread = threading.Thread(target=self._read, daemon=True)
-
-    def _read(self):
-        while not self.stop.is_set():
-            try:
-                self.got.append((time.monotonic(), protocol.unpack(self.socket.recv(65536))))
-            except TimeoutError:
-                continue
-
-    def __enter__(self):
-        self.thread.start()
-        return self
-
-    def __exit__(self, *exc):
-        time.sleep(0.05)
-        self.stop.set()
-        self.thread.join(timeout=2)
-        self.socket.close()
-
 
 def free_port() -> int:
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
