@@ -360,3 +360,43 @@ def test_a_silent_simulator_stops_the_forwarding_once():
         link.quiet(11.2)
         link.quiet(12.0)
         assert not link.forwarding and len(link.stops) == 1 and "no packet for 1.2" in link.stops[0][1]
+
+
+@pytestmark_realtime
+def test_a_stream_of_nan_never_starts_and_says_so():
+    port = free_port()
+    packets = [fdm_packet(alt=1000.0 + k, accel_ft=(0.0, 0.0, float("nan"))) for k in range(150)]
+    with Receiver() as rx:
+        send_at(packets, ("127.0.0.1", port), 100.0)
+        with pytest.raises(ProfileError, match="hold NaN or inf"):
+            flightgear.run(("127.0.0.1", port), rx.to, wait=1.2)
+    assert not rx.got
+
+
+@pytestmark_realtime
+def test_ctrl_c_ends_the_bridge_with_its_report():
+    """Ctrl-C is how a session through a bridge ends: the counts are printed, the exit code is 130."""
+    import signal
+    import subprocess
+    import sys
+
+    port = free_port()
+    proc = subprocess.Popen([sys.executable, "-m", "desdemona", "host", "flightgear", "--listen",
+                             f"127.0.0.1:{port}", "--to", "127.0.0.1:9", "--wait", "30"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    sim = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    send = threading.Thread(target=lambda: [(sim.sendto(fdm_packet(), ("127.0.0.1", port)), time.sleep(0.1))
+                                            for _ in range(100) if proc.poll() is None], daemon=True)
+    try:
+        assert "reading FlightGear's native FDM" in proc.stderr.readline()
+        send.start()  # a packet every 0.1 s until it reads
+        assert "the first packet came" in proc.stderr.readline()
+        proc.send_signal(signal.SIGINT)
+        out, _ = proc.communicate(timeout=10)
+        send.join(timeout=1)
+    finally:
+        sim.close()
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode == 128 + signal.SIGINT and out.startswith("forwarded 0 of ")

@@ -218,6 +218,9 @@ class Bridge:
     def take(self, sample: Sample, arrived: float) -> None:
         """One decoded sample that arrived at ``arrived`` [s, the bridge's clock]."""
         self.counts["samples"] += 1
+        if self.counts["samples"] == 1:
+            self.say("the first packet came: waiting until the motion runs and its first still second passes "
+                     "the start check")
         S = sample.cabin()
         if self.forwarding:
             problem = self.watch.problem(arrived, sample, S)
@@ -243,7 +246,9 @@ class Bridge:
 
     def _wait(self, sample: Sample, S: np.ndarray, arrived: float) -> None:
         """Collect the stream while it runs; start forwarding once its first seconds pass the check."""
-        if self.watch.frozen(arrived, sample) or not np.all(np.isfinite(S)):
+        finite = bool(np.all(np.isfinite(S)))
+        self.counts["not a number"] += not finite
+        if self.watch.frozen(arrived, sample) or not finite:
             self.window = []  # placeholders until the simulation runs (FlightGear's first packets), a pause
             self.watch.last = (arrived, sample)
             return
@@ -332,6 +337,9 @@ def _never_started(bridge: Bridge, wait: float) -> str:
     if not counts["samples"]:
         dropped = "; ".join(f"{k[len('dropped: '):]} ({v})" for k, v in counts.items() if k.startswith("dropped"))
         return f"{bridge.name}: {counts['packets']} packets in {wait:g} s, none of its format: {dropped}"
+    if counts["not a number"]:
+        return (f"{bridge.name}: {counts['not a number']} of its {counts['samples']} samples in {wait:g} s hold "
+                f"NaN or inf: no motion to forward")
     if bridge.watch.frozen(bridge.clock(), bridge.watch.last[1]):
         return (f"{bridge.name}: {counts['samples']} packets in {wait:g} s, but its motion never changed: "
                 f"the simulation is paused or not yet running")
