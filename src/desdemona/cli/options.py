@@ -7,7 +7,7 @@ import argparse
 import difflib
 
 from desdemona._version import __version__
-from desdemona.cli import bridges, commands, serving
+from desdemona.cli import bridges, commands, serviceoptions, serving
 from desdemona.cli.exits import EXIT_CODES, SEE_EXIT_CODES
 from desdemona.control import predictors
 from desdemona.machine.configs import CONFIGURATIONS
@@ -504,48 +504,8 @@ def _add_machine_parser(sub) -> None:
         epilog="Exit codes: 0 passed; 1 a violation, a timing fault, or the setpoints ended while the machine "
                "moved (it braked on its own); 2 bad input; 130 interrupted.")
     _add_machine_options(machine, default_config="dfs")
-    machine.add_argument("--listen", required=True, metavar="HOST:PORT",
-                         help="where the setpoints arrive, e.g. 127.0.0.1:5501; States go back to their sender")
-    machine.add_argument("--out", required=True, metavar="DIR", help="folder for what was received, made and checked")
-    machine.add_argument("--idle", type=float, default=2.0, metavar="SECONDS",
-                         help="stop this long after the last datagram, once at rest (default: 2)")
-    machine.add_argument("--duration", type=float, default=None, metavar="SECONDS",
-                         help="stop after this long (default: when idle or stopped)")
-    machine.add_argument("--delay", type=float, default=None, metavar="SECONDS",
-                         help="each servo's transport delay (default: 0.010)")
-    machine.add_argument("--bandwidth", type=float, default=None, metavar="HZ",
-                         help="each servo's position loop, for what the fed-forward rate and acceleration do "
-                              "not carry (default: 5)")
-    machine.add_argument("--noise", type=float, nargs=2, default=None, metavar=("POSITION", "RATE"),
-                         help="measurement noise, one standard deviation [rad or m, rad/s or m/s] "
-                              "(default: 1e-5 1e-4)")
-    machine.add_argument("--state-rate", type=float, default=100.0, metavar="HZ", dest="state_rate",
-                         help="State messages a second, and rows of motion.csv (default: 100)")
-    machine.add_argument("--timeout", type=int, default=3, metavar="CYCLES",
-                         help="how far behind the setpoints' time line it runs: no setpoint for this many "
-                              "cycles and it brakes on its own (default: 3)")
-    machine.add_argument("--late", type=float, default=1.5, metavar="CYCLES",
-                         help="a setpoint this long after its cycle was due is a timing fault (default: 1.5)")
-    machine.add_argument("--fault", default=None, metavar="AT:JOINT",
-                         help="inject a drive fault on JOINT (yaw, track, heave, outer_gimbal, inner_gimbal, "
-                              "cabin) AT seconds after the first setpoint")
-    machine.add_argument("--operator", default="127.0.0.1", metavar="HOST",
-                         help="the host whose Commands it takes (default: 127.0.0.1)")
-    machine.add_argument("--seed", type=int, default=0, help="seed of the measurement noise (default: 0)")
-    machine.add_argument("--state-outage", default=None, metavar="START,LENGTH", dest="state_outage",
-                         help="send no State for LENGTH seconds from START seconds after the first setpoint "
-                              "(a test of the service's loss of them)")
-    machine.set_defaults(run=serving.run_machine)
-
-    command = sub.add_parser(
-        "command", help="an operator's command to 'serve' or 'machine': pause, park, resume, estop, reset",
-        description="Send one Command (docs/protocol.md): pause (the service parks and holds until resume), "
-                    "park, resume, estop (an emergency stop: the fastest stop; no motion until reset), reset "
-                    "(clears the motion system's fault or emergency stop, at rest).")
-    command.add_argument("action", choices=("pause", "park", "resume", "estop", "reset"))
-    command.add_argument("--to", required=True, metavar="HOST:PORT",
-                         help="the service's --listen or the machine's --listen address")
-    command.set_defaults(run=serving.run_command)
+    serviceoptions.add_machine_arguments(machine)
+    serviceoptions.add_command_parser(sub)
 
 
 def _add_host_parser(sub) -> None:
