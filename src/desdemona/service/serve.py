@@ -354,10 +354,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             session.record(k, compute=sent - began, age=np.nan if inbox.arrived is None else began - inbox.arrived,
                            latency=sent - inbox.arrived if answered else np.nan)
             if log is not None:
-                state = link.newest
-                log.cycle(session.rows[-1], session.starts[-1][:2], None if state is None else (
-                    *(model.config.select(x) for x in (state.position, state.rate)), state.applied_time),
-                    session.events)
+                _log(log, session, link.newest, model.config)
             k += 1
             quiet = inbox.arrived is not None and clock() - inbox.arrived > (serving.quiet_end or np.inf)
             if ((stops and (session.status == "parked" or len(stops) > 1))
@@ -370,6 +367,13 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
                   dropped=inbox.dropped + link.dropped, stopped_by=stops[0] if stops else None,
                   deadline=controller.deadline, offset=offset, events=session.events, states=link.received,
                   reanchored=session.reanchored, breaks=session.breaks)
+
+
+def _log(log, session: _Session, state: protocol.MachineState | None, config) -> None:
+    """The cycle just recorded, into the session's log as it goes: commanded and measured beside."""
+    measured = None if state is None else (config.select(state.position), config.select(state.rate),
+                                           state.applied_time)
+    log.cycle(session.rows[-1], session.starts[-1][:2], measured, session.events)
 
 
 def _send(sock: socket.socket, message, to, inbox: _Inbox) -> None:
