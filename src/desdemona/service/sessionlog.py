@@ -78,8 +78,8 @@ def describe(summary: dict) -> str:
 
 class LiveLog:
     """The session's log written as it goes into its result folder ``out``: ``session.csv`` (every cycle:
-    the columns of :func:`session_table`, then per free joint the commanded position and rate at the
-    cycle's start and the newest State's measured ones with the time on the setpoints' time line they
+    the columns of :func:`session_table`, then the free joints' commanded positions and rates at the
+    cycle's start and the newest State's measured ones, with the time on the setpoints' time line they
     were measured at) and ``events.csv``, each row appended and flushed, so that a service that is
     killed leaves them to its last cycle; ``summary.json`` marks the folder as a result of ours being
     written (``"live": true``), so that the session's end replaces it with the whole result."""
@@ -94,8 +94,8 @@ class LiveLog:
                                                            "written_by": "desdemona serve, as it goes"}))
         self.session = open(self.out / "session.csv", "w")  # noqa: SIM115 -- appended to cycle by cycle
         self.events = open(self.out / "events.csv", "w")  # noqa: SIM115
-        joints = [f"{kind}_{name}_{q}" for kind in ("commanded", "measured") for name in names
-                  for q in ("position", "rate")]
+        joints = [f"{kind}_{name}_{q}" for kind in ("commanded", "measured") for q in ("position", "rate")
+                  for name in names]
         self.session.write(",".join(["t,status,command,message_age_s,latency_s,compute_time_s,reason,machine,"
                                      "tracking_use", *joints, "measured_at"]) + "\n")
         self.events.write("t,what,detail\n")
