@@ -442,7 +442,7 @@ class _Session:
             return ""
         if link.lost(now):
             return self._machine(t, f"no State from the machine for more than {link.lost_after:g} s")
-        commanded = commanded_at(self.starts, self.u, [*self.jerks], self.h)
+        commanded = commanded_at(self.starts, self.u, self.jerks, self.h)
         tracking = link.tracking(lambda tau: commanded(tau) if link.newest.applied is not None
                                  and link.newest.applied >= self.trusted_from else None)
         self.tracking, self.machine_status = tracking.use, tracking.status
