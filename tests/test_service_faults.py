@@ -41,6 +41,7 @@ class Loop:
 
     def __init__(self, folder: Path, profile: str = "dfs-catapult", machine=(), serve=(), config: str = "dfs"):
         self.folder, self.machine_port, self.serve_port = folder, _port(), _port()
+        folder.mkdir(parents=True, exist_ok=True)  # serve's --out needs its parent; the stand-in's makes it
         self.machine = subprocess.Popen(
             [*RUN, "machine", "--config", config, "--listen", f"{LOOPBACK}:{self.machine_port}",
              "--out", str(folder / "machine"), "--idle", "1", "--duration", str(WAIT), "--timeout", str(QUEUE),
