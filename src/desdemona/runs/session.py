@@ -200,6 +200,9 @@ def thesis(path: DesiredPath, model: Model, choices: Choices = Choices()) -> Ses
     if (choices.initial, choices.initial_state, choices.final, choices.weights) != (None, None, "centre", None):
         raise ChoiceError("--method thesis reproduces the thesis: its weights are the path's and its start "
                          "free; drop --initial, --initial-state, --final and --weights")
+    if path.S_d is None:
+        raise ChoiceError(f"--method thesis fits the six channels of a full path (thesis 5.2); {path.name} gives "
+                          "only the modulus: drop --method thesis (ours follows a modulus on dfs)")
     _check_h_u(choices.h_u, path)
     cued(path, model, choices)  # the channels checked; the thesis' method cues the path itself
     path = path.with_gain(choices.gain)
