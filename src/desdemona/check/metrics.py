@@ -433,7 +433,7 @@ class Metrics:
         """``lag 0.12 s``, or where the search found its best at its window's edge, which says only that
         the lag is that long or longer (or no lag fits): ``lag >= 2.00 s at the search's edge``."""
         if abs(lag) < self.lag_window_s - 1e-9:
-            return f"lag {lag:z.2f} s"
+            return f"lag {shown(lag):z.2f} s"
         return f"lag {'>=' if lag > 0 else '<='} {lag:z.2f} s at the search's edge"
 
     def headline(self) -> str:
@@ -441,7 +441,7 @@ class Metrics:
         parts = []
         if self.rms is not None:
             i = int(np.argmax(self.rms))
-            parts.append(f"worst RMS {self.rms[i]:.3g} {CHANNEL_UNITS[i]} ({CHANNELS[i]})")
+            parts.append(f"worst RMS {shown(self.rms[i]):.3g} {CHANNEL_UNITS[i]} ({CHANNELS[i]})")
             if np.isfinite(self.correlation[i]):
                 parts.append(f"correlation {self.correlation[i]:.2f}, {self._lag(self.lag_s[i])} ({CHANNELS[i]})")
             i = int(np.argmax(self.above_threshold_pct))
@@ -449,23 +449,23 @@ class Metrics:
             rotation = self.peak_false_cue[:3]
             if np.isfinite(rotation).any():
                 i = int(np.nanargmax(rotation))
-                parts.append(f"peak false rotation {math.degrees(rotation[i]):.3g} deg/s ({CHANNELS[i]})")
+                parts.append(f"peak false rotation {shown(math.degrees(rotation[i])):.3g} deg/s ({CHANNELS[i]})")
         elif self.modulus_rms is not None:
-            parts.append(f"RMS(M - M_d) {self.modulus_rms:.3g} m/s^2")
+            parts.append(f"RMS(M - M_d) {shown(self.modulus_rms):.3g} m/s^2")
             if self.modulus_correlation is not None and np.isfinite(self.modulus_correlation):
                 parts.append(f"correlation {self.modulus_correlation:.2f}, {self._lag(self.modulus_lag_s)}")
             i = int(np.argmax(self.rotation_peak))
-            parts.append(f"peak felt rotation {math.degrees(self.rotation_peak[i]):.3g} deg/s ({CHANNELS[i]})")
+            parts.append(f"peak felt rotation {shown(math.degrees(self.rotation_peak[i])):.3g} deg/s ({CHANNELS[i]})")
         if np.isfinite(self.direction_rms):
-            parts.append(f"felt direction off by {math.degrees(self.direction_rms):.3g} deg RMS, "
-                         f"{math.degrees(self.direction_peak):.3g} deg peak (against {self.direction_reference})")
+            parts.append(f"felt direction off by {shown(math.degrees(self.direction_rms)):.3g} deg RMS, "
+                         f"{shown(math.degrees(self.direction_peak)):.3g} deg peak (against {self.direction_reference})")
         if len(self.joints):
             k = int(np.argmax(self.reversals_per_s))
-            parts.append(f"max {self.reversals_per_s[k]:.3g} acceleration reversals/s ({self.joints[k]}, "
+            parts.append(f"max {shown(self.reversals_per_s[k]):.3g} acceleration reversals/s ({self.joints[k]}, "
                          f"swings over {100 * REVERSAL_SHARE:.0f}% of its peak)")
             k = int(np.argmax(np.abs(self.qd_start)))
             unit = joint_units(self.joints)[k]
-            parts.append(f"largest rate at start {abs(self.qd_start[k]):.3g} {unit}/s ({self.joints[k]})")
+            parts.append(f"largest rate at start {shown(abs(self.qd_start[k])):.3g} {unit}/s ({self.joints[k]})")
         return ", ".join(parts)
 
 
@@ -519,6 +519,21 @@ def of_trajectory(traj, joint_names, vestibular: perception.VestibularModel | No
     """All metrics of a :class:`~desdemona.check.simulate.Trajectory` (free joints named ``joint_names``)."""
     return of_arrays(traj.t, traj.S, traj.S_d, traj.qdd, traj.qd, joint_names, traj.M, traj.M_d,
                      vestibular, lag_window)
+
+
+#: A printed figure smaller than this in magnitude, in its printed unit (m/s^2, rad/s or deg/s, s,
+#: deg, %, 1/s), is printed as 0: it is the arithmetic's round-off, not a motion. Every figure that
+#: means something here is 1e-3 or more in these units (the smallest perception threshold, 0.5 deg/s,
+#: is 9e-3 rad/s), and nothing is resolved below 1e-8 (IPOPT's tolerance); double precision leaves
+#: 1e-16 of a value's size per operation, so a channel that should be 0 reads 1e-30..1e-15 (a false
+#: rotation of 4.89e-22 deg/s, a lag of 1.5e-16 s). Only what is printed is rounded: summary.json keeps
+#: every figure as computed.
+ROUND_OFF = 1e-9
+
+
+def shown(value):
+    """``value`` as printed: 0 where its magnitude is below :data:`ROUND_OFF`; None stays None."""
+    return value if value is None or not abs(value) < ROUND_OFF else 0.0
 
 
 def _plain(value) -> float | None:

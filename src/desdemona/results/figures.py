@@ -135,7 +135,7 @@ def _joints_figure(traj, summary: dict):
             q, qd, label = traj.q[:, joints.index(name)], traj.qd[:, joints.index(name)], name
         else:
             q, qd = np.full(len(traj.t), held[k]), np.zeros(len(traj.t))
-            label = f"{name} (held)"
+            label = f"{name}\n(held)"  # on one line "outer_gimbal (held) [deg]" ran past its axes
         axes[k, 0].plot(traj.t, q * scale)
         axes[k, 0].set_ylabel(f"{label} [{unit}]")
         if limits[name]["position"] is not None:

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from desdemona import profiles
+from desdemona.check import metrics
 from desdemona.check.simulate import LimitViolation
 from desdemona.cueing.offline import OptimizeOptions, optimize
 from desdemona.machine.model import Model
@@ -268,11 +269,6 @@ def _indexed_call(item):
     return index, function(*args)
 
 
-def _negligible(value: float | None, below: float = 1e-3) -> float | None:
-    """0 for a value that is round-off (a false rotation of 1e-20 deg/s on a path without rotation)."""
-    return 0.0 if value is not None and abs(value) < below else value
-
-
 def table(results: list[JobResult]) -> str:
     """The batch's printed table: per job its status, RMS, worst limit use, what is felt (peak false
     rotation [deg/s], worst felt force error RMS [m/s^2], most acceleration reversals per second) and
@@ -286,7 +282,7 @@ def table(results: list[JobResult]) -> str:
     for r in results:
         felt = r.felt or {}
         lines.append(f"{r.profile:<18}{r.config:<18}{r.status:<20}{cell(r.rms, '.4g'):>10}"
-                     f"{cell(r.worst_use, '.4f'):>11}{cell(_negligible(felt.get('peak_false_rotation_deg_s')), '.3g'):>11}"
+                     f"{cell(r.worst_use, '.4f'):>11}{cell(metrics.shown(felt.get('peak_false_rotation_deg_s')), '.3g'):>11}"
                      f"{cell(felt.get('felt_force_rms_max'), '.3g'):>9}"
                      f"{cell(felt.get('reversals_per_s_max'), '.3g'):>9}{r.seconds:>10.2f}")
         if r.message:
