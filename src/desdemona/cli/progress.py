@@ -25,10 +25,10 @@ class Progress:
     """A command's progress lines (see the module). ``doing`` names the work in hand, for the clock;
     :meth:`close` (or leaving the ``with`` block) stops the clock."""
 
-    def __init__(self, doing: str = "preparing", every: float = EVERY, tty: bool | None = None):
+    def __init__(self, doing: str = "preparing", every: float | None = None, tty: bool | None = None):
         self.begin = self.last = time.perf_counter()
         self.tty = sys.stderr.isatty() if tty is None else tty
-        self.doing, self.every = doing, every
+        self.doing, self.every = doing, EVERY if every is None else every
         self.drawn = 0.0  # when the terminal's line was last drawn
         self._ended = threading.Event()
         self._clock = threading.Thread(target=self._tick, name="desdemona-progress", daemon=True)

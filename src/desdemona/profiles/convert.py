@@ -131,7 +131,7 @@ def gaussian_lowpass(X, rate_hz: float, new_rate_hz: float) -> np.ndarray:
 
     Why a Gaussian and not a Butterworth: its impulse response is positive and symmetric, so the
     filter neither delays nor rings. A step stays monotone between its two levels, a constant stays
-    exactly that constant, and nothing comes before a change that the sensor did not see (a zero-phase
+    that constant (zero exactly), and nothing comes before a change that the sensor did not see (a zero-phase
     Butterworth overshot a 0.3 g step by 8.6 % and dipped before it: cues nobody asked for). The price is
     a softer edge: the gain falls from 0.91 at f_N / 5 to 0.1 at f_N."""
     X = np.asarray(X, dtype=float)
