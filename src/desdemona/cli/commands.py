@@ -305,7 +305,7 @@ def _forecast(args, path):
     from desdemona.profiles import forecast
 
     if (args.predictor == "forecast") != (args.forecast is not None):
-        raise UserError("--predictor forecast needs --forecast FILE, the vehicle's forecasts (README, 'Predictors')"
+        raise UserError("--predictor forecast needs --forecast FILE, the vehicle's forecasts (docs/guide/online.md#predictors)"
                         if args.forecast is None else "--forecast is used only with --predictor forecast")
     if args.forecast is None:
         return None

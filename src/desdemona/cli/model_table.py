@@ -25,9 +25,9 @@ def describe(model: Model) -> str:
             pos = "unbounded"
         else:
             pos = f"[{j.position[0] * scale:g}, {j.position[1] * scale:g}] {unit}"
-        held = "" if i in c.free else f"  held at {c.fixed[i] * scale:g} {unit}"
+        held = "" if (position := c.held.get(i)) is None else f"  held at {position * scale:g} {unit}"
         lines.append(
-            f"  {'*' if i in c.free else ' '} {f'q{i + 1} {j.name}':<{wide}}{pos:>18}"
+            f"  {'*' if position is None else ' '} {f'q{i + 1} {j.name}':<{wide}}{pos:>18}"
             f"{f'{j.velocity * scale:.4g} {unit}/s':>14}{f'{j.acceleration * scale:.4g} {unit}/s2':>16}"
             f"{f'{j.effort / 1e3:.4g} ' + ('kN*m' if rev else 'kN'):>16}{f'{j.power / 1e3:.4g} kW':>12}{held}")
     lines += ["", "Bodies:"]
