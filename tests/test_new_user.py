@@ -35,12 +35,15 @@ def _one_line(err: str) -> str:
 # ---- 1. one line, exit 2, at once --------------------------------------------------------------------
 
 @pytest.mark.parametrize("argv, words", [
-    (["optimize", "dfs-catapult", "--config", "dfs", "--method", "thesis"], "gives only the modulus"),
-    (["optimize", *QUICK, "--seed", "-1"], "--seed -1"),
-    (["optimize", *QUICK[:-3], "--starts", "1000000"], "at most 100: each start is a whole solve"),
-    (["batch", "cosine", "--configs", "yaw-track", "--starts", "1000000"], "at most 100"),
-    (["optimize", *QUICK, "--out", ""], "--out '': give a name"),
-    (["profiles", "catapult", "--csv", ""], "--csv '': give a name"),
+    pytest.param(["optimize", "dfs-catapult", "--config", "dfs", "--method", "thesis"], "gives only the modulus",
+                 id="thesis-on-a-modulus"),
+    pytest.param(["optimize", *QUICK, "--seed", "-1"], "--seed -1", id="negative-seed"),
+    pytest.param(["optimize", *QUICK[:-3], "--starts", "1000000"], "at most 100: each start is a whole solve",
+                 id="starts-bounded-optimize"),  # before: ran until killed, 16 GB of guesses
+    pytest.param(["batch", "cosine", "--configs", "yaw-track", "--starts", "1000000"], "at most 100",
+                 id="starts-bounded-batch"),
+    pytest.param(["optimize", *QUICK, "--out", ""], "--out '': give a name", id="empty-out"),
+    pytest.param(["profiles", "catapult", "--csv", ""], "--csv '': give a name", id="empty-csv"),
 ])
 def test_bad_input_is_one_line_and_exit_2_at_once(tmp_path, capsys, argv, words):
     out = [] if "--out" in argv or "--csv" in argv else ["--out", str(tmp_path / "r")]

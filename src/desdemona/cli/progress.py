@@ -108,7 +108,7 @@ class OnlineProgress(Progress):
     on a terminal, else a line every :data:`EVERY` seconds (the clock)."""
 
     def __init__(self, duration: float, tty: bool | None = None):
-        super().__init__("placing the machine for the first plan", tty=tty)
+        super().__init__("building the controller and placing the machine for its first plan", tty=tty)
         self.duration = duration
 
     def cycle(self, now: float) -> None:

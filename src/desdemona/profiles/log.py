@@ -236,8 +236,9 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     bias = gyro_bias(file, fmt, t, X, rate, logged, origin, dated) if zero_rates else None
     if bias is not None:
         X[:, :3] -= bias.omega_cabin
-    if fmt.rates is not None and (unit := turns.rate_unit_problem(t, X[:, :3], X[:, 3:], fmt.rate_unit)):
-        raise ProfileError(f"{file}: {unit}")  # before the lever arm, whose force such rates would swamp
+    # read before the lever arm, whose force such rates would swamp; said after the convention check,
+    # whose words on a log that is nowhere still come first
+    unit = fmt.rates is not None and turns.rate_unit_problem(t, X[:, :3], X[:, 3:], fmt.rate_unit)
     r_cabin = R @ np.asarray(fmt.lever_arm, dtype=float)
     if np.any(r_cabin != 0):
         X[:, 3:] = head_force(X[:, :3], X[:, 3:], r_cabin, native)
@@ -253,6 +254,8 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
             tilt = math.degrees(math.acos(min(1.0, float(turn[2, 2]))))
             X = np.column_stack([X[:, :3] @ turn.T, X[:, 3:] @ turn.T])
             notes = notes + _level_note(still, later, turn, tilt, origin, dated)
+    if unit:
+        raise ProfileError(f"{file}: {unit}")
     lo, t, X = _cropped(file, t, X, start, end, origin, dated)
     convert.check_no_crash(origin + lo + t, X[:, 3:], str(file))
     a, b = origin + lo, origin + lo + float(t[-1])
