@@ -110,12 +110,17 @@ def weighted_vertical(t, f_z) -> np.ndarray:
     return Held.of(*w_f(), step_of(t))(f_z)
 
 
-def msdv(t, a_w) -> float:
-    """sqrt(integral a_w^2 dt) [m/s^1.5] of a weighted acceleration a_w (K,) on the grid t (K,) [s]:
-    each sample held over its step (the last over the grid's step)."""
+def msdv_so_far(t, a_w) -> np.ndarray:
+    """sqrt(integral a_w^2 dt) [m/s^1.5] from the start to each sample (K,) of a weighted acceleration
+    a_w (K,) on the grid t (K,) [s]: each sample held over its step (the last over the grid's step)."""
     t = np.asarray(t, float)
     steps = np.append(np.diff(t), step_of(t))
-    return float(np.sqrt(np.sum(np.asarray(a_w, float) ** 2 * steps)))
+    return np.sqrt(np.cumsum(np.asarray(a_w, float) ** 2 * steps))
+
+
+def msdv(t, a_w) -> float:
+    """The session's MSDV [m/s^1.5]: :func:`msdv_so_far` at its end."""
+    return float(msdv_so_far(t, a_w)[-1])
 
 
 def vertical_conflict(t, f_z, tau: float = BOS_BLES["tau"]) -> np.ndarray:
