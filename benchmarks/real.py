@@ -35,8 +35,13 @@ what the occupant feels, read from the result's ``summary.json`` ("quality"):
 - felt direction RMS and peak [deg] and the peak of the part the machine made, beyond a still level
   cabin's (``made``: :func:`desdemona.check.metrics.direction_made`), peak felt rotation through the canals
   [deg/s], acceleration reversals per second of the worst joint (swings across 5 % of its peak);
+- what the occupant suffers beyond the cue (:mod:`desdemona.occupant.coriolis`,
+  :mod:`desdemona.occupant.sickness`): the peak cross-coupled angular velocity of a head nod (30 deg in
+  0.5 s, the worst of pitch, roll and yaw, started at any instant) [deg/s] and the sickness dose
+  MSDV_z of the vertical force [m/s^1.5];
 - on-line rows: the p99 compute time per cycle [ms] and the deadlines missed; and the classical
-  loop's felt force RMS, correlation, felt direction peak and felt rotation peak from the same run
+  loop's felt force RMS, correlation, felt direction peak, felt rotation peak, nod cross-coupling
+  peak and MSDV_z from the same run
   (it reads only the present sample, as ``hold``), with MPC / classical for the felt force;
 - on ``forecast`` rows, the share of the gap between ``hold`` and ``perfect`` that the forecast
   closes: (hold - forecast) / (hold - perfect) of the felt force RMS ("-" where the gap is under
@@ -195,7 +200,15 @@ def felt_figures(quality: dict | None, channel: str) -> dict:
             "direction_peak": quality["felt_direction"]["peak_deg"],
             "direction_made": quality["felt_direction"].get("made_peak_deg"),
             "rotation_peak": max((r for r in rotation if r is not None), default=None),
-            "reversals": max(reversals, default=None)}
+            "reversals": max(reversals, default=None), **suffered(quality)}
+
+
+def suffered(quality: dict) -> dict:
+    """What the occupant suffers, from a summary's ``quality`` (none where it predates them): the
+    largest peak cross-coupled angular velocity of the standard head nods [deg/s] and MSDV_z [m/s^1.5]."""
+    nods = quality.get("cross_coupling") or {}
+    peaks = [nods[name]["velocity_peak_deg_s"] for name in ("pitch", "roll", "yaw") if name in nods]
+    return {"cross_coupling": max(peaks, default=None), "msdv_z": (quality.get("sickness") or {}).get("msdv_z")}
 
 
 def shape_thresholds(path: profiles.DesiredPath, channel: str) -> float:
@@ -312,9 +325,10 @@ def cell(value, fmt: str) -> str:
 def table(rows: list[dict]) -> str:
     """The markdown table of every job's row."""
     lines = ["| case | s | configuration | mode | exit | wall [s] | wall / s | peak [MB] | felt force RMS | "
-             "corr | lag [s] | dir RMS / peak / made [deg] | rot peak [deg/s] | rev/s | p99 [ms] | missed | "
-             "classical: force RMS | corr | dir peak / made | rot peak | MPC / classical | forecast closes |",
-             "| --- " * 22 + "|"]
+             "corr | lag [s] | dir RMS / peak / made [deg] | rot peak [deg/s] | rev/s | nod x-coupling [deg/s] | "
+             "MSDV_z | p99 [ms] | missed | classical: force RMS | corr | dir peak / made | rot peak | "
+             "nod x-coupling | MSDV_z | MPC / classical | forecast closes |",
+             "| --- " * 26 + "|"]
     for r in rows:
         ratio = (r["force_rms"] / r["classical_force_rms"]
                  if r.get("force_rms") is not None and r.get("classical_force_rms") else None)
@@ -325,10 +339,12 @@ def table(rows: list[dict]) -> str:
             f"{cell(r.get('direction_rms'), '.1f')} / {cell(r.get('direction_peak'), '.0f')} / "
             f"{cell(r.get('direction_made'), '.0f')} | "
             f"{cell(r.get('rotation_peak'), '.0f')} | {cell(r.get('reversals'), '.2f')} | "
+            f"{cell(r.get('cross_coupling'), '.0f')} | {cell(r.get('msdv_z'), '.2f')} | "
             f"{cell(r.get('p99_ms'), '.1f')} | {cell(r.get('misses'), 'd')} | "
             f"{cell(r.get('classical_force_rms'), '.3f')} | {cell(r.get('classical_correlation'), '.2f')} | "
             f"{cell(r.get('classical_direction_peak'), '.0f')} / {cell(r.get('classical_direction_made'), '.0f')} | "
             f"{cell(r.get('classical_rotation_peak'), '.0f')} | "
+            f"{cell(r.get('classical_cross_coupling'), '.0f')} | {cell(r.get('classical_msdv_z'), '.2f')} | "
             f"{cell(ratio, '.2f')} | {cell(r.get('forecast_closes'), '.0%')} |")
     return "\n".join(lines)
 
