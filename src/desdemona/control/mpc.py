@@ -140,6 +140,7 @@ class MPCOptions:
     null_weight: float | None = None
     wall: float = 0.0
     spin_weight: float = 0.0
+    head_movement_weight: float = 0.0  # as ProblemOptions'
 
     def __post_init__(self):
         if self.method not in ("auto", "rti", "nlp"):
@@ -284,7 +285,7 @@ class MPC:
             margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6, stoppable=True,
             braking=options.braking, brake_step=options.step, perception=options.perception, initial_filter="given",
             steps=None if np.all(steps == options.step) else tuple(steps), jerk_weight=options.jerk_weight,
-            rotation_band=options.rotation_band, rotation_ceiling=options.rotation_ceiling, wall=options.wall, spin_weight=options.spin_weight,
+            rotation_band=options.rotation_band, rotation_ceiling=options.rotation_ceiling, wall=options.wall, spin_weight=options.spin_weight, head_movement_weight=options.head_movement_weight,
             null_weight=options.null_weight if options.null_weight is not None or options.plan_method == "rti" else 0.0)
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         if self.problem.nz:  # the horizon's perception map is built now, not in the session's first cycle
