@@ -361,6 +361,24 @@ def forecast_closes(rows: list[dict]) -> None:
             r["forecast_closes"] = (hold - r["force_rms"]) / (hold - perfect)
 
 
+def reread(record: Path, keys, key_of) -> list[dict]:
+    """The latest job of each key recorded in ``record`` (JSON lines), in the order of ``keys``; a key
+    never recorded is left out. key_of : a job's key."""
+    latest = {key_of(job): job for job in map(json.loads, record.read_text().splitlines())}
+    return [latest[key] for key in keys if key in latest]
+
+
+def recorder(record: Path, describe):
+    """The ``progress`` of :func:`desdemona.runs.batch.map_jobs`: ``[count/total] describe(job)`` on
+    stderr, and the job appended to ``record`` as it ends."""
+    def progress(count, total, job):
+        print(f"[{count}/{total}] {describe(job)}", file=sys.stderr, flush=True)
+        with open(record, "a") as fh:
+            fh.write(json.dumps(job) + "\n")
+
+    return progress
+
+
 def write_docs(text: str) -> None:
     """Replace the table between the markers in docs/benchmarks.md (append the section if missing)."""
     tables.replace_between(BEGIN, END, text, "Real inputs", DOCS)
@@ -427,15 +445,11 @@ def main(argv=None) -> int:
     spread_before = None if args.table_only else jitter()
     started = time.perf_counter()
     if args.table_only:
-        latest = {(j["case"], j["config"], j["mode"]): j for j in map(json.loads, record.read_text().splitlines())}
-        done = [latest[(c["name"], config, mode)] for c, config, mode in jobs if (c["name"], config, mode) in latest]
+        done = reread(record, [(c["name"], config, mode) for c, config, mode in jobs],
+                      lambda j: (j["case"], j["config"], j["mode"]))
     else:
-        def progress(count, total, job):
-            print(f"[{count}/{total}] {job['case']} on {job['config']} ({job['mode']}): exit {job['exit']}, "
-                  f"{job['wall_s']:.1f} s, {job['peak_mb']:.0f} MB", file=sys.stderr, flush=True)
-            with open(record, "a") as fh:
-                fh.write(json.dumps(job) + "\n")
-
+        progress = recorder(record, lambda job: f"{job['case']} on {job['config']} ({job['mode']}): exit "
+                                                f"{job['exit']}, {job['wall_s']:.1f} s, {job['peak_mb']:.0f} MB")
         done = batch.map_jobs(run_job, [(c, config, mode, str(args.out), args.timeout, args.wall,
                                          None if mode == "offline" else steps.get(config),
                                          tuple((args.offline_args if mode == "offline" else args.online_args).split()))

@@ -50,5 +50,7 @@ def test_the_session_takes_it_off_line_and_on_line_and_refuses_a_negative_one(pa
     assert session.online(path, model, chosen, horizon=1.0).options.mpc.head_movement_weight == 2.5
     with pytest.raises(session.ChoiceError, match="--head-movement-weight -1: must be a number >= 0"):
         session.offline(path, model, session.Choices(head_movement_weight=-1.0))
+    with pytest.raises(session.ChoiceError, match="drop --head-movement-weight"):
+        session.thesis(path, Model(params, "yaw-track"), chosen)
     with pytest.raises(ValueError, match="head_movement_weight"):
         ProblemOptions(head_movement_weight=math.nan)

@@ -199,8 +199,9 @@ def thesis(path: DesiredPath, model: Model, choices: Choices = Choices()) -> Ses
 
     if choices.window:
         raise ChoiceError("--method thesis solves the whole path at once: drop --window")
-    if choices.wall is not None:
-        raise ChoiceError("--method thesis reproduces the thesis' cost, which has no wall: drop --wall")
+    for option, value in (("wall", choices.wall), ("head-movement-weight", choices.head_movement_weight)):
+        if value is not None:
+            raise ChoiceError(f"--method thesis reproduces the thesis' cost, which has no such term: drop --{option}")
     if (choices.initial, choices.initial_state, choices.final, choices.weights) != (None, None, "centre", None):
         raise ChoiceError("--method thesis reproduces the thesis: its weights are the path's and its start "
                          "free; drop --initial, --initial-state, --final and --weights")
