@@ -84,7 +84,7 @@ def table(rows: list[dict]) -> str:
     lines = ["| case | configuration | weight | exit | wall [s] | felt force RMS [m/s^2] | nod x-coupling [deg/s] | "
              "MSDV_z [m/s^1.5] |", "| --- " * 8 + "|"]
     for r in rows:
-        lines.append(f"| {r['case']} | {r['config']} | {r['weight']:g} | {r['exit']} | {r['wall_s']:.0f} | "
+        lines.append(f"| {r['case']} | {r['config']} | {r['weight']:g} | {r['exit']} | {real.cell(r.get('wall_s'), '.0f')} | "
                      f"{real.cell(r.get('force_rms'), '.3f')} | {real.cell(r.get('cross_coupling'), '.1f')} | "
                      f"{real.cell(r.get('msdv_z'), '.2f')} |")
     return "\n".join(lines)
