@@ -433,7 +433,7 @@ def _add_cost_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--head-movement-weight", type=float, default=None, metavar="W", dest="head_movement_weight",
                         help="the weight of the cabin's angular velocity in space, all three axes, as it is "
                              "(a felt error of 1 m/s^2 per rad/s): a head moved in a turning cabin is "
-                             "cross-coupled, felt as a tumble (see docs/occupant.md); 0: none (default)")
+                             "cross-coupled, felt as a tumble (see docs/guide/occupant.md); 0: none (default)")
 
 
 def _add_view_option(parser) -> None:
