@@ -5,7 +5,7 @@ what an accelerometer on the seat measures, so gravity's share changes as the ca
 for the otoliths.
 
 **MSDV_z** (ISO 2631-1:1997, "Mechanical vibration and shock - Evaluation of human exposure to
-whole-body vibration - Part 1", annex D, eq. D.1): ``MSDV_z = sqrt(integral a_w(t)^2 dt)`` [m/s^1.5]
+whole-body vibration - Part 1", annex D): ``MSDV_z = sqrt(integral a_w(t)^2 dt)`` [m/s^1.5]
 over the session, with ``a_w`` the vertical acceleration through the weighting W_f. W_f is the
 standard's own filter definition (annex A: band limiting, acceleration-velocity transition and upward
 step, with f1 = 0.08 Hz, f2 = 0.63 Hz, Q1 = Q2 = 1/sqrt(2), f3 = infinity, f4 = 0.25 Hz, Q4 = 0.86,
@@ -18,7 +18,7 @@ with w_i = 2 pi f_i. It is applied to the sampled f_z as the exact response of t
 filter to the samples joined by straight lines (first-order hold), started in the steady state of
 the first sample (W_f passes no constant: a cabin at rest has a_w = 0). The hold loses
 ``sinc^2(f dt)`` of a sine of frequency f: 0.5 % at 4 Hz on a 100 Hz grid, where W_f is 1e-4.
-The standard's estimate of the share of people who may vomit (annex D, eq. D.2):
+The standard's estimate of the share of people who may vomit (annex D):
 ``MSI = K_m MSDV_z`` [%] with K_m = 1/3 for a mixed population of unadapted adults.
 
 **Subjective vertical conflict** (J. E. Bos and W. Bles, "Modelling motion sickness and subjective
@@ -29,9 +29,11 @@ vertical is f_z; the subjective vertical its first-order low-pass with time cons
 conflict ``c = f_z - LP_tau(f_z)``; its size through a Hill function ``h = (|c| / b)^n /
 (1 + (|c| / b)^n)``; the incidence ``MSI(t) = P h`` through the second-order low-pass
 ``1 / (tau_I s + 1)^2`` [%]. Parameters (:data:`BOS_BLES`): tau = 5 s, b = 0.7 m/s^2, n = 2,
-P = 85 %, tau_I = 12 min, the paper's fit to the seasickness incidence of O'Hanlon and McCauley
-(1974). Its time constants are the paper's: sessions of a few minutes reach a small part of the
-incidence that the same motion held for hours would.
+P = 85 %, tau_I = 12 min, fitted in the paper to seasickness incidence data. The paper's text was not
+at hand when this was written: b, n, P and tau_I are the values the model is usually restated with,
+and tau is ours; check them against the paper before relying on this incidence (MSDV_z above does
+not depend on them). Sessions of a few minutes reach
+a small part of the incidence that the same motion held for an hour would.
 """
 
 from __future__ import annotations
