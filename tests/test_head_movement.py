@@ -54,3 +54,10 @@ def test_the_session_takes_it_off_line_and_on_line_and_refuses_a_negative_one(pa
         session.thesis(path, Model(params, "yaw-track"), chosen)
     with pytest.raises(ValueError, match="head_movement_weight"):
         ProblemOptions(head_movement_weight=math.nan)
+
+
+def test_the_controller_plans_with_it(params):
+    from desdemona.control.mpc import MPC, MPCOptions
+
+    mpc = MPC(Model(params, "dfs"), MPCOptions(horizon=1.0, head_movement_weight=2.0))
+    assert mpc.problem.options.head_movement_weight == 2.0
