@@ -436,6 +436,10 @@ def _add_cost_options(parser: argparse.ArgumentParser) -> None:
                         help="the jerk's weight in the cost, against its limit: higher makes the joints "
                              "reverse their accelerations less, at some cost in the cue (default: 5 "
                              "off-line and 3 on-line on dfs, 1 elsewhere)")
+    parser.add_argument("--head-movement-weight", type=float, default=None, metavar="W", dest="head_movement_weight",
+                        help="the weight of the cabin's angular velocity in space, all three axes, as it is "
+                             "(a felt error of 1 m/s^2 per rad/s): a head moved in a turning cabin is "
+                             "cross-coupled, felt as a tumble (see docs/guide/occupant.md); 0: none (default)")
 
 
 def _add_view_option(parser) -> None:
