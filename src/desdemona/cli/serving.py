@@ -30,30 +30,36 @@ def run_serve(args) -> int:
                                      quiet_end=args.quiet_end, operator=args.operator, state_lost=args.state_lost)
     except ValueError as exc:
         raise UserError(str(exc)) from None
+    try:  # bound before the controller is built (seconds): a port in use is said at once
+        inbound = args.held.enter_context(serve.listening(listen))
+    except OSError as exc:
+        raise UserError(f"--listen {args.listen}: {exc.strerror or exc}") from None
     reference = None if args.reference is None else profiles.load(args.reference)
     resolved = session.live(model, session.Choices.of(args), channels=channels, rate=args.rate, span=args.duration,
                             horizon=args.horizon, reach=args.reach, predictor=args.predictor, reference=reference,
                             tail_step=args.tail_step)
     options = resolved.options
 
-    def say_ready():
-        print(f"desdemona: serving {model.config.name} at {1.0 / options.mpc.step:g} Hz: motion from {args.listen}, "
-              f"setpoints to {args.send}; Ctrl-C parks the machine and ends the session", file=sys.stderr, flush=True)
+    def say_ready(early):
+        before = (f"; {early} host datagram{'s' if early != 1 else ''} came before it was ready (dropped: start "
+                  "the host after this line)" if early else "")
+        print(f"desdemona: serving {model.config.name} at {1.0 / options.mpc.step:g} Hz, ready: motion from "
+              f"{args.listen}, setpoints to {args.send}; Ctrl-C parks the machine and ends the session{before}",
+              file=sys.stderr, flush=True)
 
     def dropping(reason):
         print(f"desdemona: dropping datagrams: {reason}", file=sys.stderr, flush=True)
 
     log = None
 
-    def ready():
-        nonlocal log  # the log is begun once the service listens: a port in use leaves nothing behind
+    def ready(early):
+        nonlocal log  # the log is begun once the service is ready
         log = sessionlog.LiveLog(out, model.config.joint_names, report.RESULT_FORMAT)
-        say_ready()
+        say_ready(early)
 
     try:
-        served = serve.serve(model, options, serving, ready=ready, on_drop=dropping, log=_Later(lambda: log))
-    except OSError as exc:
-        raise UserError(f"--listen {args.listen}: {exc.strerror or exc}") from None
+        served = serve.serve(model, options, serving, ready=ready, on_drop=dropping, inbound=inbound,
+                             log=_Later(lambda: log))
     finally:
         logged = None if log is None else log.close()
     if not np.any(served.columns["status"] == "running"):

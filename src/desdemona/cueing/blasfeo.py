@@ -43,6 +43,7 @@ from pathlib import Path
 import casadi as ca
 
 from desdemona.cueing import compiled
+from desdemona.support import guard
 
 VERSION = "0.1.4.2"
 SOURCES = Path(__file__).parents[1] / "data" / "blasfeo"
@@ -140,9 +141,8 @@ def build() -> Path:
     if all((folder / name).exists() for name in (*CASADI_FILES, "libblasfeo.so.0")):
         return folder
     folder.parent.mkdir(parents=True, exist_ok=True)
-    print(f"desdemona: building BLASFEO {VERSION} for this processor, once, into {folder.parent} (about 15 s "
-          "on two cores)", file=sys.stderr, flush=True)
-    with tempfile.TemporaryDirectory(dir=folder.parent, prefix=".hpipm-") as work:
+    with guard.lasting(f"building BLASFEO {VERSION} for this processor", f", once, into {folder.parent} (about "
+                       "15 s on two cores)"), tempfile.TemporaryDirectory(dir=folder.parent, prefix=".hpipm-") as work:
         objects = _compile(cc, manifest, Path(work))
         built = Path(work) / "lib"
         built.mkdir()

@@ -37,10 +37,9 @@ from pathlib import Path
 
 import casadi as ca
 
+from desdemona.support import guard
+
 FLAGS = ("-O0", "-fPIC", "-shared")
-#: Told one line before compiling into the cache, where that takes long (with optimisation: fatrop's
-#: stage functions on ``full`` take about a minute at ``-O1``); the command line prints it.
-notice = None
 # Where compiling takes longer than this, something is wrong with the toolchain: keep the virtual machine.
 TIMEOUT = 300.0
 
@@ -117,9 +116,11 @@ def build(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> Path 
         warnings.warn(f"cannot create the cache {path.parent} ({error}): the stage functions stay "
                       "interpreted", RuntimeWarning, stacklevel=2)
         return None
-    if notice is not None and "-O0" not in flags:
-        notice(f"compiling the stage functions for this machine and these options, once, into {path.parent}")
-    return path if _compiled_into(cc, path, source, "stages.c", list(flags)) else None
+    # told where it takes long (with optimisation: fatrop's stage functions on ``full`` take about a
+    # minute at -O1); every compile is timed, for the command to print apart from the solve
+    with guard.lasting("compiling the stage functions for this machine and these options",
+                       f", once, into {path.parent}", told="-O0" not in flags):
+        return path if _compiled_into(cc, path, source, "stages.c", list(flags)) else None
 
 
 def c_source(functions: list[ca.Function], file: str) -> str:
@@ -139,6 +140,11 @@ def linked(source: str, stages: Path, name: str, kept: Path | None = None) -> ca
     is removed once the library is loaded, or, given ``kept``, into that file of the cache (a stored
     solver's, :func:`store_solver`). None, with a warning, where compiling fails."""
     flags = [*FLAGS, str(stages), f"-Wl,-rpath,{stages.parent}"]
+    with guard.lasting("compiling the NLP's assembly of the stages", told=False):
+        return _linked(source, flags, name, kept)
+
+
+def _linked(source: str, flags: list[str], name: str, kept: Path | None) -> ca.Function | None:
     if kept is not None:
         return ca.external(name, str(kept)) if _compiled_into(compiler(), kept, source, "assembly.c", flags) else None
     with tempfile.TemporaryDirectory(prefix="desdemona-") as work:
