@@ -174,10 +174,13 @@ class _Inbox:
     received so far for the predictor and the log, on the host's clock. A host that starts again
     (its sequence and time from the beginning) after it has been silent for ``restart_after`` seconds
     is taken as the same host back: its times continue from where it left off. ``on_drop(reason)`` is
-    told of each new reason to drop a datagram."""
+    told of each new reason to drop a datagram. ``machine`` = (the sending socket, its
+    :class:`MachineLink`): the States that come back to it; Commands are taken from the host
+    ``operator`` only; ``early``: datagrams dropped before the session began."""
 
     def __init__(self, sock: socket.socket, channels: int, clock, restart_after: float = np.inf, on_drop=None,
-                 machine: tuple[socket.socket, MachineLink] | None = None, operator: str = "127.0.0.1"):
+                 machine: tuple[socket.socket, MachineLink] | None = None, operator: str = "127.0.0.1",
+                 early: int = 0):
         self.sock, self.channels, self.clock = sock, channels, clock
         self.restart_after, self.on_drop = restart_after, on_drop
         self.shift = 0.0  # added to a returning host's times
@@ -185,10 +188,11 @@ class _Inbox:
         self.selector.register(sock, selectors.EVENT_READ)
         self.machine, self.operator = machine, operator
         if machine is not None:
+            machine[0].setblocking(False)
             self.selector.register(machine[0], selectors.EVENT_READ)
         self.commands: list[tuple[float, str]] = []  # (arrived, action) not yet acted on
         self.last_command: dict = {}
-        self.dropped: Counter = Counter()
+        self.dropped: Counter = Counter({"came before the service was ready": early} if early else {})
         self.newest: protocol.Motion | None = None
         self.arrived = None  # clock time the newest message arrived
         self.fresh = False  # a message came since the last cycle took one
@@ -343,14 +347,11 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as outbound, \
             guard.handled_here(stops.append):
         early = _discard_queued(inbound)
-        outbound.setblocking(False)
         if ready is not None:
             ready(early)
         link = MachineLink(model, h, serving.send, serving.state_lost)
         inbox = _Inbox(inbound, channels, clock, serving.timeout * h, on_drop, machine=(outbound, link),
-                       operator=serving.operator)
-        if early:
-            inbox.dropped["came before the service was ready"] = early
+                       operator=serving.operator, early=early)
         session = _Session(model, controller, h, guard_use)
         start = clock()
         k = 0
