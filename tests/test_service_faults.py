@@ -51,7 +51,10 @@ class Loop:
              "--send", f"{LOOPBACK}:{self.machine_port}", "--out", str(folder / "session"), "--horizon", "1",
              "--duration", str(WAIT), "--quiet-end", "1", "--rate", str(round(1 / STEP)), "--no-view", *serve],
             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-        assert "serving" in self.serve.stderr.readline()
+        said = [self.serve.stderr.readline() for _ in range(1)]
+        while "serving" not in said[-1] and said[-1] and len(said) < 50:  # after what it compiles, once
+            said.append(self.serve.stderr.readline())
+        assert "serving" in said[-1], said
         self.host = subprocess.Popen([*RUN, "host", "replay", profile, "--to", f"{LOOPBACK}:{self.serve_port}"],
                                      stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
 
