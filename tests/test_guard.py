@@ -223,3 +223,28 @@ def test_the_watchdog_waits_for_a_block_that_holds_signals_back(tmp_path):
     out, _ = proc.communicate(timeout=60)
     assert proc.returncode == 130
     assert out.split() == ["block", "done"]
+
+
+def test_a_long_loop_tells_its_progress_and_end():
+    """Within counting, progressed reaches the counter no more often than its period; the end is
+    estimated from the share done so far (10 s for half: 10 s more), else from the estimate given."""
+    told = []
+    with guard.counting(lambda done, total: told.append((done, total)), every=0.0):
+        for k in range(3):
+            guard.progressed(k, 3)
+    assert told == [(0, 3), (1, 3), (2, 3)]
+    with guard.counting(lambda done, total: told.append((done, total)), every=3600.0):
+        guard.progressed(1, 3)
+    assert len(told) == 3
+    guard.progressed(1, 3)  # outside: nobody to tell
+    assert len(told) == 3
+
+    def seconds_ahead(end: str) -> float:
+        now = time.localtime()
+        hours, minutes, seconds = map(int, end.split(":"))
+        return (hours - now.tm_hour) * 3600 + (minutes - now.tm_min) * 60 + seconds - now.tm_sec
+
+    ahead = seconds_ahead(guard.estimated_end(time.perf_counter() - 10.0, 1, 2)) % 86400
+    assert 8 <= ahead <= 12
+    ahead = seconds_ahead(guard.estimated_end(time.perf_counter() - 10.0, 0, 2, estimate=100.0)) % 86400
+    assert 88 <= ahead <= 92

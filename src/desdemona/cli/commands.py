@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from desdemona import profiles
+from desdemona.cli import progress as progress_lines
 from desdemona.cli.exits import EXIT_NOT_CONVERGED, EXIT_UNSAFE, EXIT_USAGE, UserError
 from desdemona.cueing import sizing
 from desdemona.machine.configs import get_configuration
@@ -101,8 +102,10 @@ def run_optimize(args) -> int:
         perception = perception_models.get_model(args.perception) if args.perception else None
         resolved = _offline_session(args, path, model, choices, perception)
     path, problem, size = resolved.path, resolved.options, resolved.size
+    estimate = None if args.method == "thesis" else sizing.check_time(
+        path, model.config, problem.h_u, problem.solver, args.starts, args.workers, resolved.window, args.max_time)
     unreachable = sizing.unreachable(path, model)
-    progress = None if args.quiet else _Progress(args.starts, size, path, model.config)
+    progress = None if args.quiet else progress_lines.Starts(args.starts, size, path, model.config, estimate)
     compiled.notice = None if progress is None else progress.say
     with guard.reporting(None if progress is None else progress.solving, PROGRESS_EVERY):
         if args.method == "thesis":
@@ -148,38 +151,6 @@ def _offline_session(args, path, model, choices, perception) -> session.Session:
             workers -= 1
 
 
-class _Progress:
-    """Progress of an off-line run on stderr: a bar on a terminal; else (a log file, a CI job) a line
-    when the run starts, one per finished start with the elapsed time and the best cost so far, and one
-    every PROGRESS_EVERY seconds inside a long solve."""
-
-    def __init__(self, starts: int, size: sizing.Size, path, config):
-        self.begin = time.perf_counter()
-        self.tty = sys.stderr.isatty()
-        if not self.tty:
-            self.say(f"{path.name} on {config.name}: {size.intervals:,} control intervals, {size.variables:,} "
-                     f"variables, {starts} start{'s' if starts > 1 else ''}")
-
-    def say(self, text: str) -> None:
-        print(f"desdemona: {text}", file=sys.stderr, flush=True)
-
-    def start_done(self, done: int, total: int, best: float) -> None:
-        if self.tty:
-            bar = "#" * done + "." * (total - done)
-            print(f"\r  starts [{bar}] {done}/{total}", end="" if done < total else "\n", file=sys.stderr,
-                  flush=True)
-        else:
-            self.say(f"start {done}/{total} done, {time.perf_counter() - self.begin:.1f} s, best cost so far {best:.6g}")
-
-    def window(self, index: int, count: int, start: float, end: float) -> None:
-        self.say(f"window {index}/{count}: {start:g}-{end:g} s")
-
-    def solving(self, iteration: int, cost: float, seconds: float) -> None:
-        if not self.tty:
-            self.say(f"  solving: iteration {iteration}, cost {cost:.6g}, {seconds:.0f} s in this start, "
-                     f"{time.perf_counter() - self.begin:.1f} s in all")
-
-
 def run_batch(args) -> int:
     from desdemona.cueing.offline import OptimizeOptions
     from desdemona.runs import batch
@@ -206,7 +177,8 @@ def run_batch(args) -> int:
               f"{job.config}: {job.status}", file=sys.stderr, flush=True)
 
     results = batch.run_batch(jobs, params, session.Choices.of(args), options, out, args.processes, args.dask,
-                              progress=None if args.quiet else progress, overwrite=args.overwrite)
+                              progress=None if args.quiet else progress, overwrite=args.overwrite,
+                              max_time=args.max_time)
     print(batch.table(results))
     if any(r.status not in ("ok", "not converged") for r in results):
         return EXIT_UNSAFE
@@ -243,7 +215,10 @@ def run_online(args) -> int:
                               step=args.step, predictor=args.predictor, reference=reference, forecast=forecast,
                               **_felt_choices(args), **timing)
     path, options = resolved.path, resolved.options
-    result = online.run(path, model, options)
+    estimate = sizing.check_time_online(path, model.config, options.mpc, args.max_time)
+    steps = None if args.quiet else progress_lines.Steps(path, model.config, estimate, PROGRESS_EVERY)
+    with guard.counting(steps, PROGRESS_EVERY):
+        result = online.run(path, model, options)
     unreachable = sizing.unreachable(path, model)
     report.write_online(result, out, report.command_line(), args.overwrite, unreachable=unreachable,
                         protect=_inputs(args), view=args.view)

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 import difflib
+import math
 
 from desdemona._version import __version__
 from desdemona.cli import commands
@@ -75,6 +76,7 @@ def build_parser() -> argparse.ArgumentParser:
                      help="parallel processes for the starts (default: one per core, at most one per start, "
                           "as many as fit in memory)")
     _add_overwrite_option(opt)
+    _add_time_option(opt)
     opt.add_argument("--quiet", action="store_true",
                      help="no progress on stderr (default: a bar on a terminal, else a line per start)")
     _add_view_option(opt)
@@ -101,6 +103,7 @@ def build_parser() -> argparse.ArgumentParser:
                        help="write into DIR if it is an earlier batch folder of desdemona (only its batch.csv "
                             "and result folders inside): its jobs' folders and batch.csv are replaced")
     batch.add_argument("--quiet", action="store_true", help="no line on stderr as each job ends")
+    _add_time_option(batch, "each job")
     _add_view_option(batch)
     batch.set_defaults(run=commands.run_batch)
 
@@ -113,6 +116,9 @@ def build_parser() -> argparse.ArgumentParser:
                     "timings (cycles.csv) and figures.")
     online.add_argument("profile", metavar="PROFILE_OR_CSV")
     _add_machine_options(online, default_config="dfs")
+    _add_time_option(online)
+    online.add_argument("--quiet", action="store_true",
+                        help="no progress on stderr (default: the estimate, and a line every 10 s of a long run)")
     online.add_argument("--out", required=True, metavar="DIR")
     online.add_argument("--horizon", type=float, default=None, metavar="SECONDS",
                         help="T_h (default: 2 on dfs and dfs-yaw; 4 with the track, whose position is planned "
@@ -363,6 +369,24 @@ def _add_machine_options(parser: argparse.ArgumentParser, default_config: str = 
                         help="TOML file overriding any subset of the machine parameters")
     parser.add_argument("--base", choices=BUILTIN_SETS, default=None,
                         help="built-in parameter set to start from (default: default)")
+
+
+def _positive_seconds(text: str) -> float:
+    """A positive, finite number of seconds (argparse reports anything else as a usage error)."""
+    try:
+        seconds = float(text)
+    except ValueError:
+        seconds = math.nan
+    if not (seconds > 0 and math.isfinite(seconds)):
+        raise argparse.ArgumentTypeError(f"{text!r}: must be a positive number of seconds")
+    return seconds
+
+
+def _add_time_option(parser: argparse.ArgumentParser, what: str = "the run") -> None:
+    parser.add_argument("--max-time", type=_positive_seconds, default=None, metavar="SECONDS",
+                        help=f"how long {what} may take, as estimated before it starts from figures measured "
+                             "per interval and cycle; one estimated to take longer is refused with the step "
+                             "that fits (default: 20 times the path's duration, at least 60 s)")
 
 
 def _add_overwrite_option(parser: argparse.ArgumentParser) -> None:

@@ -30,7 +30,9 @@ Signals and signal handlers are process-wide, so is the state here: it is set on
 ``with interruptible():`` and is inert for a library user who never enters it.
 
 The same monitor reports on a long solve: every ``every`` seconds it calls the reporter given to
-:func:`reporting` with the iteration count and the current cost.
+:func:`reporting` with the iteration count and the current cost. A long loop (the on-line closed loop)
+says how far it is with :func:`progressed`, which calls the reporter given to :func:`counting` as
+often; :func:`estimated_end` turns either into the time of day the work will end.
 """
 
 from __future__ import annotations
@@ -77,6 +79,8 @@ class _State:
         self.speak = False  # say why the process ends (the command's own process, not a worker)
         self.reporter = None  # reporter(iteration, cost, seconds) for long solves
         self.every = 10.0
+        self.counter = None  # counter(done, total) for long loops (counting)
+        self.counted = 0.0  # when it was last called [time.perf_counter()]
         self.on_hard_exit = []  # callables run before the process ends with os._exit (release a lock)
         self.deferring = 0  # depth of blocks that must not be cut in two (deferred)
         self.acted = False  # the handler has run since the signal: the main thread knows of it
@@ -277,6 +281,39 @@ def reporting(reporter, every: float = 10.0):
         yield
     finally:
         _state.reporter, _state.every = saved
+
+
+@contextlib.contextmanager
+def counting(counter, every: float = 10.0):
+    """Within this block a long loop calls ``counter(done, total)`` every ``every`` s (:func:`progressed`)."""
+    saved = _state.counter, _state.every, _state.counted
+    _state.counter, _state.every, _state.counted = counter, every, time.perf_counter()
+    try:
+        yield
+    finally:
+        _state.counter, _state.every, _state.counted = saved
+
+
+def progressed(done: int, total: int) -> None:
+    """``done`` of a loop's ``total`` units of work are done: told to :func:`counting`'s counter where
+    its period has passed since it was last told (a clock read otherwise, nothing without one)."""
+    if _state.counter is None:
+        return
+    now = time.perf_counter()
+    if now - _state.counted >= _state.every:
+        _state.counted = now
+        _state.counter(done, total)
+
+
+def estimated_end(begin: float, done: float, total: float, estimate: float | None = None) -> str:
+    """The time of day (HH:MM:SS) that work begun at ``begin`` (:func:`time.perf_counter`) ends: at the
+    pace of the share ``done`` of ``total`` so far, else (nothing done yet) after ``estimate`` seconds."""
+    elapsed = time.perf_counter() - begin
+    if done > 0:
+        left = elapsed * (total - done) / done
+    else:
+        left = max((estimate or 0.0) - elapsed, 0.0)
+    return time.strftime("%H:%M:%S", time.localtime(time.time() + left))
 
 
 class SolveMonitor(ca.Callback):
