@@ -49,6 +49,8 @@ def timed(src: Path, cache: Path, argv: list[str], timeout: float) -> dict:
     cpu = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
     line = next((s for s in done.stdout.splitlines() if "RMS =" in s), done.stderr.strip()[-200:])
     rms = re.search(r"RMS = ([0-9.]+)", line)
+    if done.returncode not in (0, 4):  # why, in the table
+        print(f"<!-- exit {done.returncode}: {done.stderr.strip()[-600:]} -->", flush=True)
     return {"exit": done.returncode, "wall": wall, "cpu": cpu, "load": f"{load_before}-{load()}",
             "rms": rms.group(1) if rms else "-", "solver": "Solve_Succeeded" in line}
 

@@ -139,6 +139,7 @@ def test_progress_lines_when_stderr_is_not_a_terminal(tmp_path, monkeypatch, cap
     assert "50 control intervals" in err
     assert "start 1/2 done" in err and "start 2/2 done" in err and "best cost so far" in err
     assert "solving: iteration 1," in err
+    assert "ends about" in err.splitlines()[0] and "start 1/2 done" in err and ", ends about " in err
     assert _optimize(tmp_path / "b", "--quiet") == 0
     assert capsys.readouterr().err == ""
 
@@ -248,3 +249,18 @@ def test_a_long_loop_tells_its_progress_and_end():
     assert 8 <= ahead <= 12
     ahead = seconds_ahead(guard.estimated_end(time.perf_counter() - 10.0, 0, 2, estimate=100.0)) % 86400
     assert 88 <= ahead <= 92
+
+
+def test_an_online_run_tells_its_steps_and_end(capsys):
+    """The on-line run's counter: its estimate when it starts (where longer than the period), then the
+    steps done, their share and the end."""
+    from desdemona.cli import progress
+    from desdemona.machine.configs import get_configuration
+
+    steps = progress.Steps(profiles.load("dfs-catapult"), get_configuration("dfs"), 600.0, 10.0)
+    steps(300, 1200)
+    first, second = capsys.readouterr().err.strip().splitlines()
+    assert "dfs-catapult on-line on dfs: about 10 min (ends about " in first
+    assert second.startswith("desdemona: step 300/1,200 (25 %), ") and "ends about " in second
+    progress.Steps(profiles.load("dfs-catapult"), get_configuration("dfs"), 5.0, 10.0)
+    assert capsys.readouterr().err == ""  # a short run: no line

@@ -13,6 +13,15 @@ SHA-256 of its C source (with the CasADi version and the compiler command), in :
 new library is written under a temporary name and renamed, so that two processes compiling the same
 source at once leave one whole file. Files there are only ever added: remove the folder to clear it.
 
+An optimised library (fatrop's stage functions at ``-O1`` with fused multiply-adds) takes a minute or
+more to compile on ``full`` (6.7 MB of C; gcc's register allocation on straight-line code): a first
+run, or the first after a changed weight or limit, does not wait for it. It compiles the same sources
+at ``-O0``, each function a file of its own side by side on the cores (3.8 MB, a few seconds), solves
+on that, and leaves the optimised library to a process of its own at the lowest priority, for later
+runs (:func:`build`, :func:`in_background`; "First run" in docs/measurements/first-run.md). The two
+libraries give the same results to round-off, not bit for bit: the first run's iterates may differ
+from a later run's in the last digits.
+
 A fatrop solver of a problem that later runs pose again (the windows of a recording, the same for
 every recording: :mod:`desdemona.cueing.windows`) is kept there too, serialized with its NLP's library
 (:func:`store_solver`): CasADi's set-up of fatrop for a problem's structure takes 15 s at 1,200

@@ -270,13 +270,14 @@ SECONDS_PER_INTERVAL = {"fatrop": 12e-6, "ipopt": 25e-6}
 ITERATIONS = 300
 SETUP_PER_INTERVAL_SQUARED = 1e-5
 BASE_SECONDS = 10.0
-# On-line, per interval of a plan [s], by free joints (the next listed at or above): one real-time
-# iteration's QP, `dfs` at 100 Hz (56 intervals, 1.2-1.4 ms), `full` at 50 Hz (46, 5-6 ms); a plan
-# solved by IPOPT (--replan) NLP_FACTOR times that (7 ms for 50 intervals of one joint); and per
-# closed-loop step the plant, the predictor and the check.
-SECONDS_PER_PLAN_INTERVAL = {4: 25e-6, 6: 130e-6}
+# On-line, per interval of a plan [s], by free joints (the next listed at or above): one cycle's
+# computation with its real-time iteration, `dfs` at 100 Hz (56 intervals, p99 5.6 ms, the QP alone
+# 1.2-1.4 ms), `full` at 50 Hz (46, median 8.7 ms); a plan solved by IPOPT (--replan) NLP_FACTOR times
+# that (7 ms for 50 intervals of one joint against 0.6 ms); and per closed-loop step the plant, the
+# predictor and the check. Figures of a quiet machine: one that shares its cores takes longer.
+SECONDS_PER_PLAN_INTERVAL = {4: 60e-6, 6: 200e-6}
 NLP_FACTOR = 6.0
-SECONDS_PER_STEP = 2e-4
+SECONDS_PER_STEP = 5e-4
 H_U_STEPS = (0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5)  # the --h-u values suggested
 
 
