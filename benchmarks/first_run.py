@@ -73,6 +73,11 @@ def changed_limit(src: Path, folder: Path) -> Path:
     return file
 
 
+def command(profile: str, config: str, out: Path, *extra: str) -> list[str]:
+    """The timed command, into a result folder of its own."""
+    return ["optimize", profile, "--config", config, "--starts", "1", *extra, "--out", str(out)]
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--before", type=Path, help="another checkout's src folder, timed first")
@@ -90,15 +95,15 @@ def main(argv=None) -> int:
             for label, src in codes:
                 cache = work / f"cache-{label}-{config}"
                 cache.mkdir()
-                command = ["optimize", profile, "--config", config, "--starts", "1", "--overwrite",
-                           "--out", str(work / "out")]
-                runs = [("first", command), ("limit", [*command, "--params", str(changed_limit(src, work))])]
+                runs = [("first", command(profile, config, work / f"out-{label}-{config}-first")),
+                        ("limit", command(profile, config, work / f"out-{label}-{config}-limit",
+                                          "--params", str(changed_limit(src, work))))]
                 for name, argv_run in runs:
                     row = timed(src, cache, argv_run, args.timeout)
                     print(f"| {label} | {profile} on {config} | {name} | {row['exit']} | {row['wall']:.1f} | "
                           f"{row['cpu']:.1f} | {row['load']} | {row['rms']} | {row['solver']} |", flush=True)
                 waited = settled(cache, args.wait)
-                row = timed(src, cache, command, args.timeout)
+                row = timed(src, cache, command(profile, config, work / f"out-{label}-{config}-later"), args.timeout)
                 print(f"| {label} | {profile} on {config} | later (after {waited:.0f} s) | {row['exit']} | "
                       f"{row['wall']:.1f} | {row['cpu']:.1f} | {row['load']} | {row['rms']} | {row['solver']} |",
                       flush=True)
