@@ -1,6 +1,6 @@
 """On-line runs through plan outages: how the fallback carries a session when plans do not come.
 
-    python benchmarks/outages.py                                  # the table of docs/benchmarks.md
+    python benchmarks/outages.py                                  # the tables of docs/benchmarks/fallback-to-the-last-plan.md
     python benchmarks/outages.py --cases c172-takeoff-M --config dfs --patterns burst2
 
 Each run is the ``online`` command on a corpus case with ``--predictor hold --deadline 1`` (no plan is
@@ -12,8 +12,9 @@ on (the planner lost for good). The placed start's solves are never refused.
 Per run, read as ``real.felt_figures`` reads them: the felt force RMS of the vector |f - f_d| [m/s^2],
 the classical loop's from the same run, the peak felt direction the machine made [deg]
 (:func:`desdemona.check.metrics.direction_made`), the felt direction's RMS error [deg], the peak felt
-rotation [deg/s]; and the cycles by source (fresh plan, the last plan followed, the brake). "Fallback to
-the last plan" and "Return home in an outage" in ``docs/benchmarks.md`` have the tables.
+rotation [deg/s]; and the cycles by source (fresh plan, the last plan followed, the brake).
+``docs/benchmarks/fallback-to-the-last-plan.md#fallback-to-the-last-plan`` and
+``docs/benchmarks/return-home-in-an-outage.md#return-home-in-an-outage`` have the tables.
 """
 
 from __future__ import annotations

@@ -76,7 +76,7 @@ from desdemona.runs import batch
 HERE = Path(__file__).resolve().parent
 CORPUS = HERE / "corpus"
 RESULTS = HERE / "real-results"
-DOCS = HERE.parent / "docs" / "benchmarks.md"
+DOCS = HERE.parent / "docs" / "benchmarks" / "real-inputs.md"
 BEGIN, END = "<!-- real.py table: begin -->", "<!-- real.py table: end -->"
 
 CONFIGS = {"six": ("yaw-track-cabin", "full"), "modulus": ("dfs",)}
@@ -346,7 +346,7 @@ def forecast_closes(rows: list[dict]) -> None:
 
 
 def write_docs(text: str) -> None:
-    """Replace the table between the markers in docs/benchmarks.md (append the section if missing)."""
+    """Replace the table between the markers in docs/benchmarks/real-inputs.md (append the section if missing)."""
     tables.replace_between(BEGIN, END, text, "Real inputs", DOCS)
 
 
@@ -363,7 +363,7 @@ def main(argv=None) -> int:
     parser.add_argument("--processes", type=int, default=2)
     parser.add_argument("--dask", default=None, metavar="ADDRESS")
     parser.add_argument("--table-only", action="store_true", help="re-read the jobs of an earlier run")
-    parser.add_argument("--no-docs", action="store_true", help="print the table, leave docs/benchmarks.md")
+    parser.add_argument("--no-docs", action="store_true", help="print the table, leave docs/benchmarks/real-inputs.md")
     parser.add_argument("--wall", type=float, default=None, metavar="M_S2",
                         help="off-line: the cost's wall before the position limits (optimize --wall; 0: "
                              "without, the formulation before it)")
@@ -402,7 +402,7 @@ def main(argv=None) -> int:
             print(f"{case['name']}: no forecast beside it ({case['name']}.forecast.csv): no forecast rows",
                   file=sys.stderr)
     if own and not args.no_docs:
-        print(f"--corpus {args.corpus}: not the project's corpus; its table is printed, docs/benchmarks.md "
+        print(f"--corpus {args.corpus}: not the project's corpus; its table is printed, docs/benchmarks/real-inputs.md "
               f"is left as it is", file=sys.stderr)
         args.no_docs = True
     args.out.mkdir(parents=True, exist_ok=True)

@@ -1,4 +1,4 @@
-"""The README's screenshots of the result view, taken in headless chromium.
+"""The screenshots of the result view in docs/guide/results.md, taken in headless chromium.
 
     python benchmarks/screenshots.py [--out docs/images] [--work FOLDER]
 

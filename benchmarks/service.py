@@ -1,10 +1,10 @@
 """The real-time service on one computer: a JSBSim flight in real time, served, and checked by the stand-in.
 
-    python benchmarks/service.py                      # every run below, the table into docs/benchmarks.md
+    python benchmarks/service.py                      # every run below, the table into docs/benchmarks/real-time-service.md
     python benchmarks/service.py --runs dfs-50        # one run
     python benchmarks/service.py --table-only         # re-read the folders, rewrite the table
 
-Each run starts three processes, as a user would (README, "A session in real time"): the motion
+Each run starts three processes, as a user would (docs/guide/serve.md): the motion
 system's stand-in (``desdemona machine``), the service (``desdemona serve``, the ``hold`` predictor,
 ending one second after the host has gone quiet and the machine is parked) and the host
 (``desdemona host jsbsim``, the flight in real time, one message a cycle, as a simulator host sends
@@ -47,7 +47,7 @@ from desdemona.results.report import read_table
 
 HERE = Path(__file__).resolve().parent
 RESULTS = HERE / "service-results"
-DOCS = HERE.parent / "docs" / "benchmarks.md"
+DOCS = HERE.parent / "docs" / "benchmarks" / "real-time-service.md"
 BEGIN, END = "<!-- service.py table: begin -->", "<!-- service.py table: end -->"
 SCRIPT, START, STOP = str(HERE / "corpus_scripts" / "f16_turn.xml"), 3.0, 58.0  # the F-16's 4.6 g turn, 55 s
 RUNS = {  # name: (configuration, rate [Hz], modulus, lossy, the plan's tail step [s])

@@ -1,10 +1,10 @@
-"""Tables the benchmark scripts keep in docs/benchmarks.md, each between its two marker lines."""
+"""Tables the benchmark scripts keep in the pages of docs/benchmarks/, each between its two marker lines."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
-DOCS = Path(__file__).resolve().parent.parent / "docs" / "benchmarks.md"
+DOCS = Path(__file__).resolve().parent.parent / "docs" / "benchmarks" / "index.md"
 
 
 def replace_between(begin: str, end: str, text: str, heading: str, docs: Path = DOCS) -> None:

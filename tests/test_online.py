@@ -774,8 +774,9 @@ def test_an_unreachable_held_force_does_not_swing_the_plan_from_cycle_to_cycle(s
     held as it is over the horizon): the cabin's yaw turns the small force the machine can hold towards
     it. The Gauss-Newton model leaves out the curvature of that large residual, so one full QP step a
     cycle overshoots and the next swings back: 39 reversals a second of the cabin's acceleration. Half
-    the step from the previous plan (the default) is below one a second ("Damped real-time
-    iteration"), with the held force as it is and with the hold predictor's persistence. Shown with the
+    the step from the previous plan (the default) is below one a second
+    (docs/benchmarks/damped-real-time-iteration.md), with the held force as it is and with the hold predictor's
+    persistence. Shown with the
     raw rotation in the cost, where it was found (the canals' cost happens not to swing here)."""
     t = np.arange(0, 10.0 + 1e-9, 0.01)
     S = np.tile([0.0, 0.0, 0.0, -3.2, 1.2, 8.9], (len(t), 1))
@@ -978,17 +979,17 @@ def test_the_gimbals_null_motion_is_what_s_does_not_see():
     from desdemona.machine.kinematics import gimbal_null_rate
 
     model = Model(config="dfs")
-    free, rest = model.config.free, np.zeros(4)
+    gimbals, rest = model.config.gimbals, np.zeros(4)
     for q in np.random.default_rng(1).uniform(-np.pi, np.pi, size=(5, 4)):
         outer, cabin = (np.asarray(model.S(q, e, rest)).ravel()[:3] for e in np.eye(4)[[1, 3]])
         assert np.dot(outer, cabin) == pytest.approx(-np.sin(q[2]), abs=1e-12)
     lock, away = np.array([0.3, 0.4, -np.pi / 2, -0.2]), np.array([0.3, 0.4, 0.0, -0.2])
     null, felt = np.array([0.0, 1.0, 0.0, -1.0]), np.array([0.0, 1.0, 0.0, 1.0])
     assert np.abs(np.asarray(model.S(lock, null, rest)).ravel()[:3]).max() < 1e-12
-    assert float(gimbal_null_rate(lock, null, free)) == pytest.approx(1.0)
-    assert float(gimbal_null_rate(lock, felt, free)) == pytest.approx(0.0, abs=1e-15)
-    assert float(gimbal_null_rate(away, null, free)) == 0.0
-    assert gimbal_null_rate(np.zeros(3), np.zeros(3), Model(config="yaw-track-cabin").config.free) is None
+    assert float(gimbal_null_rate(lock, null, gimbals)) == pytest.approx(1.0)
+    assert float(gimbal_null_rate(lock, felt, gimbals)) == pytest.approx(0.0, abs=1e-15)
+    assert float(gimbal_null_rate(away, null, gimbals)) == 0.0
+    assert gimbal_null_rate(np.zeros(3), np.zeros(3), Model(config="yaw-track-cabin").config.gimbals) is None
     path, full = along_vertical(profiles.load("dfs-catapult")), Model(config="full")
     weights = [Formulation(m, path, ProblemOptions(h_u=0.1), parametric=p).null_weight
                for m, p in ((model, True), (model, False), (full, True))]

@@ -30,8 +30,8 @@ from desdemona.support.symbolic import call
 DFS_RADIUS = 4.0  # |q2| of the dfs configurations [m]
 
 #: Bandwidth [rad/s] of the gimbals' critically damped angle followers in :func:`classical_dfs`, per
-#: gimbal: outer (q4), inner (q5), cabin (q6).
-GIMBAL_BANDWIDTH = {3: 5.0, 4: 5.0, 5: 1.5}
+#: gimbal: outer (q4), inner (q5), cabin (q6), by joint name.
+GIMBAL_BANDWIDTH = {"outer_gimbal": 5.0, "inner_gimbal": 5.0, "cabin": 1.5}
 
 # ---------------------------------------------------------------------------------------------------
 # The classical dynamic-flight-simulator loop
@@ -39,14 +39,14 @@ GIMBAL_BANDWIDTH = {3: 5.0, 4: 5.0, 5: 1.5}
 
 def _check_dfs(model: Model, what: str) -> None:
     config = model.config
-    if config.free[:1] != (0,) or not set(config.free[1:]) <= {3, 4, 5}:
+    if not config.yaw_and_gimbals:
         raise ValueError(f"{what} is for the yaw and the gimbals (dfs, dfs-yaw), not "
                          f"{config.name}'s {', '.join(config.joint_names)}")
 
 
 def _rate_reference(M_d, model: Model) -> np.ndarray:
     """The yaw rate [rad/s] that gives the modulus M_d in steady rotation (7.4.2), within its limit."""
-    radius = abs(model.config.fixed[1]) or DFS_RADIUS
+    radius = abs(model.config.held_track) or DFS_RADIUS
     g = model.params.gravity
     rate = np.sqrt(np.sqrt(np.maximum(np.asarray(M_d, dtype=float) ** 2 - g**2, 0.0)) / radius)
     return np.minimum(rate, model.limits.velocity[0])
@@ -56,11 +56,12 @@ def _gimbal_targets(model: Model, q1, qd1, qdd1) -> np.ndarray:
     """The gimbals' alignment angles (K, n - 1) for the yaw's states (K,): the outer and cabin gimbal
     of :func:`~desdemona.machine.kinematics.gimbal_alignment`, the inner gimbal at 0 (the gimbals at zero: f in
     the arm frame)."""
-    n, joint_of = model.n, model.config.free
+    n = model.n
     zero = np.zeros((len(q1), n - 1))
     f = model.f_cabin(np.c_[q1, zero], np.c_[qd1, zero], np.c_[qdd1, zero])
     outer, cabin = gimbal_alignment(f)
-    return np.stack([{3: outer, 4: np.zeros(len(q1)), 5: cabin}[joint_of[i]] for i in range(1, n)], axis=1)
+    target = {"outer_gimbal": outer, "inner_gimbal": np.zeros(len(q1)), "cabin": cabin}
+    return np.stack([target[joint] for joint in model.config.joint_names[1:]], axis=1)
 
 
 def still_home(q, model: Model, force=None) -> np.ndarray:
@@ -78,18 +79,17 @@ def still_home(q, model: Model, force=None) -> np.ndarray:
       half turn of q5, plus the nearest whole turn; none where that lies more than a quarter turn
       away: the way there may lead through a cabin upside down.
     """
-    free, lim, q = model.config.free, model.limits, np.asarray(q, dtype=float)
+    config, lim, q = model.config, model.limits, np.asarray(q, dtype=float)
     home = np.full(len(q), np.nan)
     home[lim.bounded] = 0.5 * (lim.position_min + lim.position_max)[lim.bounded]
     roll = pitch = psi = 0.0
     if force is not None and not model.config.takes_modulus:
         roll, pitch = tilt_angles(force[0], force[1], model.params.gravity)
-    if 4 in free:
-        k = free.index(4)
+    if config.inner_gimbal is not None:
+        k = config.inner_gimbal
         home[k] = psi = math.pi * round(q[k] / math.pi)
-    for joint, angle in ((3, math.cos(psi) * roll), (5, pitch)):
-        if joint in free:
-            k = free.index(joint)
+    for k, angle in ((config.outer_gimbal, math.cos(psi) * roll), (config.cabin_gimbal, pitch)):
+        if k is not None:
             nearest = angle + 2.0 * math.pi * round((q[k] - angle) / (2.0 * math.pi))
             home[k] = nearest if abs(q[k] - nearest) <= 0.5 * math.pi else np.nan
     return home
@@ -109,7 +109,7 @@ def steady_start(path: DesiredPath, model: Model) -> tuple[np.ndarray, np.ndarra
       sin q6); at rest at home where no gimbal can tilt (``yaw-track``, ``yaw-track-cabin``) or the
       first force is vertical.
     """
-    n, free = model.n, model.config.free
+    n, config = model.n, model.config
     q, qd = np.zeros(n), np.zeros(n)
     if model.config.takes_modulus:
         _check_dfs(model, "a steady start")
@@ -120,9 +120,9 @@ def steady_start(path: DesiredPath, model: Model) -> tuple[np.ndarray, np.ndarra
         return q, qd
     f = path.sample([path.t[0]])[0]
     roll, pitch = tilt_angles(f[3], f[4], model.params.gravity)
-    for joint, angle in ((3, roll), (5, pitch)):
-        if joint in free:
-            q[free.index(joint)] = float(angle)
+    for k, angle in ((config.outer_gimbal, roll), (config.cabin_gimbal, pitch)):
+        if k is not None:
+            q[k] = float(angle)
     return q, qd
 
 
@@ -166,7 +166,7 @@ def classical_dfs(path: DesiredPath, model: Model, times=None, gain: float = 10.
     yaw, gimbal = Follower(model, [0]), Follower(model, gimbals)
     guard = Guard(model)
     u, jerk = np.zeros((len(t) - 1, n)), np.zeros((len(t) - 1, n))
-    w = np.array([GIMBAL_BANDWIDTH[j] for j in model.config.free[1:]])
+    w = np.array([GIMBAL_BANDWIDTH[joint] for joint in model.config.joint_names[1:]])
     for k in range(len(t) - 1):
         h = float(t[k + 1] - t[k])
         # yaw: the rate loop, its acceleration within what torque and power allow at this rate

@@ -119,7 +119,7 @@ class ThesisProblem:
         parts = [error.ravel()]
         if o.barrier == "quadratic":
             a, b, c = o.quadratic
-            prismatic = np.array([model.params.joints[i].kind == "prismatic" for i in model.config.free])
+            prismatic = model.prismatic
             parts.append((math.sqrt(a) * q[:, prismatic]).ravel())
             parts.append((np.where(prismatic, math.sqrt(c), math.sqrt(b)) * tau).ravel())
         else:

@@ -91,7 +91,7 @@ class Washout:
 
 #: The tuned washout per configuration, the baseline ``online`` runs beside the MPC (frozen): found by
 #: ``nice -n 10 python benchmarks/tune_classical.py`` on 2026-12-02, a coordinate search of the felt
-#: force on the corpus and the built-in paths (docs/benchmarks.md, "Classical washout, tuned": mean
+#: force on the corpus and the built-in paths (docs/benchmarks/classical-washout-tuned.md: mean
 #: felt force RMS 0.96x the untuned on yaw-track-cabin, 0.80x on full); elsewhere :class:`Washout` ().
 WASHOUT: dict[str, Washout] = {
     "yaw-track-cabin": Washout(omega_hp=0.188, omega_centre=0.188, omega_lp=0.375, tilt_rate=0.279, omega_rot=0.333,
@@ -178,15 +178,15 @@ def _arm_plan(path: DesiredPath, model: Model, t, o: Washout, q0, qd0, trimmed: 
     """What the joints follow while the arm holds the sustained force: the arm's sustained rate (K,),
     the cabin's orientation R (K, 3, 3) that points the arm's force (the arm frame's axes in it), its
     gimbal angles (K, 3) (q4, q5, q6) and the track's centre (K,) with its rate and acceleration."""
-    dt, g, free = float(np.min(np.diff(t))), model.params.gravity, model.config.free
+    dt, g, config = float(np.min(np.diff(t))), model.params.gravity, model.config
     S_d = path.sample(t)
     f = S_d[:, 3:]
     filters = _filters(o)
     F = np.column_stack([_filtered(*filters["lp2"], f[:, i], dt, trimmed) for i in range(3)])
     held = np.column_stack([_filtered(*filters["lp_arm"], f[:, i], dt, trimmed) for i in range(3)])
     turn = _filtered(*filters["lp_arm"], S_d[:, 2], dt, trimmed)
-    full = 3 in free
-    side = -1.0 if q0[free.index(1)] <= 0.0 else 1.0  # the track's side the cabin rides on
+    full = config.tilts_cabin
+    side = -1.0 if q0[config.track] <= 0.0 else 1.0  # the track's side the cabin rides on
     radius = o.radius
     if full:
         need = np.sqrt(np.maximum(np.sum(held**2, axis=1) - g**2, 0.0))
@@ -197,7 +197,7 @@ def _arm_plan(path: DesiredPath, model: Model, t, o: Washout, q0, qd0, trimmed: 
     rate, change = _arm_ramp(reference, turn, t, o.arm_accel, qd0[0])
     # the cabin rides out to the radius while the arm holds force, and back to the centre after
     engaged = (reference > 0.0) | (rate != 0.0)
-    centre = _centre_move(t, np.where(engaged, side * radius, 0.0), q0[free.index(1)])
+    centre = _centre_move(t, np.where(engaged, side * radius, 0.0), q0[config.track])
     # the arm frame's force at the cabin (eq. 7.7, the track at the centre): tangential, centripetal
     # and gravity
     f_arm = np.column_stack([-centre[:, 0] * change, -centre[:, 0] * rate**2, np.full(len(t), g)])
@@ -213,7 +213,7 @@ def _arm_plan(path: DesiredPath, model: Model, t, o: Washout, q0, qd0, trimmed: 
                   * np.minimum(np.hypot(f_arm[:, 0], f_arm[:, 1]) / POINT_FORCE, 1.0))
         turn_by = np.arctan2(f_arm[:, 1], f_arm[:, 0]) - np.arctan2(F[:, 1], F[:, 0])
         yaw = np.unwrap(np.arctan2(weight * np.sin(turn_by), 1.0 - weight + weight * np.cos(turn_by)))
-        yaw += 2.0 * np.pi * np.round((q0[free.index(4)] - yaw[0]) / (2.0 * np.pi))
+        yaw += 2.0 * np.pi * np.round((q0[config.inner_gimbal] - yaw[0]) / (2.0 * np.pi))
         c, s = np.cos(yaw), np.sin(yaw)
         R = np.zeros((len(t), 3, 3))
         R[:, 0, 0], R[:, 0, 1], R[:, 1, 0], R[:, 1, 1], R[:, 2, 2] = c, -s, s, c, 1.0
@@ -228,47 +228,49 @@ def _targets(path: DesiredPath, model: Model, t, o: Washout, state, trimmed: boo
     ``centre`` (K, n, 3) the position, rate and acceleration of the centre the springs wash back to;
     ``side`` the side of the yaw axis the track keeps to (-1, +1; 0: either) while ``engaged`` (K,), the
     arm holding force or the cabin out at its radius."""
-    dt, g, free, n = float(np.min(np.diff(t))), model.params.gravity, model.config.free, model.n
+    dt, g, config, n = float(np.min(np.diff(t))), model.params.gravity, model.config, model.n
     rest = np.array([0.0, 0.0, 0.0, 0.0, 0.0, g])
     S_d = rest + o.gain * (path.sample(t) - rest)
     filters = _filters(o)
     hp2, lp2, hp1 = filters["hp2"], filters["lp2"], filters["hp1"]
     acc, rate = np.zeros((len(t), n)), np.zeros((len(t), n))
     angle, centre = np.full((len(t), n), np.nan), np.zeros((len(t), n, 3))
-    arm = o.arm and 0 in free and 1 in free and 4 in free
+    arm = o.arm and config.turns_arm and config.moves_track and config.inner_gimbal is not None
     if arm:
         q0, qd0 = start_state(state, n)
         plan = _arm_plan(path, model, t, o, q0, qd0, trimmed)
         hp = np.column_stack([_filtered(*hp2, S_d[:, 3 + i] - rest[3 + i], dt, trimmed) for i in range(3)])
         in_arm = np.einsum("kij,kj->ki", plan["R"], hp)  # the high-passed force in the arm frame
-        rotation = {3: 0, 5: 1}
-        for k, joint in enumerate(free):
-            if joint in (1, 2):
-                acc[:, k] = in_arm[:, joint]
-            if joint == 1:
-                centre[:, k] = plan["centre"]
-            elif joint == 0:
-                rate[:, k] = plan["rate"] + _filtered(*hp1, S_d[:, 2], dt, trimmed)
-            elif joint in (3, 4, 5):
-                angle[:, k] = plan["angles"][:, joint - 3]
+        for k, axis in ((config.track, 1), (config.heave, 2)):  # the arm frame's y and z
+            if k is not None:
+                acc[:, k] = in_arm[:, axis]
+        centre[:, config.track] = plan["centre"]
+        rate[:, config.yaw] = plan["rate"] + _filtered(*hp1, S_d[:, 2], dt, trimmed)
+        # each gimbal's angle (q4, q5, q6) and the rotation it also cues (omega_x, none, omega_y)
+        for i, (k, channel) in enumerate(((config.outer_gimbal, 0), (config.inner_gimbal, None),
+                                          (config.cabin_gimbal, 1))):
+            if k is not None:
+                angle[:, k] = plan["angles"][:, i]
                 rate[:, k] = np.r_[np.diff(angle[:, k]) / np.diff(t), 0.0]
-                if joint in rotation:
-                    rate[:, k] += _filtered(*hp1, S_d[:, rotation[joint]], dt, trimmed)
+                if channel is not None:
+                    rate[:, k] += _filtered(*hp1, S_d[:, channel], dt, trimmed)
         return {"acc": acc, "rate": rate, "angle": angle, "centre": centre, "side": plan["side"],
                 "engaged": plan["engaged"]}
-    for k, joint in enumerate(free):
-        if joint == 1:
-            acc[:, k] = _filtered(*hp2, S_d[:, 4], dt, trimmed)
-        elif joint == 2:
-            acc[:, k] = _filtered(*hp2, S_d[:, 5] - g, dt, trimmed)
-        elif joint in (0, 4) and (joint == 0 or 0 not in free):
-            rate[:, k] = _filtered(*hp1, S_d[:, 2], dt, trimmed)
-        elif joint == 3:
-            rate[:, k] = _filtered(*hp1, S_d[:, 0], dt, trimmed)
-            angle[:, k] = tilt_angles(0.0, _filtered(*lp2, S_d[:, 4], dt, trimmed), g, o.tilt_limit)[0]
-        elif joint == 5:
-            rate[:, k] = _filtered(*hp1, S_d[:, 1], dt, trimmed)
-            angle[:, k] = tilt_angles(_filtered(*lp2, S_d[:, 3], dt, trimmed), 0.0, g, o.tilt_limit)[1]
+    if config.track is not None:
+        acc[:, config.track] = _filtered(*hp2, S_d[:, 4], dt, trimmed)
+    if config.heave is not None:
+        acc[:, config.heave] = _filtered(*hp2, S_d[:, 5] - g, dt, trimmed)
+    turning = config.yaw if config.turns_arm else config.inner_gimbal  # omega_z: the arm, else the cabin
+    if turning is not None:
+        rate[:, turning] = _filtered(*hp1, S_d[:, 2], dt, trimmed)
+    if config.outer_gimbal is not None:
+        k = config.outer_gimbal
+        rate[:, k] = _filtered(*hp1, S_d[:, 0], dt, trimmed)
+        angle[:, k] = tilt_angles(0.0, _filtered(*lp2, S_d[:, 4], dt, trimmed), g, o.tilt_limit)[0]
+    if config.cabin_gimbal is not None:
+        k = config.cabin_gimbal
+        rate[:, k] = _filtered(*hp1, S_d[:, 1], dt, trimmed)
+        angle[:, k] = tilt_angles(_filtered(*lp2, S_d[:, 3], dt, trimmed), 0.0, g, o.tilt_limit)[1]
     return {"acc": acc, "rate": rate, "angle": angle, "centre": centre, "side": 0.0}
 
 
@@ -304,15 +306,15 @@ def classical_washout(path: DesiredPath, model: Model, times=None, settings: Was
     """
     o = WASHOUT.get(model.config.name, Washout()) if settings is None else settings
     t = path.t if times is None else np.asarray(times, dtype=float)
-    free, lim = model.config.free, model.limits
+    lim = model.limits
     target = _targets(path, model, t, o, state, trimmed)
-    prismatic = np.array([model.params.joints[j].kind == "prismatic" for j in free])
+    prismatic = model.prismatic
     tilt = ~np.isnan(target["angle"][0])
     q, qd = start_state(state, model.n)
     a = start_acceleration(state, model.n)
     q0, qd0 = q.copy(), qd.copy()
     follower = Follower(model, np.arange(model.n))
-    side, track = target["side"], free.index(1) if 1 in free else 0
+    side, track = target["side"], model.config.track or 0
     bounds = follower.qmin.copy(), follower.qmax.copy()
     u, jerk = np.zeros((len(t) - 1, model.n)), np.zeros((len(t) - 1, model.n))
     wc, zc = o.omega_centre, o.zeta_centre

@@ -282,7 +282,7 @@ def _forecast(args, path):
     from desdemona.profiles import forecast
 
     if (args.predictor == "forecast") != (args.forecast is not None):
-        raise UserError("--predictor forecast needs --forecast FILE, the vehicle's forecasts (README, 'Predictors')"
+        raise UserError("--predictor forecast needs --forecast FILE, the vehicle's forecasts (docs/guide/online.md#predictors)"
                         if args.forecast is None else "--forecast is used only with --predictor forecast")
     if args.forecast is None:
         return None
@@ -416,9 +416,9 @@ def describe(model: Model) -> str:
             pos = "unbounded"
         else:
             pos = f"[{j.position[0] * scale:g}, {j.position[1] * scale:g}] {unit}"
-        held = "" if i in c.free else f"  held at {c.fixed[i] * scale:g} {unit}"
+        held = "" if (position := c.held.get(i)) is None else f"  held at {position * scale:g} {unit}"
         lines.append(
-            f"  {'*' if i in c.free else ' '} q{i + 1} {j.name:<11}{pos:>18}"
+            f"  {'*' if position is None else ' '} q{i + 1} {j.name:<11}{pos:>18}"
             f"{f'{j.velocity * scale:.4g} {unit}/s':>14}{f'{j.acceleration * scale:.4g} {unit}/s2':>16}"
             f"{f'{j.effort / 1e3:.4g} ' + ('kN*m' if rev else 'kN'):>16}{f'{j.power / 1e3:.4g} kW':>12}{held}")
     lines += ["", "Bodies:"]

@@ -154,8 +154,8 @@ def build_parser() -> argparse.ArgumentParser:
     online.add_argument("--forecast", metavar="FILE", default=None,
                         help="with --predictor forecast: the vehicle's forecasts, a CSV file with columns "
                              "t0,t,wx,wy,wz,fx,fy,fz (or t0,t,M, as the path): for each issue time t0, the "
-                             "forecast samples from t = t0 on, times on the motion file's clock (README, "
-                             "'Predictors')")
+                             "forecast samples from t = t0 on, times on the motion file's clock "
+                             "(docs/guide/online.md#predictors)")
     online.add_argument("--initial", choices=session.ONLINE_STARTS, default=None,
                         help="the machine's state when the session starts: rest: still, where the first "
                              "plan wants it (default; the positions are chosen before the session from the "

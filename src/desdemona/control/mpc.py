@@ -16,8 +16,8 @@ the next step of the previous plan, for at most ``SHIFT_MAX``; then a braking co
 its source, is checked against every limit over the coming step before it is returned; a braking
 command is scaled down until it passes. The controller never returns a command that violates a limit.
 
-The measurements behind the defaults are in ``docs/benchmarks.md``, "Design decisions and the
-measurements behind them"; the predictors that turn what is known now into the preview are in
+The measurements behind the defaults are in docs/benchmarks/index.md#design-decisions-and-the-measurements
+(one page each, cited below); the predictors that turn what is known now into the preview are in
 :mod:`desdemona.control.predictors`; a whole closed-loop session is :func:`desdemona.control.online.run`.
 """
 
@@ -36,25 +36,17 @@ from desdemona.cueing.formulation import ProblemOptions
 from desdemona.cueing.realtime_iteration import RealTimeIteration
 from desdemona.cueing.transcription import CueingProblem
 from desdemona.machine.model import Model
-from desdemona.machine.plan import (
-    REST_RATE,
-    Plan,
-    State,
-    advance,
-    braking_jerk,
-    homing_rate,
-    settled_rate,
-    stopping_extent,
-)
+from desdemona.machine.plan import (REST_RATE, Plan, State, advance, braking_jerk, homing_rate, settled_rate,
+                                    stopping_extent)
 from desdemona.occupant.perception import THRESHOLDS, VestibularModel
 from desdemona.profiles import ALIGNED_WEIGHTS, DesiredPath, above_g, at_least_g, vertical_force
 from desdemona.support.symbolic import call
 
 #: How long [s] a fallback follows the last plan before it brakes, at most; the next plan then starts from a
-#: fresh seed (a plan's far part is no command to follow open-loop for seconds: "Fallback to the last plan").
+#: fresh seed (a plan's far part is no command to follow open-loop for seconds: docs/benchmarks/fallback-to-the-last-plan.md).
 SHIFT_MAX = 2.0
 #: Where the plan's tail doubles [s] on a configuration whose cabin tilts (``MPCOptions.far`` "auto"): beyond
-#: it a 4 s plan on ``full`` has intervals of 0.2 s, 46 intervals in all instead of 56 ("Coarse tail of the plan").
+#: it a 4 s plan on ``full`` has intervals of 0.2 s, 46 intervals in all instead of 56 (docs/benchmarks/coarse-tail-of-the-plan.md).
 FAR = 2.0
 #: How long [s] the brake holds the machine where it stopped before it brings it home (:meth:`MPC.homing`):
 #: a gap in the plans keeps the pose the next plan starts from; an outage that lasts goes home.
@@ -82,7 +74,7 @@ class MPCOptions:
     what they should have felt from step to step; null_weight : the weight of the gimbals' rates that
     turn the cabin not at all, near the inner gimbal's lock (:attr:`~desdemona.cueing.formulation.ProblemOptions.null_weight`;
     None: its on-line default with the real-time iteration, where the spin was found, and 0 with IPOPT,
-    whose thesis-timing rows of ``benchmarks/online.py`` it moved by up to 12 %, "Gimbals' lock");
+    whose thesis-timing rows of ``benchmarks/online.py`` it moved by up to 12 %, docs/benchmarks/gimbals-lock.md);
     spin_up : fraction of the yaw's acceleration limit with which a still yaw is seeded (:meth:`MPC._leave_rest`), 0: off.
 
     rti_step : the share of each real-time iteration's QP step taken from the previous plan
@@ -93,23 +85,23 @@ class MPCOptions:
     one side of the optimum to the other, cycle after cycle. A cabin that tilts reaches most sustained
     forces with gravity; there (``full``), as on ``dfs`` and ``yaw-track``, the plan hardly swings,
     and half steps lagged a fast target or led the plan, now and then, to a QP without a solution
-    ("Damped real-time iteration").
+    (docs/benchmarks/damped-real-time-iteration.md).
 
     tail_step : the plan's step [s] beyond the first ``fine`` seconds of the horizon (None: ``step``
     throughout), twice as long beyond ``far`` seconds (None: ``tail_step`` to the end; "auto":
     :data:`FAR` where the cabin tilts, as on ``full``, else to the end): what the plan does in a second
-    matters only through where it leaves the machine, and it is re-planned long before then ("Coarse
-    tail of the plan"). On ``yaw-track-cabin``, whose cycle is short anyway, the damped iteration swung
-    the yaw of a steady turn with the doubled tail (1.17 reversals a second against 0.04).
+    matters only through where it leaves the machine, and it is re-planned long before then
+    (docs/benchmarks/coarse-tail-of-the-plan.md). On ``yaw-track-cabin``, whose cycle is short anyway, the damped
+    iteration swung the yaw of a steady turn with the doubled tail (1.17 reversals a second against 0.04).
     fine_step : the plan's step [s] over the first ``fine`` seconds after the first re-plan period and
     one step more, rounded to whole steps (None: ``step``): at 100 Hz (``step`` 0.01) a 2 s plan has 37
-    intervals instead of 56, the felt force within 1 % on the corpus ("Fine part of the plan").
+    intervals instead of 56, the felt force within 1 % on the corpus (docs/benchmarks/fine-part-of-the-plan.md).
 
     reach : how far each plan looks [s], at least ``horizon`` (None: the horizon). Beyond the horizon,
     where nothing is known, the desired path is taken as held at its last previewed value: an end cost
     (eq. 3.8's K) that prices where the plan leaves the machine by what holding the path would cost from
     there; a short horizon needs it where the machine takes longer than the horizon to get where a cue
-    wants it ("Reach beyond the horizon"). The thesis takes K = 0 for the dfs (7.3). A session reaches
+    wants it (docs/benchmarks/reach-beyond-the-horizon.md). The thesis takes K = 0 for the dfs (7.3). A session reaches
     at least :func:`default_horizon` (:func:`desdemona.runs.session.online`).
     """
 
@@ -175,7 +167,7 @@ class MPCOptions:
 
         One Gauss-Newton QP per plan is enough when plans follow each other step by step, each
         linearised at the last; with a long period the plan moves far between two QPs, and the thesis
-        uses its T_c to solve to convergence (7.5) ("Plan method: real-time iteration or IPOPT")."""
+        uses its T_c to solve to convergence (7.5) (docs/benchmarks/plan-method-real-time-iteration-or-ipopt.md)."""
         if self.method != "auto":
             return self.method
         return "rti" if self.replan_steps == 1 else "nlp"
@@ -193,7 +185,7 @@ class MPCOptions:
         configuration, :class:`MPC`); uniform with a perception model whose channels are of higher
         order than one (:attr:`~desdemona.occupant.perception.VestibularModel.diagonal`). The 4 s plans of ``full``
         have 46 intervals instead of 56 with ``tail_step`` to the end: the QP's work falls, the felt force
-        stays within 1 % on the built-in paths and moves either way on real ones ("Coarse tail of the plan")."""
+        stays within 1 % on the built-in paths and moves either way on real ones (docs/benchmarks/coarse-tail-of-the-plan.md)."""
         total = int(round(self.length / self.step))
         block = 1 if self.tail_step is None else int(round(self.tail_step / self.step))
         if block <= 1 or (self.perception is not None and not self.perception.diagonal):
@@ -240,9 +232,9 @@ class Command:
 def default_horizon(config) -> float:
     """The horizon a session uses when none is given [s]: 2 s where only the yaw and the gimbals
     move (dfs), 4 s where the track does, whose position must be planned further ahead than the cue
-    ("Default horizon"). A session's plans reach at least this far whatever the horizon
+    (docs/benchmarks/default-horizon.md). A session's plans reach at least this far whatever the horizon
     (``MPCOptions.reach``)."""
-    return 4.0 if 1 in config.free else 2.0
+    return 4.0 if config.moves_track else 2.0
 
 
 class _Solved(NamedTuple):
@@ -258,7 +250,7 @@ class _Solved(NamedTuple):
 
 #: The least a placed start must save of the first plan's cost (a mean square felt error, (m/s^2)^2) to be
 #: taken: 1e-4 is an RMS of 0.01 m/s^2, a seventeenth of the smallest force threshold. Less is a place the
-#: plan does not feel (the track under a held 1 g), set by the solver's last digits ("Placed start").
+#: plan does not feel (the track under a held 1 g), set by the solver's last digits (docs/benchmarks/placed-start.md).
 PLACE_SAVING = 1e-4
 
 
@@ -267,12 +259,10 @@ class MPC:
 
     def __init__(self, model: Model, options: MPCOptions = MPCOptions(), weights=None):
         if options.far == "auto":  # where the tail doubles: where the cabin tilts (MPCOptions.tail_step)
-            options = dataclasses.replace(options, far=FAR if 3 in model.config.free else None)
+            options = dataclasses.replace(options, far=FAR if model.config.tilts_cabin else None)
         self.model, self.options = model, options
         self.deadline = options.deadline if options.deadline is not None else options.period
-        free = model.config.free
-        turns_only = 4 in free and 3 not in free and not model.config.aligned  # the cabin turns, cannot tilt
-        self.rti_step = options.rti_step or (0.5 if turns_only else 1.0)
+        self.rti_step = options.rti_step or (0.5 if model.config.turns_cabin_only else 1.0)
         steps = options.grid()
         t = np.r_[0.0, np.cumsum(steps)]
         # A placeholder path fixes the problem's shape; the preview arrives as its parameter each step.
@@ -348,7 +338,7 @@ class MPC:
         their limits (the arm's angle aside: with gravity along its axis it changes nothing felt), at
         rest, as the off-line problem's ``initial="rest"`` has them, from the first plan. A controller
         has this time before the session, and the machine is moved to the placed start beforehand; the
-        placed plan is the one the first real-time iteration is linearised at ("Placed start").
+        placed plan is the one the first real-time iteration is linearised at (docs/benchmarks/placed-start.md).
 
         Returns the start (q0, qd0). Nothing is placed, and the controller is left as it was, on a
         configuration whose cabin follows the force (it starts level at home, as off-line), with a
@@ -413,7 +403,7 @@ class MPC:
         felt force is never weaker than g, and a desired force below g is planned for as g in its
         direction, the nearest the machine can do: chased as it is, one QP per cycle linearised at the
         last plan meets residuals its Gauss-Newton model does not see and turned the cabin over
-        ("Modulus below g on-line"). The run is judged against the path as it is."""
+        (docs/benchmarks/modulus-below-g-on-line.md). The run is judged against the path as it is."""
         if isinstance(preview, DesiredPath):
             preview = self.model.config.cue_path(preview)
             t, values = preview.t, preview.M_d if self.model.config.modulus_cost else preview.S_d
@@ -479,8 +469,8 @@ class MPC:
         """Bounds on the start's positions when it is placed: each joint within its limits, except
         the arm, which stays at ``q``: with gravity along its axis its angle changes nothing felt."""
         lower, upper = self.problem.position_bounds()
-        if 0 in self.model.config.free:
-            k = self.model.config.free.index(0)
+        if self.model.config.turns_arm:
+            k = self.model.config.yaw
             lower[k] = upper[k] = q[k]
         return lower, upper
 
@@ -494,9 +484,9 @@ class MPC:
         ("without influencing the optimization results, q1' can be assumed positive", 7.4.2), so the
         cue has a mirror image of every plan, and a plan linearised on a slowing arm can slide into
         the mirror: through zero rate (where the modulus is only g) and up the other way, instead of
-        speeding up again ("One-way arm on dfs").
+        speeding up again (docs/benchmarks/one-way-arm-on-dfs.md).
         """
-        prob, k = self.problem, self.model.config.free.index(0)
+        prob, k = self.problem, self.model.config.yaw
         jerk = self.limits.jerk[k] if self.smooth else np.inf
         settle = abs(a[k]) / jerk
         rate = settled_rate(qd[k], a[k], jerk)
@@ -528,14 +518,14 @@ class MPC:
         there, so a solve linearised at a still yaw returns a still yaw forever, and a run from rest never turns the
         arm. Where the yaw's fastest rate over the seed is below ``REST_RATE``, the seed's yaw acceleration is drawn
         towards ``options.spin_up`` times its limit (in the direction it already turns), the more the stiller it is:
-        the linearisation then sees what turning would give, and the solve decides whether to turn ("Spin-up from
-        rest"). Drawn by degrees, not switched: a seed switched to a spin-up whenever a slow turn dipped below the
-        threshold kicked every joint each time ("Damped real-time iteration"). Not seeded where the preview asks for
-        a modulus of g or less (:meth:`_solve`'s ``turning``, "A steady spin of the cabin on `dfs`").
+        the linearisation then sees what turning would give, and the solve decides whether to turn
+        (docs/benchmarks/spin-up-from-rest.md). Drawn by degrees, not switched: a seed switched to a spin-up whenever a slow turn dipped below the
+        threshold kicked every joint each time (docs/benchmarks/damped-real-time-iteration.md). Not seeded where the preview asks for
+        a modulus of g or less (:meth:`_solve`'s ``turning``, docs/benchmarks/a-steady-spin-of-the-cabin-on-dfs.md).
         """
-        if 0 not in self.model.config.free or self.options.spin_up == 0.0:
+        if not self.model.config.turns_arm or self.options.spin_up == 0.0:
             return u
-        k = self.model.config.free.index(0)
+        k = self.model.config.yaw
         rates = qd[k] + np.cumsum(u[:, k] * self.problem.steps)
         stillness = 1.0 - float(np.max(np.abs(rates))) / REST_RATE
         if stillness <= 0.0:
@@ -602,6 +592,6 @@ class MPC:
     def homing(self, q, qd) -> np.ndarray:
         """The rates that take a braked machine home (:func:`~desdemona.machine.plan.homing_rate`): where a still
         machine cues the last present force best (:func:`~desdemona.baselines.classical.still_home`)."""
-        free, force = self.model.config.free, None if self.present is None else self.present[3:]
+        force = None if self.present is None else self.present[3:]
         home = still_home(q, self.model, force)
-        return homing_rate(q, qd, home, np.isin(np.arange(len(q)), self.limits.bounded), free.index(0) if 0 in free else None)
+        return homing_rate(q, qd, home, np.isin(np.arange(len(q)), self.limits.bounded), self.model.config.yaw)

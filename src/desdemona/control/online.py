@@ -32,7 +32,7 @@ from desdemona.check.simulate import (
 )
 from desdemona.control.mpc import MPC, MPCOptions
 from desdemona.control.predictors import PREDICTORS, predictor
-from desdemona.machine.kinematics import GIMBALS, gimbal_twin, wrapped
+from desdemona.machine.kinematics import gimbal_twin, wrapped
 from desdemona.machine.model import Model
 from desdemona.machine.plan import Plan, start_state
 from desdemona.profiles import DesiredPath
@@ -165,13 +165,12 @@ def _loop_start(model: Model, q0, qd0) -> np.ndarray:
     steers from, :func:`~desdemona.machine.kinematics.gimbal_twin`: the same pose and S. The loop steers its
     gimbal angles from home, and from the other branch it turned the cabin through half a turn
     (b737-steady-turn on full: felt direction 88 deg, felt force RMS 3.85 against 1.48)."""
-    free = model.config.free
-    if not all(joint in free for joint in GIMBALS):
+    if model.config.gimbals is None:
         return q0
-    gimbals = [free.index(joint) for joint in GIMBALS]  # the outer gimbal first
+    gimbals = list(model.config.gimbals)  # the outer gimbal first
     if np.any(np.asarray(qd0)[gimbals] != 0.0) or abs(wrapped(q0[gimbals[0]])) <= np.pi / 2:
         return q0
-    twin = gimbal_twin(model.config.expand(q0))[list(free)]
+    twin = model.config.select(gimbal_twin(model.config.expand(q0)))
     limits = model.limits
     return twin if np.all((twin >= limits.position_min) & (twin <= limits.position_max)) else q0
 

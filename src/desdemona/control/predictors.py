@@ -63,7 +63,7 @@ HOLD_BAND = 2.0
 #: washout's 9.2, correlation -0.58, false rotation 213 deg/s). A modulus path (``dfs``) is held as it
 #: is: there a modulus below g is planned as g and cannot turn the cabin over, and the arm's spin-up
 #: needs a sustained modulus seen early (measured worse with the persistence on 6 of the 7 corpus
-#: cases); see docs/benchmarks.md, "Hold predictor".
+#: cases); see docs/benchmarks/hold-predictor.md.
 HOLD_PERSISTENCE = 0.5
 
 #: The share of a channel's present departure from rest below which its cue counts as begun afresh.

@@ -9,7 +9,7 @@ controls, each solved three times): two thirds of the QP's time is in those kern
 processors with AVX2 and FMA (its ``X64_INTEL_HASWELL`` target: every x86-64 server processor since
 2013) solves the same QPs in the same iterations 2.2-2.8x faster: median 6.7-6.9 -> 2.4-3.2 ms, p99
 11.2-11.5 -> 3.9-4.4 ms; the `dfs` QPs at 100 Hz (56 intervals of 12 states) 2.39 -> 1.18 ms median.
-See "QP linear algebra" in docs/benchmarks.md; for fatrop, "fatrop on BLASFEO for the processor".
+See docs/benchmarks/qp-linear-algebra.md; for fatrop, docs/benchmarks/fatrop-on-blasfeo-for-the-processor.md.
 
 So, where it can, :func:`load` compiles the BLASFEO sources kept in ``data/blasfeo`` (version
 :data:`VERSION`, the one CasADi's HPIPM and fatrop are linked against; BSD 2-clause, ``LICENSE.txt``

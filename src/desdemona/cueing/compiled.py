@@ -90,7 +90,7 @@ def cpu_flags() -> set[str]:
 def processor_flags() -> tuple[str, ...]:
     """``-mavx2 -mfma`` on an x86-64 processor that has them, else nothing: with optimisation the
     stages' Jacobian and Hessian then evaluate in 13 % less time (fused multiply-adds; measured on
-    ``full``, "fatrop on BLASFEO for the processor" in docs/benchmarks.md). The flags are part of the cache
+    ``full``, docs/benchmarks/fatrop-on-blasfeo-for-the-processor.md). The flags are part of the cache
     key, so a cache shared with another processor compiles its own library."""
     if platform.machine() in ("x86_64", "AMD64") and {"avx2", "fma"} <= cpu_flags():
         return ("-mavx2", "-mfma")

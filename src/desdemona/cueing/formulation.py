@@ -57,11 +57,11 @@ from desdemona.occupant.perception import VestibularModel
 from desdemona.profiles import DesiredPath
 
 #: How much more a felt rotation beyond :attr:`ProblemOptions.rotation_band` (``rotation_ceiling``)
-#: weighs, on top of its weight: this many times it ("Felt rotation band", "Felt rotation ceiling").
+#: weighs, on top of its weight: this many times it (docs/benchmarks/felt-rotation-band.md, docs/benchmarks/felt-rotation-ceiling.md).
 BAND_WEIGHT = 9.0
 CEILING_WEIGHT = 100.0
 #: On-line on ``dfs``, the weight of the gimbals' motion that turns the cabin not at all near the inner
-#: gimbal's lock (:attr:`ProblemOptions.null_weight`, "Gimbals' lock").
+#: gimbal's lock (:attr:`ProblemOptions.null_weight`, docs/benchmarks/gimbals-lock.md).
 NULL_WEIGHT = 0.1
 #: The most entries of the linear map through which a controller perceives its horizon
 #: (:meth:`Formulation.perceive`): 16 MB; a longer horizon is perceived step by step.
@@ -74,8 +74,8 @@ WALL_WIDTH, WALL = 0.005, 1.0
 @dataclass(frozen=True)
 class ProblemOptions:
     """How to pose and solve the cueing problem. The measurements behind the defaults are in
-    ``docs/benchmarks.md``, "Design decisions and the measurements behind them" (the headings in
-    quotes below).
+    docs/benchmarks/index.md#design-decisions-and-the-measurements, one page each (cited
+    below).
 
     h_u : control step [s] (thesis h_qdd, section 5.3).
     steps : the intervals' lengths [s] where the grid is not uniform (an on-line horizon fine near now
@@ -83,7 +83,7 @@ class ProblemOptions:
         channels are of first order at most (:attr:`~desdemona.occupant.perception.VestibularModel.diagonal`),
         whose discretisation has a closed form in the step.
     substeps : sub-steps per control interval for cost and limits. Two are enough where S_d is smooth
-        on the scale of h_u ("Sub-steps").
+        on the scale of h_u (docs/benchmarks/sub-steps.md).
     initial : "free" (optimised, section 5.2), "rest" (at rest, position free; on ``dfs`` at home, the
         cabin level) or "given" (``initial_state``).
     initial_state : (q0, qd0) of the free joints when initial == "given".
@@ -108,7 +108,7 @@ class ProblemOptions:
     limit_curvature : put the second derivatives of the torque and power limits into IPOPT's Hessian.
         They are almost all of the Hessian's operations on ``full`` and change neither the optimum nor,
         measured, the iteration count: None leaves them out of IPOPT's on more than three joints
-        ("Limit curvature"); fatrop keeps them (without, it takes up to twice the iterations on
+        (docs/benchmarks/limit-curvature.md); fatrop keeps them (without, it takes up to twice the iterations on
         ``full``). Every other term (cost, gaps, positions, braking) stays exact.
     jerk_weight : the rho of the jerk, against j_max (with jerk limits): a plan that used the whole
         jerk limit all the time would pay as much as sqrt(rho) m/s^2 of RMS error. It keeps the joints
@@ -118,7 +118,7 @@ class ProblemOptions:
         Q). With it, joints that move only unweighted channels (on ``full``, the gimbals turning the
         cabin about the felt force) stop being flat directions of the cost. None: 0.003 on
         configurations of more than three joints, 0 otherwise; on-line (``parametric``) 0.01: one QP
-        per cycle, linearised at the last plan, suffers more from flat directions ("Unweighted channels").
+        per cycle, linearised at the last plan, suffers more from flat directions (docs/benchmarks/unweighted-channels.md).
     compile : evaluate the stages' functions compiled to machine code, kept in a cache on disk
         (:mod:`desdemona.cueing.compiled`; the results are the same, about six times faster to evaluate).
         None: where the interpreted evaluation would take long (``COMPILE_WORK``) or the library is
@@ -128,31 +128,31 @@ class ProblemOptions:
         the exact Hessian from where it got (its multipliers kept). Far from the optimum the exact
         Hessian of the ``dfs`` modulus cost is indefinite, and its corrected steps crawl; near it
         Gauss-Newton converges only linearly where the target is out of reach. None: on the
-        configurations that follow the modulus, `dfs` and `dfs-yaw` ("Gauss-Newton first").
+        configurations that follow the modulus, `dfs` and `dfs-yaw` (docs/benchmarks/gauss-newton-first.md).
     wall : a smooth wall in the cost over the last ``WALL_WIDTH`` of each bounded joint's travel at
         either end: ``wall * (depth / width)^2`` [m/s^2], weighed like a felt error of weight 1, so
         ``wall`` at the limit itself. The limit stays a constraint; the wall keeps the optimum off it.
         With the jerk as the control a position limit is a third-order state constraint, which an
         optimum meets at isolated touch points rather than along an arc; on real recordings the
         track grazed its end there and IPOPT's dual infeasibility stayed at that one node for hundreds
-        of iterations ("Wall before the position limits"). 0 (the default): none, the thesis'
+        of iterations (docs/benchmarks/wall-before-the-position-limits.md). 0 (the default): none, the thesis'
         formulation; a session (:func:`desdemona.runs.session.offline`, :func:`desdemona.runs.session.online`)
         takes ``WALL``: on-line, a track parked against its end dithered there without it.
     rotation_band : with a perception model, a felt rotation beyond this many perception thresholds of
         its canal channel (either way) costs :data:`BAND_WEIGHT` times its weight more, on the excess: a
         plan may use a rotation the occupant hardly feels (the arm's slow spin-up, a tilt below the
-        threshold) and pays steeply for one they would ("Felt rotation band"). None: no band.
+        threshold) and pays steeply for one they would (docs/benchmarks/felt-rotation-band.md). None: no band.
         ``rotation_ceiling``, the same with :data:`CEILING_WEIGHT` on top: the arm spins up no faster
-        than felt as that much rotation ("Felt rotation ceiling").
+        than felt as that much rotation (docs/benchmarks/felt-rotation-ceiling.md).
     null_weight : where the three gimbals are free, the weight of their rates that turn the cabin not at
         all: at the inner gimbal's lock (q5 = +-90 deg) the outer gimbal and the cabin turning against
         each other (:func:`~desdemona.machine.kinematics.gimbal_null_rate`), a motion no channel of S sees. Without it a controller's
         plans let that motion run up to the joints' rate limit (the outer gimbal at 180 deg/s and
         6 kW on a recorded sortie on ``dfs``). None: :data:`NULL_WEIGHT` on-line (``parametric``) on the
-        configurations whose cabin follows the force (``dfs``), else 0 ("Gimbals' lock").
+        configurations whose cabin follows the force (``dfs``), else 0 (docs/benchmarks/gimbals-lock.md).
     spin_weight : with a perception model, the weight of the spin about the occupant's vertical as it is
         (against none), as a share of its channel's: a steady spin the canals no longer feel still costs
-        ("A steady spin of the cabin on `dfs`"). 0: none; a session takes :data:`~desdemona.runs.session.SPIN_WEIGHT` on ``dfs``.
+        (docs/benchmarks/a-steady-spin-of-the-cabin-on-dfs.md). 0: none; a session takes :data:`~desdemona.runs.session.SPIN_WEIGHT` on ``dfs``.
     """
 
     h_u: float = 0.05
@@ -222,7 +222,7 @@ def default_jerk_weight(config, online: bool = False) -> float:
     configuration whose cabin follows the force (``dfs``) 5 off-line and 3 on-line. There the arm and
     gimbals swing the force's direction and would reverse their accelerations often for little cue;
     a controller that sees only its horizon pays for every hesitation, so it is weighted less than
-    the off-line plan, which sees the whole path ("Off-line jerk weight", "On-line jerk weight")."""
+    the off-line plan, which sees the whole path (docs/benchmarks/off-line-jerk-weight.md, docs/benchmarks/on-line-jerk-weight.md)."""
     if not config.aligned:
         return 1.0
     return 3.0 if online else 5.0
@@ -417,7 +417,7 @@ class Formulation:
             powers.append(power)
             positions.append(qj)
         residuals, z_next = self._residuals(values, a, jerk, x[self.n_motion:], data, positions)
-        null = gimbal_null_rate(q, qd, self.model.config.free)
+        null = gimbal_null_rate(q, qd, self.model.config.gimbals)
         if null is not None and self.null_weight > 0:
             residuals.append(ca.sqrt(self.null_weight * h_u * data[2]) * null)
         r = ca.vertcat(*residuals)

@@ -139,7 +139,6 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
 
     a0 = None if problem.options.initial == "free" else start_acceleration(problem.options.initial_state, n)
 
-    free = model.config.free
     fixed = problem.options.initial != "free"  # the start is fixed (at rest, or given)
     random_rate = spin_share(problem) if fixed else None
     if fixed:
@@ -155,7 +154,7 @@ def initial_guesses(problem: CueingProblem, count: int, seed: int) -> list[tuple
         # centripetal specific force points along the mean demanded f_y. The "not turning" row gets a
         # slow turn: at exactly zero yaw rate the centripetal terms have no gradient (a stationary
         # point where the solver stalls).
-        track = free.index(1) if 1 in free else None
+        track = model.config.track
         demand = float(np.mean(problem.path.S_d[:, 4]))
         side = -1.0 if demand >= 0 else 1.0
         spin = 0.5 * lim.velocity[0]
@@ -215,7 +214,7 @@ def spin_share(problem: CueingProblem, floor: float = SPIN_SHARE) -> float:
     A guess that turns at another rate than the path's sustained force asks has to be brought
     to it by the solver over every interval of the path, one at a time: the arm's acceleration limit
     blocks each step, too slow a spin on the F-16 turn on ``full``, too fast a one on the 747
-    take-off ("Spin of the guesses" in docs/benchmarks.md).
+    take-off (docs/benchmarks/spin-of-the-guesses.md).
     """
     held = float(np.median(sizing.held_modulus(problem.path)))
     return float(np.clip(_held_share(problem.model, held), floor, 1.0))
@@ -240,11 +239,11 @@ def spin_following(problem: CueingProblem, direction: float, floor: float = SPIN
     will ask (a pass backwards), from the start's rate (a pass forwards), and braked to rest at the
     end when the problem ends at rest. A path whose sustained force changes (a sortie's turns and
     straight stretches) is then not left to the solver to spin up and down node by node against the
-    arm's limits ("Spin of the guesses" in docs/benchmarks.md). From node ``start`` on, at the rate
+    arm's limits (docs/benchmarks/spin-of-the-guesses.md). From node ``start`` on, at the rate
     ``rate0`` there (default: the problem's start), and zero before it."""
     model, h, N = problem.model, problem.steps, problem.N
     lim, u = model.limits, np.zeros((N, problem.model.n))
-    if model.config.free[:1] != (0,):  # no yaw to turn
+    if not model.config.turns_arm:
         return u
     held = np.interp(problem.t_nodes, problem.path.t, sizing.held_modulus(problem.path))
     rate = direction * lim.velocity[0] * np.clip(_held_share(model, held), floor, 1.0)
@@ -269,7 +268,7 @@ def _guesses_from_start(problem: CueingProblem, rate: float) -> list[tuple[str, 
     model, guesses = problem.model, []
     q0, qd0 = _start(problem)
     a0 = start_acceleration(problem.options.initial_state, model.n)
-    track = model.config.free.index(1) if 1 in model.config.free else None
+    track = model.config.track
     origin = "from rest" if not (np.any(qd0) or np.any(a0)) else "from the start"  # a later window's moves
     rows = [(f"{origin}: yaw spun up", 0.0, 1.0), (f"{origin}: yaw spun up the other way", 0.0, -1.0)]
     if track is not None and problem.options.initial == "rest" and problem.path.S_d is not None:
@@ -292,8 +291,7 @@ def settled(problem: CueingProblem, qd, a, accelerations, first: int = 0) -> np.
     from a moving start (a window after the first) would otherwise carry the start's rates on at zero
     acceleration into the end of the travel, where :meth:`CueingProblem.guess` clips its positions and
     leaves its gaps open; a joint that turns freely (the yaw, the gimbals of ``full`` and ``dfs``)
-    keeps its rate, which a steady turn needs ("Later windows' guesses brought to rest" in
-    docs/benchmarks.md)."""
+    keeps its rate, which a steady turn needs (docs/benchmarks/later-windows-guesses-brought-to-rest.md)."""
     lim, u = problem.model.limits, np.array(accelerations, dtype=float)
     joints = np.isfinite(lim.position_min) | np.isfinite(lim.position_max)
     if not joints.any():

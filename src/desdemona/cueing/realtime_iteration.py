@@ -15,7 +15,7 @@ from desdemona.support.symbolic import bound
 # it is built as: one stage function called once per interval, so the C source stays small. Measured
 # on 2026-12-02, 4 s horizon on full at 50 Hz (56 intervals): 0.43-0.48 ms a cycle, compiled in 3 s,
 # against 3.4 ms flattened and interpreted and 8.6 ms flattened and compiled at -O0 (the straight-line
-# code of 740,000 instructions); the same numbers bit for bit ("Compiled QP data"). Below
+# code of 740,000 instructions); the same numbers bit for bit (docs/benchmarks/compiled-qp-data.md). Below
 # RTI_COMPILE_WORK instructions of the flat graph the virtual machine is as fast (yaw-track-cabin's
 # 112,000: 0.3 ms either way) and nothing is compiled.
 RTI_FLAGS = ("-O2", "-fPIC", "-shared")
@@ -78,7 +78,7 @@ class RealTimeIteration:
         no argument or result is converted: H and A pass from the data to the QP without leaving
         them. Measured on 2026-12-03, one cycle's QP repeated 500 times: on ``dfs`` at 100 Hz (56
         intervals) 2.7 -> 1.4 ms median a step, on ``full`` at 50 Hz (46 intervals) 6.5-6.9 -> 5.0-5.1
-        ms, the same bits ("Real-time iteration without conversions")."""
+        ms, the same bits (docs/benchmarks/real-time-iteration-without-conversions.md)."""
         data, qp = self.data, self.qp
         self._w, self._p = np.zeros(data.nnz_in(0)), np.zeros(data.nnz_in(1))
         self._out = [np.zeros(data.nnz_out(i)) for i in range(data.n_out())]

@@ -163,10 +163,10 @@ def radii(model: Model) -> list[float]:
     """The cabin's distances from the yaw axis [m] that the configuration can hold: the track's two
     ends where it moves (0 where it has no bounds), else its fixed position."""
     config, lim = model.config, model.limits
-    if 1 in config.free:
-        k = config.free.index(1)
+    if config.moves_track:
+        k = config.track
         return [r for r in (lim.position_min[k], lim.position_max[k]) if math.isfinite(r)] or [0.0]
-    return [config.fixed[1]]
+    return [config.held_track]
 
 
 def held_modulus(path: DesiredPath) -> np.ndarray:
@@ -183,8 +183,8 @@ def steady_modulus_limit(model: Model) -> float:
     best = float(model.params.gravity)
     for radius in radii(model):
         q, still = np.zeros(model.n), np.zeros(model.n)
-        if 1 in config.free:
-            q[config.free.index(1)] = radius
+        if config.moves_track:
+            q[config.track] = radius
 
         def state(rate):
             qd = np.zeros(model.n)
@@ -219,7 +219,7 @@ def unreachable(path: DesiredPath, model: Model) -> dict:
     t = path.t
     M = path.M_d
     steady = held_modulus(path)
-    low = (M if 2 not in model.config.free else steady) < g - THRESHOLDS[5]  # without the heave: always
+    low = (M if not model.config.moves_heave else steady) < g - THRESHOLDS[5]  # without the heave: always
     limit = steady_modulus_limit(model)
     high = steady > limit * (1.0 + 1e-6)
     return {"below_g": _share(t, M, low, g, np.min), "above_steady_limit": _share(t, M, high, limit, np.max)}

@@ -45,7 +45,8 @@ MAP_MODE, MAP_THREADS = assembly.MAP_MODE, assembly.MAP_THREADS
 COMPILED = ("hess", "jac", "grad")
 COMPILE_WORK = 2_000_000
 # With fatrop every stage function is compiled, at -O1 with fused multiply-adds where the processor has
-# them: the F-16 turn's 1,100 stage Hessians on `full` take 25 ms (28 without them); docs/benchmarks.md.
+# them: the F-16 turn's 1,100 stage Hessians on `full` take 25 ms (28 without them);
+# docs/benchmarks/fatrop-on-blasfeo-for-the-processor.md.
 FATROP_COMPILED = ("stage", "jac", "jac0", "grad", "hess", "hess0", "terminal", "terminal_jac", "terminal_grad",
                    "terminal_hess")
 FATROP_FLAGS = ("-O1", "-fPIC", "-shared", *compiled.processor_flags())
@@ -54,12 +55,12 @@ FATROP_FLAGS = ("-O1", "-fPIC", "-shared", *compiled.processor_flags())
 FATROP_SOLVERS: dict[str, ca.Function] = {}
 FATROP_KEPT = 2
 # MUMPS' fill-reducing ordering: approximate minimum degree with quasi-dense rows (QAMD); IPOPT's time
-# per iteration against MUMPS' own choice: 24 against 36 ms on the catapult on full ("MUMPS ordering").
+# per iteration against MUMPS' own choice: 24 against 36 ms on the catapult on full (docs/benchmarks/mumps-ordering.md).
 MUMPS_ORDERING = 6
 
 #: With ``ProblemOptions.gauss_newton_first``: the Gauss-Newton phase stops at this tolerance or after
 #: this many iterations, and the exact phase starts from there with IPOPT's warm start
-#: ("Gauss-Newton first" in docs/benchmarks.md).
+#: (docs/benchmarks/gauss-newton-first.md).
 GAUSS_NEWTON_TOL, GAUSS_NEWTON_ITER = 1e-3, 30
 WARM_START = {"warm_start_init_point": "yes", "mu_init": 1e-6, "warm_start_bound_push": 1e-9,
               "warm_start_bound_frac": 1e-9, "warm_start_slack_bound_push": 1e-9,
@@ -272,8 +273,7 @@ class CueingProblem(Formulation):
             lo, hi = lbx[last], ubx[last]  # views into lbx, ubx
             lo[moving] = hi[moving] = 0.0
             if o.final == "centre":
-                prismatic = [k for k, i in enumerate(self.model.config.free)
-                             if self.model.params.joints[i].kind == "prismatic"]
+                prismatic = np.flatnonzero(self.model.prismatic)
                 lo[prismatic] = hi[prismatic] = 0.0
         self.lbx, self.ubx = lbx, ubx
         self.lbg, self.ubg = self._constraint_bounds(None)
@@ -320,7 +320,7 @@ class CueingProblem(Formulation):
         """Whether the arm (q1) is free and without position limits: then the problem is the same
         whatever its angle, and the start fixes it at 0."""
         config, lim = self.model.config, self.model.limits
-        return bool(config.free and config.free[0] == 0 and not np.isfinite(lim.position_min[0])
+        return bool(config.turns_arm and not np.isfinite(lim.position_min[0])
                     and not np.isfinite(lim.position_max[0]))
 
     def bounds_from(self, q0, qd0=None, a0=None) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:

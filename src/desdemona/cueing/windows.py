@@ -35,13 +35,12 @@ from desdemona.machine.model import Model
 from desdemona.profiles import DesiredPath
 
 #: Recordings up to this long [s] are solved whole by default, longer ones in windows
-#: ("Windows" in docs/benchmarks.md).
+#: (docs/benchmarks/windows.md).
 WHOLE_UP_TO = 150.0
 
 #: The default window [s]: the shortest that holds two overlaps on the default machine. Against 60 s the
 #: ten-minute sortie on ``full`` converged in every window instead of stopping at the iteration cap in
-#: three, in less time; the corpus' windowed cases as good or better ("Windows of 30 s" in
-#: docs/benchmarks.md).
+#: three, in less time; the corpus' windowed cases as good or better (docs/benchmarks/windows-of-30-s.md).
 DEFAULT_WINDOW = 30.0
 
 #: The shortest overlap [s]: the part of a window solved but not kept.

@@ -15,7 +15,15 @@ stay in the dynamics ("rigid connections", section 5.5), and their forces are no
   (:func:`desdemona.machine.kinematics.gimbal_alignment`) and not planned. Kept to reproduce its figures.
 - ``yaw-track``: yaw and track, the two-joint model of appendix B and chapters 4-5.
 - ``yaw-track-cabin``: yaw, track and cabin yaw (q5), the three-joint model of section 5.6.
+- ``yaw-heave-cabin``: yaw, heave and cabin yaw (q5), the track held at its outer end (q2 = -4 m):
+  the arm's force (centripetal and tangential) turned by the cabin's yaw onto the wanted horizontal
+  direction, the heave for the vertical. Held at the end, as in ``dfs``, because a held track makes
+  every horizontal force from the arm alone, f = R qd1^2 and R qdd1 (eq. 7.7): at the largest radius
+  a force takes the slowest yaw rate, so the least rotation that the occupant feels and did not ask for.
 - ``full``: all six joints.
+
+Only this module numbers the joints: every other layer asks a configuration what it can do (moves
+the track, tilts the cabin, takes a modulus, ...) and where a joint sits among the free ones.
 """
 
 from __future__ import annotations
@@ -25,7 +33,17 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
+from desdemona.machine.kinematics import GIMBALS
 from desdemona.machine.params import JOINT_NAMES, MachineParams
+
+#: The joints q1..q6 (eq. A.7) as 0-based indices into a full joint vector.
+YAW, TRACK, HEAVE = range(3)
+OUTER_GIMBAL, INNER_GIMBAL, CABIN_GIMBAL = GIMBALS
+
+
+def _joint(joint: int, doc: str) -> property:
+    """A property of :class:`Configuration`: where ``joint`` sits among its free joints, None where held."""
+    return property(lambda config: config._slot(joint), doc=doc)
 
 
 @dataclass(frozen=True)
@@ -44,6 +62,88 @@ class Configuration:
     modulus_cost: bool
     description: str
     aligned: bool = False
+
+    def __post_init__(self):
+        if list(self.free) != sorted(set(self.free)) or not set(self.free) <= set(range(6)) or not self.free:
+            raise ValueError(f"configuration {self.name!r}: free joints {self.free} must be distinct indices "
+                             "0..5 in increasing order")
+        if len(self.fixed) != 6:
+            raise ValueError(f"configuration {self.name!r}: {len(self.fixed)} held positions, not 6")
+
+    def _slot(self, joint: int) -> int | None:
+        return self.free.index(joint) if joint in self.free else None
+
+    # Where each joint sits among the free ones (its index into a free-joint vector), None where held.
+    # The free joints keep the order q1..q6, so the yaw, where it is free, is the first.
+    yaw = _joint(YAW, "The central yaw q1 among the free joints, None where held.")
+    track = _joint(TRACK, "The linear track q2 among the free joints, None where held.")
+    heave = _joint(HEAVE, "The heave q3 among the free joints, None where held.")
+    outer_gimbal = _joint(OUTER_GIMBAL, "The outer gimbal q4 (about x: roll) among the free joints, None where held.")
+    inner_gimbal = _joint(INNER_GIMBAL, "The inner gimbal q5 (about z: the cabin's yaw) among the free joints, "
+                                        "None where held.")
+    cabin_gimbal = _joint(CABIN_GIMBAL, "The cabin gimbal q6 (about y: pitch) among the free joints, None where held.")
+
+    @property
+    def gimbals(self) -> tuple[int, int, int] | None:
+        """(outer, inner, cabin) gimbals among the free joints where all three are free, else None."""
+        slots = tuple(self._slot(j) for j in GIMBALS)
+        return None if None in slots else slots
+
+    # What the configuration can do
+
+    @property
+    def turns_arm(self) -> bool:
+        """The central yaw q1 is free."""
+        return YAW in self.free
+
+    @property
+    def moves_track(self) -> bool:
+        """The track q2 is free: the cabin's radius can change."""
+        return TRACK in self.free
+
+    @property
+    def moves_heave(self) -> bool:
+        """The heave q3 is free: the cabin can drop or rise (a felt force below g for a moment)."""
+        return HEAVE in self.free
+
+    @property
+    def tilts_cabin(self) -> bool:
+        """The outer gimbal q4 is free: the cabin can roll its vertical off the arm's (tilt
+        coordination, or the force turned onto the occupant's vertical)."""
+        return OUTER_GIMBAL in self.free
+
+    @property
+    def turns_cabin_only(self) -> bool:
+        """The cabin can turn about its vertical (the inner gimbal q5) but not tilt, and does not follow
+        the force along the occupant's vertical (``yaw-track-cabin``)."""
+        return INNER_GIMBAL in self.free and OUTER_GIMBAL not in self.free and not self.aligned
+
+    @property
+    def yaw_and_gimbals(self) -> bool:
+        """The yaw is free and every other free joint is a gimbal: the classical loop of figure 7.4
+        (the yaw from the modulus, the gimbals after the force's direction) applies (``dfs``,
+        ``dfs-yaw``)."""
+        return self.free[:1] == (YAW,) and set(self.free[1:]) <= set(GIMBALS)
+
+    @property
+    def held_track(self) -> float:
+        """The track's held position q2 [m]: the arm's radius (its size) where the track does not move;
+        unused (0) where it does."""
+        return self.fixed[TRACK]
+
+    @property
+    def held(self) -> dict[int, float]:
+        """{joint index into q1..q6: its held position [rad | m]} of every joint that does not move."""
+        return {i: self.fixed[i] for i in range(6) if i not in self.free}
+
+    def select(self, x):
+        """The free joints' values (..., n) of full (..., 6) joint values ``x`` (the inverse of
+        :meth:`expand`)."""
+        return np.asarray(x, dtype=float)[..., list(self.free)]
+
+    def summary(self) -> dict:
+        """The configuration as a summary.json records it: name, free joints, held positions."""
+        return {"name": self.name, "free_joints": list(self.joint_names), "held_positions": list(self.fixed)}
 
     @property
     def default_weights(self) -> str:
@@ -139,6 +239,11 @@ CONFIGURATIONS: dict[str, Configuration] = {
                       "yaw and linear track (appendix B, chapters 4-5)"),
         Configuration("yaw-track-cabin", (0, 1, 4), (0.0,) * 6, False,
                       "yaw, track and cabin yaw q5 (section 5.6)"),
+        # the track held at its outer end: every horizontal force comes from the arm (f = R qd1^2,
+        # R qdd1, eq. 7.7), and at the largest radius a force takes the slowest yaw rate, so the least
+        # rotation the occupant feels and did not ask for; the cabin's yaw q5 turns it where wanted
+        Configuration("yaw-heave-cabin", (0, 2, 4), (0.0, -4.0, 0.0, 0.0, 0.0, 0.0), False,
+                      "yaw, heave and cabin yaw q5, track held at -4 m: the arm's force turned by the cabin"),
         Configuration("full", (0, 1, 2, 3, 4, 5), (0.0,) * 6, False,
                       "all six joints"),
     )

@@ -173,14 +173,16 @@ def S(q, qd, qdd, gravity: float = 9.81, head_offset: tuple[float, float, float]
     return call(path_function(float(gravity), tuple(float(x) for x in head_offset)), q, qd, qdd)
 
 
-def gimbal_null_rate(q, qd, free) -> ca.SX | None:
+def gimbal_null_rate(q, qd, gimbals) -> ca.SX | None:
     """The part of the outer gimbal's and the cabin's rates that turns the cabin not at all, weighed by
     how near the inner gimbal is to its lock: c^2 (qd4 - c qd6) / 2, where c = -sin q5 is the cosine
     between the outer gimbal's axis and the cabin's (consecutive axes of the chain are perpendicular,
     appendix A). At the lock (c = +-1) the two axes line up and qd4 = -c qd6 turns the cabin by
-    nothing; away from it (c = 0) the term vanishes. None unless all three gimbals are free."""
-    if not all(j in free for j in (3, 4, 5)):
+    nothing; away from it (c = 0) the term vanishes. ``gimbals``: the (outer, inner, cabin) gimbals'
+    indices into q and qd (:attr:`~desdemona.machine.configs.Configuration.gimbals`); None (the result
+    too) unless all three are free."""
+    if gimbals is None:
         return None
-    outer, inner, cabin = (free.index(j) for j in (3, 4, 5))
+    outer, inner, cabin = gimbals
     c = -ca.sin(q[inner])
     return c ** 2 * (qd[outer] - c * qd[cabin]) / 2

@@ -13,6 +13,7 @@ import functools
 from dataclasses import dataclass
 
 import casadi as ca
+import numpy as np
 
 from desdemona.machine import dynamics
 from desdemona.machine.configs import Configuration, Limits, get_configuration
@@ -47,6 +48,13 @@ class Model:
         """CasADi Functions of the free joints: S, omega_cabin, f_cabin, modulus, tau, power, M, C, N,
         forward, kinetic_energy, potential_energy."""
         return dynamics.functions(self.params, self.config)
+
+    @functools.cached_property
+    def prismatic(self) -> np.ndarray:
+        """(n,) True where a free joint moves along a line (the track, the heave), False where it turns."""
+        prismatic = np.array([self.params.joints[i].kind == "prismatic" for i in self.config.free])
+        prismatic.setflags(write=False)
+        return prismatic
 
     @functools.cached_property
     def limits(self) -> Limits:

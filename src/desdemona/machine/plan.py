@@ -263,8 +263,8 @@ def braking_jerk(q, qd, a, h: float, limits, braking: float, rate=0.0) -> np.nda
 #: 1 deg/s (three in line at most 3 deg/s, the canals' threshold of roll), the track and heave at 0.03
 #: m/s, each slowing in proportion to the way left within the last HOMING_TIME [s] of it, so that it
 #: settles without overshoot (0.5 deg/s^2 and 0.015 m/s^2 at most). The brake reaches the rate within
-#: its T (0.27 s): 0.11 m/s^2 on the track, under the otoliths' threshold of 0.17 ("Return home in an
-#: outage").
+#: its T (0.27 s): 0.11 m/s^2 on the track, under the otoliths' threshold of 0.17
+#: (docs/benchmarks/return-home-in-an-outage.md).
 HOMING_RATE, HOMING_TIME = (np.radians(1.0), 0.03), 2.0
 
 #: Below this rate [rad/s] the arm counts as still (0.01 m/s^2 of centripetal force at 4 m).
@@ -322,8 +322,7 @@ def settled_rates(qd, a, J, eps: float = STOP_EPS):
     ``lowest >= -V`` keep the same states as ``|settled_rate| <= V``: where the acceleration falls,
     the rate only falls. ``settled_rate``'s own a |a| is concave where a < 0: with it active (the
     arm held at its rate limit for a sustained force) the Lagrangian took its negative curvature
-    ("Where the sortie's steps are cut, and the rate rows' curvature" in
-    docs/benchmarks.md)."""
+    (docs/benchmarks/where-the-sorties-steps-are-cut-and-the.md)."""
     def plus(x):
         return 0.5 * (x + (x * x + eps) ** 0.5)
     return qd + plus(a) ** 2 / (2.0 * J), qd - plus(-a) ** 2 / (2.0 * J)

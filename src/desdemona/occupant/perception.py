@@ -285,7 +285,7 @@ def canals_model(tau: float = 5.9) -> VestibularModel:
     tau; a change of the rotation felt in the cabin (a spin-up, or the arm's spin turned into the
     cabin's roll or pitch by its gimbals) is felt as it is. One state per canal, none per otolith: an
     on-line plan weighs rotation as the person feels it at 3 states more than without a model
-    ("Canals in the on-line cost"), and its grid may vary (:attr:`VestibularModel.diagonal`).
+    (docs/benchmarks/canals-in-the-on-line-cost.md), and its grid may vary (:attr:`VestibularModel.diagonal`).
     """
     if not (math.isfinite(tau) and tau > 0.0):
         raise ValueError(f"canal time constant tau = {tau!r} s must be a positive number")

@@ -195,7 +195,7 @@ def recorded_version(path: DesiredPath, noise_rms: float = 0.5, rate_hz: float =
     white noise of 0.5 m/s^2 RMS sampled at 100 Hz and a 1% gain error", built in as
     ``dfs-catapult-recorded``).
 
-    1. Resampled on t[0] + k / rate_hz up to t[-1] [s] by linear interpolation (no anti-alias filter: a
+    1. Resampled on ``t[0] + k / rate_hz`` up to ``t[-1]`` [s] by linear interpolation (no anti-alias filter: a
        path is smooth, a logger's own filter is not modelled); time stays strictly increasing.
     2. Multiplied by (1 + gain_error), gravity included: a sensor's scale error scales its whole reading.
     3. White Gaussian noise, independent per sample and channel, of RMS ``noise_rms`` [m/s^2] on each

@@ -26,6 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
+from desdemona.machine.configs import CONFIGURATIONS
 from desdemona.occupant import perception
 from desdemona.occupant.perception import THRESHOLDS
 
@@ -98,7 +99,8 @@ def draw_result(traj, summary: dict, out_dir: str | Path) -> list[Path]:
         ax.legend(fontsize=8, loc="upper right")
     axes[-1].set_xlabel("t [s]")
     paths.append(_save(fig, out / "limits.png", title))
-    if traj.S_d is None or summary["configuration"]["name"] in ("dfs", "dfs-yaw"):
+    config = CONFIGURATIONS.get(summary["configuration"]["name"])
+    if traj.S_d is None or (config is not None and config.takes_modulus):  # the modulus is the cue
         fig = _figure(figsize=(10, 6))
         axes = fig.subplots(2, 1, sharex=True)
         axes[0].plot(traj.t, traj.M_d, "k-", label="M_d (desired)")

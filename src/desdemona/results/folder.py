@@ -44,7 +44,7 @@ def check_replaceable(out_dir: str | Path, protect=()) -> None:
             raise ReportError(refuse + f"is the folder of the input {path}")
     if not is_result_folder(out):
         raise ReportError(refuse + "is not one (no summary.json written by desdemona)")
-    others = _foreign(out)
+    others = foreign_names(out)
     if others:
         raise ReportError(refuse + f"one holds other files too ({', '.join(others[:3])}); move them first")
 
@@ -90,7 +90,7 @@ def refuse_batch_folder(folder: str | Path, verb: str) -> None:
                           + (" ".join(jobs) if jobs else "(it holds none)"))
 
 
-def _foreign(folder: Path) -> list[str]:
+def foreign_names(folder: Path) -> list[str]:
     """The names in a result folder that a result of ours never holds, sorted."""
     return sorted(p.name for p in folder.iterdir()
                   if (p.name not in RESULT_FILES and p.suffix != ".png") or p.is_dir() or p.is_symlink())
@@ -144,7 +144,7 @@ def read_summary(out_dir: str | Path) -> dict:
     return summary
 
 
-def _trajectory(col: dict[str, np.ndarray], joints) -> Trajectory:
+def trajectory_of(col: dict[str, np.ndarray], joints) -> Trajectory:
     """The :class:`Trajectory` of the columns of :func:`read_table` (free joints ``joints``)."""
     def block(prefix):
         return np.column_stack([col[f"{prefix}_{j}"] for j in joints])
@@ -168,4 +168,4 @@ def load(out_dir: str | Path) -> tuple[Trajectory, dict]:
     absent = [n for n in needed if n not in col]
     if absent:
         raise ReportError(f"{out}: not a complete result folder: its trajectory.csv has no column {absent[0]!r}")
-    return _trajectory(col, joints), summary
+    return trajectory_of(col, joints), summary

@@ -32,18 +32,10 @@ from desdemona.check.simulate import Trajectory, trajectory_table
 from desdemona.cueing import blasfeo
 from desdemona.profiles import CHANNELS
 from desdemona.results import figures
-from desdemona.results.folder import (  # noqa: F401
-    RESULT_FILES,
-    RESULT_FORMAT,
-    ReportError,
-    check_out_folder,
-    check_replaceable,
-    is_result_folder,
-    load,
-    read_summary,
-    read_table,
-    refuse_batch_folder,
-)
+# The folder rules and readers, here too for the callers that write and read (report.load, ...).
+from desdemona.results.folder import (RESULT_FILES, RESULT_FORMAT, ReportError, check_out_folder,  # noqa: F401
+                                      check_replaceable, foreign_names, is_result_folder, load, read_summary,
+                                      read_table, refuse_batch_folder, trajectory_of)
 from desdemona.support import guard
 
 UNITS = "units: SI (s, rad, m, rad/s, m/s, rad/s^2, m/s^2, N*m, N, W)"
@@ -133,8 +125,7 @@ def run_description(path, config) -> dict:
     """The "path" and "configuration" entries of a summary.json."""
     return {"path": {"name": path.name, "description": path.description, "duration_s": path.duration,
                      "weights": list(path.weights)},
-            "configuration": {"name": config.name, "free_joints": list(config.joint_names),
-                              "held_positions": list(config.fixed)}}
+            "configuration": config.summary()}
 
 
 def write(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False,
@@ -248,7 +239,7 @@ def _move_into_place(tmp: Path, out: Path, overwrite: bool, protect) -> None:
         raise ReportError(f"{exc} (it changed while this run was writing; left as it is, nothing written)") from None
     old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old.", dir=out.absolute().parent))
     os.rename(out, old / out.name)
-    if not is_result_folder(old / out.name) or _foreign(old / out.name):  # changed in between: put it back
+    if not is_result_folder(old / out.name) or foreign_names(old / out.name):  # changed in between: put it back
         os.rename(old / out.name, out)
         old.rmdir()
         raise ReportError(f"{out}: changed while this run was writing its result; left as it is and nothing "
@@ -270,7 +261,7 @@ def redraw_online(traj: Trajectory, summary: dict, out_dir: str | Path) -> list[
     joints = summary["configuration"]["free_joints"]
     classical = None
     if (out / "classical.csv").exists():
-        classical = _trajectory(read_table(out / "classical.csv"), joints)
+        classical = trajectory_of(read_table(out / "classical.csv"), joints)
     try:
         with open(out / "cycles.csv", newline="") as fh:
             times = np.array([float(row["compute_time_s"]) for row in csv.DictReader(fh)])

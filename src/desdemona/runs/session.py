@@ -44,20 +44,21 @@ OFFLINE_STARTS = ("rest", "free", "given")
 #: interface takes a time that grows with the square of the intervals to set up (12 s for 1,140, 40 s
 #: for 1,880, 87 s for 2,400): the runway (85 s) on ``full`` took 123 s in windows of 60 s against 142 s
 #: whole, RMS +0.4 %, and the two cases beyond 1,800 stopped at fatrop's iteration cap whole and
-#: converged in windows ("fatrop on the compiled stages", "fatrop on BLASFEO for the processor",
-#: "fatrop on `dfs`", "fatrop on `yaw-track-cabin`" in docs/benchmarks.md).
+#: converged in windows (docs/benchmarks/fatrop-on-the-compiled-stages.md,
+#: docs/benchmarks/fatrop-on-blasfeo-for-the-processor.md,
+#: docs/benchmarks/fatrop-on-dfs.md, docs/benchmarks/fatrop-on-yaw-track-cabin.md).
 FATROP_UP_TO = 1200
 ONLINE_STARTS = ("rest", "home", "steady", "given")
 #: An on-line session's felt-rotation band [perception thresholds] (:attr:`MPCOptions.rotation_band`)
-#: with a perception model ("Felt rotation band"), and on a configuration whose cabin follows the force
+#: with a perception model (docs/benchmarks/felt-rotation-band.md), and on a configuration whose cabin follows the force
 #: (``dfs``), whose arm must spin up to make any sustained force (:func:`default_rotation_band`).
 ROTATION_BAND, ALIGNED_ROTATION_BAND = 1.0, 5.0
 #: An on-line session's felt-rotation ceiling [perception thresholds] (:attr:`MPCOptions.rotation_ceiling`)
-#: with a perception model ("Felt rotation ceiling").
+#: with a perception model (docs/benchmarks/felt-rotation-ceiling.md).
 ROTATION_CEILING = 20.0
 #: An on-line session's weight of the spin about the occupant's vertical as it is, felt or not, on a
 #: configuration whose cabin follows the force (``dfs``), as a share of the yaw channel's
-#: (:attr:`MPCOptions.spin_weight`, "A steady spin of the cabin on `dfs`").
+#: (:attr:`MPCOptions.spin_weight`, docs/benchmarks/a-steady-spin-of-the-cabin-on-dfs.md).
 SPIN_WEIGHT = 0.1
 
 
@@ -215,15 +216,16 @@ def default_rotation_band(config) -> float:
     spin-up's onset: priced ten times beyond one threshold, the plan spun up late, seconds behind a
     held modulus (the C172 take-off's correlation 0.46 against the classical loop's 0.87). With five
     thresholds the felt force falls and the correlation rises on the corpus' `dfs` rows, the peak felt
-    rotation stays under the loop's ("Canals in the on-line cost", "Felt rotation band", "A wider band
-    on `dfs`" in docs/benchmarks.md)."""
+    rotation stays under the loop's (docs/benchmarks/canals-in-the-on-line-cost.md,
+    docs/benchmarks/felt-rotation-band.md, docs/benchmarks/a-wider-band-on-dfs.md)."""
     return ALIGNED_ROTATION_BAND if config.aligned else ROTATION_BAND
 
 
 def _felt(model: Model, perception, rotation_band, rotation_ceiling, spin_weight) -> dict:
     """:func:`online`'s perception model and its weights of the rotation, "auto" resolved and checked, as
     :class:`MPCOptions` takes them."""
-    if perception == "auto":  # "Canals in the on-line cost"; on dfs "On-line with `hold` on `dfs`, ..."
+    # docs/benchmarks/canals-in-the-on-line-cost.md; on dfs docs/benchmarks/on-line-with-hold-on-dfs-the-felt-rotation.md
+    if perception == "auto":
         perception = None if model.config.modulus_cost else canals_model()
     if model.config.modulus_cost and perception is not None:
         raise ChoiceError("--perception applies to the full path S, not to the dfs modulus")
@@ -264,8 +266,9 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     cost is the modulus alone); rotation_band :
     :attr:`MPCOptions.rotation_band` [thresholds], "auto": :func:`default_rotation_band` with a
     perception model; rotation_ceiling : the same of
-    :attr:`MPCOptions.rotation_ceiling`, "auto": :data:`ROTATION_CEILING` with a perception model ("Felt
-    rotation ceiling"); spin_weight : :attr:`MPCOptions.spin_weight` (None: 0), "auto": :data:`SPIN_WEIGHT`
+    :attr:`MPCOptions.rotation_ceiling`, "auto": :data:`ROTATION_CEILING` with a perception model
+    (docs/benchmarks/felt-rotation-ceiling.md); spin_weight : :attr:`MPCOptions.spin_weight` (None: 0), "auto":
+    :data:`SPIN_WEIGHT`
     with a perception model where the cabin follows the force (``dfs``), else 0; ``timing``: the other
     :class:`MPCOptions` fields (replan, delay, deadline, method, tail_step).
     """
@@ -331,7 +334,7 @@ def live(model: Model, choices: Choices = Choices(), *, channels: int, rate: flo
         raise ChoiceError(f"--channels {channels}: 6 (S) or 1 (the modulus)")
     if rate is not None and not (math.isfinite(rate) and 0 < rate <= MAX_LIVE_RATE):
         raise ChoiceError(f"--rate {rate:g}: at most {MAX_LIVE_RATE:g} cycles a second (the controller takes "
-                          f"several milliseconds a cycle; see docs/benchmarks.md, 'Real-time service')")
+                          f"several milliseconds a cycle; see docs/benchmarks/real-time-service.md)")
     from desdemona.control.predictors import LIVE
 
     predictor = online_kwargs.setdefault("predictor", LIVE[0])
@@ -369,7 +372,8 @@ def parse_state(text: str, model: Model) -> tuple[np.ndarray, np.ndarray]:
 
 def _wall(choices: Choices) -> float:
     """The cost's wall before the position limits [m/s^2]: the user's, else
-    :data:`~desdemona.cueing.formulation.WALL`, off-line and on-line alike ("Wall before the position limits")."""
+    :data:`~desdemona.cueing.formulation.WALL`, off-line and on-line alike
+    (docs/benchmarks/wall-before-the-position-limits.md)."""
     from desdemona.cueing.formulation import WALL
 
     if choices.wall is None:

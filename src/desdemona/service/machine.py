@@ -18,7 +18,7 @@ What is checked, for every setpoint (:func:`check_setpoint`):
   position within [position_min, position_max], ``|rate| <= velocity``, ``|acceleration| <=
   acceleration``, ``|jerk| <= jerk``, ``|torque| <= effort`` and ``|torque * rate| <= power``, each with
   the relative tolerance of the independent check (:data:`desdemona.check.simulate.TOLERANCE`);
-- every held joint (not in ``config.free``) at its fixed position (``config.fixed``) and at rest:
+- every held joint at its held position (``config.held``) and at rest:
   rate, acceleration and jerk zero (``held``);
 - continuity (``continuity``): a setpoint that follows the previous one (the next sequence number)
   starts where the previous one's cycle ends, the previous one advanced by its ``step`` with its
@@ -188,10 +188,9 @@ class Checker:
 
     def __init__(self, model: Model):
         self.model = model
-        self.free = list(model.config.free)
-        self.held = [i for i in range(6) if i not in self.free]
-        self.fixed = np.asarray(model.config.fixed, dtype=float)
-        self.names = [JOINT_NAMES[i] for i in self.free]
+        self.select = model.config.select
+        self.held = model.config.held
+        self.names = list(model.config.joint_names)
         lim = model.limits
         self.lo, self.hi = np.asarray(lim.position_min, float), np.asarray(lim.position_max, float)
         self.bounded = np.isfinite(self.lo) & np.isfinite(self.hi)
@@ -222,8 +221,7 @@ class Checker:
         """Violations of setpoint ``sp`` (received at ``t``) and the use of each limit {kind: (n,)};
         ``previous`` : the setpoint it follows, or None where continuity is not checked."""
         out: list[Violation] = []
-        f = self.free
-        q, qd, a, j = (np.asarray(x, float)[f] for x in (sp.position, sp.rate, sp.acceleration, sp.jerk))
+        q, qd, a, j = (self.select(x) for x in (sp.position, sp.rate, sp.acceleration, sp.jerk))
         s = self._times(q, qd, a, j, sp.step)[:, None]
         qs, qds = advance(q, qd, a, s, j)
         accs = a + j * s
@@ -250,8 +248,8 @@ class Checker:
                     limit = float(limits[kind][k])
                 out.append(Violation(t, sp.sequence, self.names[k], kind, value, limit,
                                      f"{float(s[row, 0]):.6g} s into the cycle of {sp.step:.6g} s"))
-        for i in self.held:
-            for what, value, target in (("position", sp.position[i], self.fixed[i]), ("rate", sp.rate[i], 0.0),
+        for i, position in self.held.items():
+            for what, value, target in (("position", sp.position[i], position), ("rate", sp.rate[i], 0.0),
                                         ("acceleration", sp.acceleration[i], 0.0), ("jerk", sp.jerk[i], 0.0)):
                 scale = self.held_scale[what][i]
                 tol = ABSOLUTE + (CONTINUITY * scale if math.isfinite(scale) else 0.0)
@@ -263,14 +261,13 @@ class Checker:
         return out, worst
 
     def _continuity(self, sp, prev, t) -> list[Violation]:
-        f = self.free
-        pq, pqd, pa, pj = (np.asarray(x, float)[f] for x in (prev.position, prev.rate, prev.acceleration, prev.jerk))
+        pq, pqd, pa, pj = (self.select(x) for x in (prev.position, prev.rate, prev.acceleration, prev.jerk))
         eq, eqd = advance(pq, pqd, pa, prev.step, pj)
         ea = pa + pj * prev.step
-        checks = [("position", eq, np.asarray(sp.position, float)[f], self.position_scale),
-                  ("rate", eqd, np.asarray(sp.rate, float)[f], self.velocity)]
+        checks = [("position", eq, self.select(sp.position), self.position_scale),
+                  ("rate", eqd, self.select(sp.rate), self.velocity)]
         if self.smooth:
-            checks.append(("acceleration", ea, np.asarray(sp.acceleration, float)[f], self.acceleration))
+            checks.append(("acceleration", ea, self.select(sp.acceleration), self.acceleration))
         out = []
         for what, expected, got, scale in checks:
             tol = ABSOLUTE + CONTINUITY * scale

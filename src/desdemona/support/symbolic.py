@@ -71,8 +71,8 @@ def _buffered(fun: ca.Function, arrays) -> np.ndarray | None:
     """One sample of an SX Function with dense arguments and result, evaluated in place through a
     FunctionBuffer kept for it while the Function lives (None where it does not apply). CasADi's plain
     call converts every argument and result: one sample of S on ``full`` takes 0.046 ms that way and
-    0.007 ms here, and a controller's cycle calls the model and its guard a few times ("Real-time
-    iteration without conversions")."""
+    0.007 ms here, and a controller's cycle calls the model and its guard a few times
+    (docs/benchmarks/real-time-iteration-without-conversions.md)."""
     kept = getattr(_local, "buffers", None)
     if kept is None:
         kept = _local.buffers = weakref.WeakKeyDictionary()
