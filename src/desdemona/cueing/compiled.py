@@ -18,7 +18,7 @@ more to compile on ``full`` (6.7 MB of C; gcc's register allocation on straight-
 run, or the first after a changed weight or limit, does not wait for it. It compiles the same sources
 at ``-O0``, each function a file of its own side by side on the cores (3.8 MB, a few seconds), solves
 on that, and leaves the optimised library to a process of its own at the lowest priority, for later
-runs (:func:`build`, :func:`in_background`; "First run" in docs/measurements/first-run.md). The two
+runs (:func:`build`, :func:`in_background`; docs/benchmarks/first-run.md). The two
 libraries give the same results to round-off, not bit for bit: the first run's iterates may differ
 from a later run's in the last digits.
 
@@ -55,8 +55,8 @@ FLAGS = ("-O0", "-fPIC", "-shared")
 #: the background for later runs and runs on the quick one (:data:`FLAGS`) now; "now" waits for it (the
 #: benchmarks' steady state); "never" keeps the quick one (the tests: their cache goes with them).
 OPTIMISED = "later"
-#: Told one line before compiling into the cache, where that takes long (with optimisation: fatrop's
-#: stage functions on ``full`` take about a minute at ``-O1``); the command line prints it.
+#: Told one line before compiling into the cache (the optimised library, where a run waits for it, takes
+#: a minute or more on ``full``); the command line prints it.
 notice = None
 # Where compiling takes longer than this, something is wrong with the toolchain: keep the virtual machine.
 TIMEOUT = 300.0
@@ -165,8 +165,8 @@ def in_background(target: Path, files: dict[str, str], flags: list[str]) -> None
     """Compile ``files`` with ``flags`` into the library ``target`` of the cache in a process of its
     own, at the lowest priority, that outlives this one (a later run finds the library there); once
     for all processes that ask at once (a marker file beside the target holds the process' id while
-    it lives). The sources wait in a folder of the cache that the compiling
-    process removes."""
+    it lives). The sources wait in a folder of the cache that the compiling process removes."""
+
     def command() -> list[str]:
         pending = Path(tempfile.mkdtemp(dir=target.parent, prefix=".pending-"))
         for name, source in files.items():
@@ -180,7 +180,8 @@ def start_once(marker: Path, command, env: dict | None = None) -> None:
     """Start the process ``command`` (its arguments, or a callable that prepares and returns them) on
     its own, in a session of its own (it outlives this process; it removes ``marker`` when it ends),
     unless the process whose id ``marker`` holds still runs: so of the runs that ask at once, one
-    starts it. ``env``: its environment (default: this process'). Where it cannot be started, a warning: the run goes on, a later one tries again."""
+    starts it. ``env``: its environment (default: this process'). Where it cannot be started, a
+    warning: the run goes on, a later one tries again."""
     try:
         if _alive(marker):
             return
@@ -356,9 +357,11 @@ def _cc(cc: str | None, source: str | None, c_file: Path | None, flags: list[str
 def _background(cc: str, target: str, pending: str, *flags: str) -> None:
     """:func:`in_background`'s process: the sources in ``pending`` compiled one after the other (a
     core stays free for the run that started it) into ``target``, then the sources and the marker
-    removed, whatever happened."""
+    removed, whatever happened. At the lowest priority on a busy machine a file may take many times
+    what it takes in the foreground: each may take an hour here."""
+    global TIMEOUT
     os.nice(19)
-    os.environ["DESDEMONA_CACHE"] = str(Path(target).parent)
+    TIMEOUT = 3600.0
     folder, target_path = Path(pending), Path(target)
     try:
         files = {file.name: file.read_text() for file in sorted(folder.glob("*.c"))}
