@@ -261,11 +261,11 @@ def _share(t, M, mask, bound, extreme) -> dict | None:
 TIME_FACTOR = 20.0
 MIN_TIME_LIMIT = 60.0
 # Off-line, per control interval, free joint and solver iteration [s], measured on the reference
-# machine with the compiled stages (docs/benchmarks.md): fatrop on `full`, the F-16 turn's 1,100
-# intervals at 77 ms an iteration; IPOPT on `full`, the catapult's 160 at 24 ms. A start is taken to
-# need ITERATIONS (the corpus' hard cases: 150-500, the cap 500); fatrop's set-up grows with the
-# square of a solve's intervals (12 s at 1,140, 40 s at 1,880); BASE_SECONDS: imports, the check,
-# the figures.
+# machine with the compiled stages (docs/benchmarks/fatrop-on-blasfeo-for-the-processor.md): fatrop on
+# `full`, the F-16 turn's 1,100 intervals at 77 ms an iteration; IPOPT on `full`, the catapult's 160
+# at 24 ms. A start is taken to need ITERATIONS (the corpus' hard cases: 150-500, the cap 500);
+# fatrop's set-up grows with the square of a solve's intervals (12 s at 1,140, 40 s at 1,880);
+# BASE_SECONDS: imports, the check, the figures.
 SECONDS_PER_INTERVAL = {"fatrop": 12e-6, "ipopt": 25e-6}
 ITERATIONS = 300
 SETUP_PER_INTERVAL_SQUARED = 1e-5
