@@ -118,9 +118,9 @@ def test_a_forecast_of_the_true_future_runs_as_perfect(params, config):
 
 
 def test_the_forecast_predictor_needs_a_forecast():
-    with pytest.raises(ValueError, match="forecast file"):
+    with pytest.raises(ValueError, match="needs --forecast FILE"):
         predictor("forecast")
-    with pytest.raises(ValueError, match="only by predictor 'forecast'"):
+    with pytest.raises(ValueError, match="--forecast is used only with --predictor forecast"):
         OnlineOptions(OPTIONS, predictor="hold", forecast=true_forecast(short_path(), 0.5, 1.0))
     assert OnlineOptions(OPTIONS, predictor="forecast").forecast is None  # a live session's: the host sends it
 

@@ -1,5 +1,6 @@
 """The on-line controller: closed loop against the classical loop and the off-line optimum, faults."""
 
+import argparse
 import dataclasses
 import json
 
@@ -96,7 +97,7 @@ def test_fallback_engages_and_the_run_stays_within_limits(params, fault):
     kwargs = {"fail": steps} if fault in ("fail", "long outage") else {"late": steps} if fault == "late" else {}
     # a deadline no real solve comes near, so that only the injected steps are late
     controller = Faulty(model, dataclasses.replace(OPTIONS, deadline=30.0), **kwargs)
-    predictor = faulty_predictor(set(steps), fault) if fault in ("nan", "short") else PREDICTORS["perfect"]
+    predictor = faulty_predictor(set(steps), fault) if fault in ("nan", "short") else predict_perfect
     loop = closed_loop(controller, path, predictor)
     assert len(loop.plan.u) == int(path.duration / OPTIONS.step)
     assert all(loop.sources[k] != "mpc" for k in steps)
@@ -118,7 +119,7 @@ def test_a_long_outage_follows_the_last_plan_for_at_most_shift_max_then_brakes(p
     path = profiles.catapult(duration=6.0)
     options = MPCOptions(horizon=4.0, step=0.1, deadline=30.0)
     controller = Faulty(model, options, fail=range(10, 45))
-    loop = closed_loop(controller, path, PREDICTORS["perfect"])
+    loop = closed_loop(controller, path, predict_perfect)
     shifted = round(SHIFT_MAX / options.step) - 1  # plan_age + 2 steps within SHIFT_MAX
     assert loop.sources[9] == "mpc" and set(loop.sources[10:10 + shifted]) == {"shifted"}
     assert set(loop.sources[10 + shifted:45]) == {"brake"} and set(loop.sources[45:]) == {"mpc"}
@@ -234,6 +235,47 @@ def test_predictors():
     k = np.searchsorted(path.t, now, side="right") - 1
     slope = (path.S_d[k, 4] - path.S_d[k - 1, 4]) / (path.t[k] - path.t[k - 1])
     np.testing.assert_allclose(linear.S_d[-1, 4], path.S_d[k, 4] + slope * (now + horizon - path.t[k]), rtol=1e-9)
+
+
+def test_one_table_of_predictors_gives_the_choices_and_every_check(params, tmp_path, capsys):
+    """The command line's choices are the table's (serve's: those that may run live), and every check
+    of a predictor's need says, from the table, which option gives it; the library, the session and
+    the command all say the same."""
+    from desdemona.cli import main
+    from desdemona.cli.options import build_parser
+    from desdemona.control import predictors
+    from desdemona.runs import session
+
+    def choices(command):
+        sub = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
+        return tuple(next(a for a in sub.choices[command]._actions if a.dest == "predictor").choices)
+
+    assert choices("online") == predictors.names() == tuple(PREDICTORS)
+    assert choices("serve") == predictors.names(live=True) == tuple(n for n, k in PREDICTORS.items() if k.live)
+    assert "perfect" not in predictors.names(live=True)  # it needs the future
+    assert {n: k.needs for n, k in PREDICTORS.items() if k.needs} == {"route": predictors.REFERENCE,
+                                                                      "forecast": predictors.FORECAST}
+    path, model = profiles.catapult(), Model(params, "yaw-track")
+    for call in (lambda: predictors.predictor("route"), lambda: OnlineOptions(predictor="route"),
+                 lambda: session.online(path, model, predictor="route"),
+                 lambda: session.live(model, channels=6, predictor="route")):
+        with pytest.raises(ValueError, match="--predictor route needs --reference PROFILE_OR_CSV, a recording"):
+            call()
+    with pytest.raises(ValueError, match="--predictor forecast needs --forecast FILE, the vehicle's forecasts"):
+        predictors.predictor("forecast")
+    session.live(model, channels=6, predictor="forecast")  # live: the host sends its forecasts
+    for call in (lambda: predictors.predictor("hold", reference=path),
+                 lambda: OnlineOptions(predictor="hold", reference=path),
+                 lambda: session.online(path, model, predictor="linear", reference=path)):
+        with pytest.raises(ValueError, match="--reference is used only with --predictor route"):
+            call()
+    with pytest.raises(ValueError, match="--predictor perfect: a live session uses one of hold, linear"):
+        session.live(model, channels=6, predictor="perfect")
+    with pytest.raises(ValueError, match="--predictor psychic: must be one of perfect, hold"):
+        OnlineOptions(predictor="psychic")
+    out = tmp_path / "never"
+    assert main(["online", "catapult", "--config", "yaw-track", "--predictor", "route", "--out", str(out)]) == 2
+    assert "--predictor route needs --reference" in capsys.readouterr().err and not out.exists()
 
 
 def test_online_command_writes_the_folder(tmp_path, capsys):
@@ -405,7 +447,8 @@ def test_route_predictor_previews_a_faster_or_slower_noisy_replay(params, speed)
     live = DesiredPath("live", t, None, modulus=np.maximum(noisy, 0.0))
     model = Model(params, "dfs")
     options = dataclasses.replace(OPTIONS, horizon=2.0, step=0.05)
-    rms = {name: run(live, model, OnlineOptions(options, predictor=name, reference=reference)).check.rms
+    rms = {name: run(live, model, OnlineOptions(options, predictor=name,
+                                                reference=reference if name == "route" else None)).check.rms
            for name in ("perfect", "hold", "route")}
     assert rms["route"] <= 1.3 * rms["perfect"]
     assert rms["route"] <= 0.8 * rms["hold"]
@@ -783,7 +826,7 @@ def test_an_unreachable_held_force_does_not_swing_the_plan_from_cycle_to_cycle(s
     S[:, 2] = 0.03 * np.sin(0.5 * t)
     if share == 0.5:
         assert _worst_reversals(_session_run(DesiredPath("unreachable", t, S), rti_step=share)) < 1.0
-    monkeypatch.setitem(PREDICTORS, "hold", _HeldAsItIs)
+    monkeypatch.setitem(PREDICTORS, "hold", dataclasses.replace(PREDICTORS["hold"], make=_HeldAsItIs))
     result = _session_run(DesiredPath("unreachable", t, S), rti_step=share, perception=None)
     if share == 1.0:
         assert _worst_reversals(result) > 10.0  # the cause, shown: full steps swing
@@ -812,7 +855,7 @@ def test_a_held_spike_is_not_planned_for_as_a_sustained_cue(monkeypatch):
     model = Model(config="full")
     cued = _hold_session(path, model)
     expected, expected_correlation = felt(run(cued.path, model, cued.options))
-    monkeypatch.setitem(PREDICTORS, "hold", _HeldAsItIs)
+    monkeypatch.setitem(PREDICTORS, "hold", dataclasses.replace(PREDICTORS["hold"], make=_HeldAsItIs))
     cued = _hold_session(path, model)
     held, held_correlation = felt(run(cued.path, model, cued.options))
     assert held_correlation < 0.0 < 0.5 < expected_correlation

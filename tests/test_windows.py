@@ -133,3 +133,29 @@ def test_braked_joints_come_to_rest_within_their_limits():
     assert np.count_nonzero(np.isclose(held[:, 0], -0.5)) == 48  # 1.2 m/s at 0.5 m/s^2: 2.4 s
     assert np.all(np.abs(held[48:, 0]) < 1e-12)
     assert not braked(np.zeros(2), np.zeros(2), h, A, J).any() and not braked(np.zeros(2), np.zeros(2), h, A).any()
+
+
+def test_batch_solves_in_the_window_asked_and_chooses_as_optimize_does(tmp_path, params, monkeypatch):
+    """``batch --window`` solves each job in windows (batch.csv says how many), and without it a job is
+    resolved as ``optimize`` resolves it: one session, one solve (:mod:`desdemona.runs.solve`)."""
+    import csv
+
+    from desdemona.runs import batch, solve
+
+    path = tmp_path / "long.csv"
+    profiles.write_csv(path, _long(50.0))
+    out = tmp_path / "out"
+    code = main(["batch", str(path), "--configs", "yaw-track", "--out", str(out), "--window", "30", "--h-u", "0.2",
+                 "--starts", "1", "--processes", "1", "--no-view", "--quiet"])
+    with open(out / "batch.csv") as table:
+        rows = list(csv.DictReader(table))
+    assert code == 0 and [(r["status"], r["windows"]) for r in rows] == [("ok", "3")]
+    assert "windows" in (out / "long--yaw-track" / "summary.json").read_text()
+    # without --window: the default of optimize's, here windows above 40 s (in this process)
+    monkeypatch.setattr(windows, "WHOLE_UP_TO", 40.0)
+    model, choices = Model(params, "yaw-track"), session.Choices(h_u=0.2)
+    assert solve.resolve(_long(50.0), model, choices, workers=1, starts=1).window == windows.DEFAULT_WINDOW
+    job = batch.run_job(batch.Job(str(path), "yaw-track", view=False), params, choices, OptimizeOptions(starts=1),
+                        str(tmp_path))
+    assert (job.status, job.windows) == ("ok", 3), job.message
+    assert solve.resolve(_long(30.0), model, choices, workers=1, starts=1).window is None

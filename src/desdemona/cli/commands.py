@@ -85,40 +85,25 @@ def _result_folder(args) -> Path:
 
 
 def run_optimize(args) -> int:
-    from desdemona.baselines.thesis import ThesisOptions
     from desdemona.cueing import compiled
-    from desdemona.cueing.offline import OptimizeOptions, optimize, thesis_result
-    from desdemona.cueing.windows import optimize_windowed
     from desdemona.results import report
+    from desdemona.runs import solve
 
     model, path, out = _run_inputs(args)
-    if args.starts < 1 or (args.workers is not None and args.workers < 1):
-        raise UserError("--starts and --workers must be at least 1")
-    choices = session.Choices.of(args)
-    if args.method == "thesis":
-        resolved = session.thesis(path, model, choices)
-        args.workers = args.workers or 1
-    else:
-        perception = perception_models.get_model(args.perception) if args.perception else None
-        resolved = _offline_session(args, path, model, choices, perception)
+    thesis = args.method == "thesis"  # the thesis' method has no perception model
+    perception = perception_models.get_model(args.perception) if args.perception and not thesis else None
+    resolved = solve.resolve(path, model, session.Choices.of(args), args.method, perception, args.workers,
+                             args.starts)
     path, problem, size = resolved.path, resolved.options, resolved.size
-    estimate = None if args.method == "thesis" else sizing.check_time(
-        path, model.config, problem.h_u, problem.solver, args.starts, args.workers, resolved.window, args.max_time)
+    estimate = None if thesis else sizing.check_time(
+        path, model.config, problem.h_u, problem.solver, args.starts, resolved.workers, resolved.window, args.max_time)
     unreachable = sizing.unreachable(path, model)
     progress = None if args.quiet else progress_lines.Starts(args.starts, size, path, model.config, estimate)
     compiled.notice = None if progress is None else progress.say
     with guard.reporting(None if progress is None else progress.solving, PROGRESS_EVERY):
-        if args.method == "thesis":
-            result = thesis_result(path, model, ThesisOptions(h_u=problem.h_u, starts=args.starts, seed=args.seed))
-        else:
-            options = OptimizeOptions(problem, starts=args.starts, seed=args.seed, workers=args.workers,
-                                      refine=args.refine)
-            told = None if progress is None else progress.start_done
-            if resolved.window is None:
-                result = optimize(path, model, options, progress=told)
-            else:
-                result = optimize_windowed(path, model, options, resolved.window, progress=told,
-                                           announce=None if progress is None else progress.window)
+        result = solve.solve(resolved, args.starts, args.seed, args.refine,
+                             progress=None if progress is None else progress.start_done,
+                             announce=None if progress is None else progress.window)
     report.write(result, out, command=report.command_line(), overwrite=args.overwrite, unreachable=unreachable,
                  protect=_inputs(args), view=args.view)
     c = result.check
@@ -132,23 +117,6 @@ def run_optimize(args) -> int:
           f"written to {out}")
     print(f"  felt: {result.quality.headline()}")
     return 0 if result.converged else EXIT_NOT_CONVERGED
-
-
-def _offline_session(args, path, model, choices, perception) -> session.Session:
-    """:func:`session.offline` with ``args.workers`` settled: without ``--workers``, one process per core
-    and at most one per start, fewer where they would not fit in memory together."""
-    if args.workers is not None:
-        return session.offline(path, model, choices, args.method, perception, args.workers)
-    workers = max(1, min(len(os.sched_getaffinity(0)), args.starts))
-    while True:
-        try:
-            resolved = session.offline(path, model, choices, args.method, perception, workers)
-            args.workers = workers
-            return resolved
-        except sizing.TooLarge:
-            if workers == 1:
-                raise
-            workers -= 1
 
 
 def run_batch(args) -> int:
@@ -279,11 +247,13 @@ def fallback_warning(sources, reasons, times, deadline: float) -> str:
 
 def _forecast(args, path):
     """The forecast file of ``online --forecast``, read on the motion file's clock; None without one."""
+    from desdemona.control import predictors
     from desdemona.profiles import forecast
 
-    if (args.predictor == "forecast") != (args.forecast is not None):
-        raise UserError("--predictor forecast needs --forecast FILE, the vehicle's forecasts (docs/guide/online.md#predictors)"
-                        if args.forecast is None else "--forecast is used only with --predictor forecast")
+    try:  # before the file is read
+        predictors.check(args.predictor, False, args.reference is not None, args.forecast is not None)
+    except ValueError as exc:
+        raise UserError(str(exc)) from None
     if args.forecast is None:
         return None
     return forecast.read_forecast(args.forecast, path, origin=forecast.time_origin(args.profile))

@@ -8,9 +8,9 @@ import difflib
 import math
 
 from desdemona._version import __version__
-from desdemona.cli import commands
+from desdemona.cli import bridges, commands
 from desdemona.cli.exits import EXIT_CODES, SEE_EXIT_CODES
-from desdemona.control.predictors import LIVE
+from desdemona.control import predictors
 from desdemona.machine.configs import CONFIGURATIONS
 from desdemona.machine.params import BUILTIN_SETS
 from desdemona.occupant import perception as perception_models
@@ -143,16 +143,15 @@ def build_parser() -> argparse.ArgumentParser:
                              "--replan 0.4 --delay)")
     online.add_argument("--deadline", type=float, default=None, metavar="SECONDS",
                         help="compute budget per plan; a later plan is not used (default: T_c)")
-    online.add_argument("--predictor", choices=("perfect", "hold", "linear", "route", "forecast"), default="perfect",
-                        help="how the future path is guessed from what is known now: the true future "
-                             "(perfect), the present held (hold), extrapolated (linear), from a "
-                             "recording of the same course aligned to the live signal (route, needs "
-                             "--reference), or the vehicle's own forecasts, its model run ahead "
-                             "(forecast, needs --forecast) (default: perfect)")
-    online.add_argument("--reference", metavar="PROFILE_OR_CSV", default=None,
-                        help="with --predictor route: a recording of the course (same channels as the path)")
-    online.add_argument("--forecast", metavar="FILE", default=None,
-                        help="with --predictor forecast: the vehicle's forecasts, a CSV file with columns "
+    online.add_argument("--predictor", choices=predictors.names(), default="perfect",
+                        help=f"how the future path is guessed from what is known now: {predictors.describe()} "
+                             "(default: perfect)")
+    online.add_argument(predictors.REFERENCE.option, metavar=predictors.REFERENCE.metavar, default=None,
+                        help=f"with --predictor {' or '.join(predictors.users(predictors.REFERENCE))}: "
+                             f"{predictors.REFERENCE.what}")
+    online.add_argument(predictors.FORECAST.option, metavar=predictors.FORECAST.metavar, default=None,
+                        help=f"with --predictor {' or '.join(predictors.users(predictors.FORECAST))}: the "
+                             "vehicle's forecasts, a CSV file with columns "
                              "t0,t,wx,wy,wz,fx,fy,fz (or t0,t,M, as the path): for each issue time t0, the "
                              "forecast samples from t = t0 on, times on the motion file's clock "
                              "(docs/guide/online.md#predictors)")
@@ -482,11 +481,12 @@ def _add_serve_parser(sub) -> None:
     serve.add_argument("--channels", type=int, choices=(6, 1), default=None,
                        help="what the host sends: 6, the path S; 1, the modulus M (default: 1 on dfs and "
                             "dfs-yaw, 6 elsewhere)")
-    serve.add_argument("--predictor", choices=LIVE, default="hold",
-                       help="how the controller sees ahead: hold (default), linear, route (with --reference), "
-                            "forecast (the forecast block the host sends with its motion)")
-    serve.add_argument("--reference", metavar="PROFILE_OR_CSV", default=None,
-                       help="with --predictor route: a recording of the course")
+    serve.add_argument("--predictor", choices=predictors.names(live=True), default=predictors.LIVE_DEFAULT,
+                       help=f"how the controller sees ahead: {predictors.describe(live=True)} "
+                            f"(default: {predictors.LIVE_DEFAULT})")
+    serve.add_argument(predictors.REFERENCE.option, metavar=predictors.REFERENCE.metavar, default=None,
+                       help=f"with --predictor {' or '.join(predictors.users(predictors.REFERENCE))}: "
+                            f"{predictors.REFERENCE.what}")
     serve.add_argument("--horizon", type=float, default=None, metavar="SECONDS",
                        help="T_h (default: 2 on dfs and dfs-yaw; 4 with the track)")
     serve.add_argument("--reach", type=float, default=None, metavar="SECONDS",
@@ -531,7 +531,8 @@ def _add_host_parser(sub) -> None:
     host = sub.add_parser(
         "host", help="a simulator host on this computer: send a vehicle's motion to 'serve' in real time",
         description="Send a vehicle's motion to 'desdemona serve' (UDP, docs/protocol.md) in real time, as a "
-                    "simulator host would: a recorded path, or a JSBSim flight flown as it is sent.")
+                    "simulator host would: a recorded path, or a JSBSim flight flown as it is sent; or "
+                    "forward a running FlightGear's or X-Plane's motion, checked live.")
     kinds = host.add_subparsers(title="hosts", required=True, metavar="HOST")
     replay = kinds.add_parser("replay", help="send a path (built-in or CSV) in real time",
                               description="Send every sample of a path at its time (divided by --speed).")
@@ -550,6 +551,37 @@ def _add_host_parser(sub) -> None:
                         help="the flight's time of the last message (default: the script's end)")
     _add_host_options(flight)
     flight.set_defaults(run=commands.run_host_jsbsim)
+    _add_bridge_parsers(kinds)
+
+
+def _add_bridge_parsers(kinds) -> None:
+    checked = ("Nothing is forwarded until the stream's first still second (at rest or in level flight) reads "
+               "+1 g up in SI units; a stream that then turns implausible (a pause, a reset, wrong units, a "
+               "crash) stops being forwarded, with the reason, and 'serve' parks the machine. Exit 2 when the "
+               "start check refuses the stream or it does not start within --wait.")
+    fg = kinds.add_parser("flightgear", help="forward a running FlightGear's motion (its native FDM output)",
+                          description="Read FlightGear's native FDM packets (fgfs --native-fdm=socket,out,60,"
+                                      "127.0.0.1,5600,udp --max-fps=60) and send the pilot's motion to 'serve'. "
+                                      + checked + " Needs pip install 'desdemona[flightgear]'.")
+    fg.add_argument("--listen", default="127.0.0.1:5600", metavar="HOST:PORT",
+                    help="where FlightGear sends its native FDM (default: 127.0.0.1:5600)")
+    xp = kinds.add_parser("xplane", help="forward a running X-Plane's motion (RREF dataref subscriptions)",
+                          description="Subscribe to X-Plane's body rates, g-loads, attitude and position over "
+                                      "UDP (RREF) and send the motion to 'serve'. " + checked)
+    xp.add_argument("--xplane", default="127.0.0.1:49000", metavar="HOST:PORT",
+                    help="X-Plane's UDP port (default: 127.0.0.1:49000)")
+    xp.add_argument("--listen", default="127.0.0.1:49005", metavar="HOST:PORT",
+                    help="where X-Plane's answers arrive (default: 127.0.0.1:49005)")
+    xp.add_argument("--rate", type=int, default=60, metavar="HZ", help="answers a second (default: 60)")
+    for parser, run in ((fg, bridges.run_host_flightgear), (xp, bridges.run_host_xplane)):
+        parser.add_argument("--to", required=True, metavar="HOST:PORT", help="where 'serve' listens, e.g. 127.0.0.1:5500")
+        parser.add_argument("--modulus", action="store_true", help="send the modulus |f| only (for dfs)")
+        parser.add_argument("--wait", type=float, default=120.0, metavar="SECONDS",
+                            help="the longest the stream may take to start (default: 120; FlightGear's first "
+                                 "packets come 10-35 s after it is launched)")
+        parser.add_argument("--duration", type=float, default=None, metavar="SECONDS",
+                            help="stop after this long (default: when stopped, Ctrl-C)")
+        parser.set_defaults(run=run)
 
 
 def _add_host_options(parser) -> None:

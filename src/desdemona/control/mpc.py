@@ -269,13 +269,12 @@ class MPC:
         placeholder = DesiredPath("preview", t, None if model.config.modulus_cost else np.zeros((len(t), 6)),
                                   weights=weights or (ALIGNED_WEIGHTS if model.config.aligned else (1.0,) * 6),
                                   modulus=np.zeros(len(t)) if model.config.modulus_cost else None)
-        problem_options = ProblemOptions(h_u=options.step, substeps=options.substeps, initial="given",
-            initial_state=(np.zeros(model.n), np.zeros(model.n)), regularisation=options.regularisation,
-            margin=options.margin, weights=options.weights, max_iter=options.max_iter, tol=1e-6, stoppable=True,
-            braking=options.braking, brake_step=options.step, perception=options.perception, initial_filter="given",
-            steps=None if np.all(steps == options.step) else tuple(steps), jerk_weight=options.jerk_weight,
-            rotation_band=options.rotation_band, rotation_ceiling=options.rotation_ceiling, wall=options.wall, spin_weight=options.spin_weight,
-            null_weight=options.null_weight if options.null_weight is not None or options.plan_method == "rti" else 0.0)
+        mine = {f.name for f in dataclasses.fields(options)}  # the fields both have: the same name, the same meaning
+        shared = {f.name: getattr(options, f.name) for f in dataclasses.fields(ProblemOptions) if f.name in mine}
+        shared["null_weight"] = options.null_weight if options.null_weight is not None or options.plan_method == "rti" else 0.0
+        problem_options = ProblemOptions(h_u=options.step, initial="given", initial_state=(np.zeros(model.n),
+            np.zeros(model.n)), tol=1e-6, stoppable=True, brake_step=options.step, initial_filter="given",
+            steps=None if np.all(steps == options.step) else tuple(steps), **shared)
         self.problem = CueingProblem(model, placeholder, problem_options, solves=1000, parametric=True)
         if self.problem.nz:  # the horizon's perception map is built now, not in the session's first cycle
             self.problem.perceive(np.zeros((self.problem.N * self.problem.m, 6)))

@@ -30,8 +30,9 @@ from desdemona.check.simulate import (
     evaluate_plan,
     trajectory_dataframe,
 )
+from desdemona.control import predictors
 from desdemona.control.mpc import MPC, MPCOptions
-from desdemona.control.predictors import PREDICTORS, predictor
+from desdemona.control.predictors import predictor
 from desdemona.machine.kinematics import gimbal_twin, wrapped
 from desdemona.machine.model import Model
 from desdemona.machine.plan import Plan, start_state
@@ -64,19 +65,15 @@ class OnlineOptions:
     of the same cabin attitude that the loop steers from: :func:`_loop_start`)."""
 
     mpc: MPCOptions = MPCOptions()
-    predictor: Literal["perfect", "hold", "linear", "route", "forecast"] = "perfect"
+    predictor: str = "perfect"  # a name of predictors.PREDICTORS
     initial_state: tuple | None = None
     reference: DesiredPath | None = None
     initial: Literal["rest", "home", "steady", "given"] | None = None
     forecast: Forecast | None = None
 
     def __post_init__(self):
-        if self.predictor not in PREDICTORS:
-            raise ValueError(f"predictor = {self.predictor!r}: must be one of {', '.join(PREDICTORS)}")
-        if self.predictor == "route" and self.reference is None:
-            raise ValueError("predictor 'route' needs a reference recording of the course")
-        if self.forecast is not None and self.predictor != "forecast":
-            raise ValueError("a forecast is read only by predictor 'forecast'")
+        # a forecast may come later, from a live session's host
+        predictors.check(self.predictor, None, self.reference is not None, self.forecast is not None)
         if self.initial is None:
             object.__setattr__(self, "initial", "rest" if self.initial_state is None else "given")
         if self.initial not in INITIAL_CHOICES:

@@ -19,11 +19,15 @@ on the vehicle to be simulated and the mission of the pilot". A predictor is a c
   live signal by its recent past, so that a run that is faster, slower or noisier than the reference
   is still previewed in step with it.
 
-:func:`predictor` makes a fresh one by name (hold and route predictors carry state from call to call).
+:data:`PREDICTORS` is their one table: what each needs and where it may run; :func:`check` checks a
+choice against it, :func:`predictor` makes a fresh one by name (hold and route predictors carry state
+from call to call).
 A preview never reads the live path after ``now`` (``perfect`` aside): the tests poison it there.
 """
 
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -296,31 +300,101 @@ class ForecastPredictor:
         return DesiredPath(path.name, grid, S, path.weights, "the vehicle's forecast", M)
 
 
-PREDICTORS = {"perfect": predict_perfect, "hold": HoldPredictor, "linear": predict_linear,
-              "route": RoutePredictor, "forecast": ForecastPredictor}
+@dataclass(frozen=True)
+class Need:
+    """What a predictor needs besides the live path: the command line's option that gives it (and its
+    metavar), what it is, and where a live session (``serve``) takes it from instead (None: the option)."""
+
+    option: str
+    metavar: str
+    what: str
+    live: str | None = None
+
+    def asked(self, live: bool) -> str:
+        """How a user gives it, where the session runs."""
+        return self.live if live and self.live else f"{self.option} {self.metavar}, {self.what}"
 
 
-#: The predictors a live session can use (:mod:`desdemona.service`): ``perfect`` would need the future;
-#: ``forecast`` reads the forecast block a simulator host sends with its motion.
-LIVE = ("hold", "linear", "route", "forecast")
+#: A recording of the same course (``route``).
+REFERENCE = Need("--reference", "PROFILE_OR_CSV", "a recording of the same course (same channels as the path)")
+#: The vehicle's forecasts (``forecast``): a file on-line, the block a simulator host sends in a live session.
+FORECAST = Need("--forecast", "FILE", "the vehicle's forecasts (docs/guide/online.md#predictors)",
+                live="the forecast block the host sends with its motion")
+
+
+@dataclass(frozen=True)
+class Kind:
+    """One predictor of :data:`PREDICTORS`: ``make``, a function ``predictor(path, now, horizon)`` or a
+    class (which carries state from call to call: a fresh one per run, given its need); what it does
+    (``summary``, the help's); what it ``needs`` (:data:`REFERENCE`, :data:`FORECAST` or None); and
+    whether it may run in a live session (``serve``; all may run in ``online``)."""
+
+    make: object
+    summary: str
+    needs: Need | None = None
+    live: bool = True
+
+
+#: The predictors, by name: the one table that the command line's choices and help, every check of
+#: what a predictor needs (:func:`check`) and :func:`predictor` read. ``perfect`` cannot run live: it
+#: needs the future.
+PREDICTORS = {
+    "perfect": Kind(predict_perfect, "the true future (the thesis' assumption)", live=False),
+    "hold": Kind(HoldPredictor, "the present held"),
+    "linear": Kind(predict_linear, "extrapolated from the last two samples"),
+    "route": Kind(RoutePredictor, "a recording of the same course, aligned to the live signal", REFERENCE),
+    "forecast": Kind(ForecastPredictor, "the vehicle's own forecasts, its model run ahead", FORECAST),
+}
+
+#: A live session's predictor unless told.
+LIVE_DEFAULT = "hold"
+
+
+def names(live: bool = False) -> tuple[str, ...]:
+    """The predictors' names, those that may run in a live session with ``live``."""
+    return tuple(name for name, kind in PREDICTORS.items() if kind.live or not live)
+
+
+def users(need: Need) -> tuple[str, ...]:
+    """The predictors that read what ``need`` gives."""
+    return tuple(name for name, kind in PREDICTORS.items() if kind.needs is need)
+
+
+def describe(live: bool = False) -> str:
+    """The predictors (:func:`names`) for a user, one clause each with what it needs: the help's."""
+    def needs(need):
+        return "" if need is None else f" (needs {need.live if live and need.live else need.option})"
+
+    return "; ".join(f"{name}: {kind.summary}{needs(kind.needs)}"
+                     for name, kind in PREDICTORS.items() if kind.live or not live)
+
+
+def check(name: str, live: bool | None = False, reference: bool = False, forecast: bool = False) -> Kind:
+    """The predictor ``name`` (:data:`PREDICTORS`), checked to run where it is asked (``live``: in a
+    live session, ``serve``; False: ``online``; None: either, not known yet) with what is given (a
+    ``reference``, a ``forecast``): raises ValueError, naming the options, for an unknown name, a
+    predictor a live session cannot run, a need not given (a live session's forecast comes from the
+    host) or a reference or forecast given to a predictor that does not read it."""
+    allowed = names(bool(live))
+    if name not in allowed:
+        where = "a live session uses" if live and name in PREDICTORS else "must be"
+        raise ValueError(f"--predictor {name}: {where} one of {', '.join(allowed)}")
+    kind = PREDICTORS[name]
+    for need, given in ((REFERENCE, reference), (FORECAST, forecast)):
+        if kind.needs is need and not given and (live is False or need.live is None):
+            raise ValueError(f"--predictor {name} needs {need.asked(False)}")
+        if given and kind.needs is not need:
+            raise ValueError(f"{need.option} is used only with --predictor {' or '.join(users(need))}")
+    return kind
 
 
 def predictor(name: str, reference: DesiredPath | None = None, forecast: Forecast | None = None):
-    """A fresh predictor called ``name`` (:data:`PREDICTORS`); ``route`` needs its reference recording,
-    ``forecast`` the vehicle's forecasts."""
-    if name not in PREDICTORS:
-        raise ValueError(f"unknown predictor {name!r}; valid: {', '.join(PREDICTORS)}")
-    if name == "route":
-        if reference is None:
-            raise ValueError("the route predictor needs a reference recording of the course")
-        return RoutePredictor(reference)
-    if name == "forecast":
-        if forecast is None:
-            raise ValueError("the forecast predictor reads the vehicle's forecasts: a forecast file (desdemona "
-                             "online --forecast FILE), or the block a simulator host sends (desdemona serve)")
-        return ForecastPredictor(forecast)
-    made = PREDICTORS[name]
-    return made() if isinstance(made, type) else made  # a class carries state: a fresh one per run
+    """A fresh predictor called ``name`` (:data:`PREDICTORS`), given what it needs (:func:`check`):
+    ``route`` its reference recording, ``forecast`` the vehicle's forecasts."""
+    kind = check(name, reference=reference is not None, forecast=forecast is not None)
+    if kind.needs is not None:
+        return kind.make(reference if kind.needs is REFERENCE else forecast)
+    return kind.make() if isinstance(kind.make, type) else kind.make  # a class carries state: a fresh one per run
 
 
 def _grid(path: DesiredPath, horizon: float) -> np.ndarray:

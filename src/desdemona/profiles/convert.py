@@ -260,14 +260,15 @@ def find_still(t, omega_cabin, f_cabin, max_rate: float = STILL_RATE, usable=Non
 
 def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0),
                      tolerance: float = UP_TOLERANCE_DEG, tilt_fix: str = "", down_fix: str = "",
-                     when=None) -> None:
+                     when=None, unit_fixes: tuple[str, str] = (" (--accel-unit g)", " (--accel-unit m/s2)")) -> None:
     """Raise :class:`ProfileError` naming the likely mistake unless the still force reads +1 g up in
     the cabin frame: magnitude within :data:`MAGNITUDE_TOLERANCE` of g and direction within
     ``tolerance`` [deg] (:data:`UP_TOLERANCE_DEG`) of ``up``, the world's up in the cabin frame (cabin +z for a vehicle at rest
     or flying level; from the attitude where it is known; None: the magnitude alone, for a log whose
     axes do not matter). ``axes_hint`` adds how the axes were declared to the message, ``tilt_fix``
     what mends a tilt of up to :data:`MAX_TILT_DEG`, ``down_fix`` what mends a force that reads -1 g;
-    ``when`` prints a time of the still stretch (default: seconds to the hundredth)."""
+    ``when`` prints a time of the still stretch (default: seconds to the hundredth); ``unit_fixes`` what
+    mends a force in g read as m/s^2 and the reverse (the import's options; a live stream's own words)."""
     f = np.where(np.abs(still.f_cabin) < 1e-9, 0.0, still.f_cabin)  # round-off prints as 0, not 1e-173
     size = float(np.linalg.norm(f))
     when = when or (lambda x: f"{x:.2f} s")
@@ -278,10 +279,10 @@ def check_convention(still: Still, axes_hint: str = "", up=(0.0, 0.0, 1.0),
     ratio = size / G
     if lo / G <= ratio <= hi / G:
         raise ProfileError(f"{where}: |f| = {size:.3g} m/s^2, 1/9.81 of g: the accelerations are in g "
-                           f"but declared as m/s^2? (--accel-unit g)")
+                           f"but declared as m/s^2?{unit_fixes[0]}")
     if lo * G <= ratio <= hi * G:
         raise ProfileError(f"{where}: |f| = {size:.3g} m/s^2, 9.81 g: the accelerations are in m/s^2 but "
-                           f"declared as g? (--accel-unit m/s2)")
+                           f"declared as g?{unit_fixes[1]}")
     if ratio < 0.5:
         raise ProfileError(f"{where}: |f| = {ratio:.2f} g, far below 1 g at rest: kinematic acceleration, not "
                            f"specific force? (gravity taken out: a phone's linear acceleration, Sensor Logger's "

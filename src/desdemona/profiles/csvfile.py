@@ -183,19 +183,24 @@ def runs(mask) -> tuple[np.ndarray, np.ndarray]:
     return edges[::2], edges[1::2]
 
 
-def check_units(path: DesiredPath, where) -> None:
+#: What mends a path in g or in deg/s, in the words of the file commands (a live stream has its own).
+FIXES = ("multiply the force column(s) by 9.80665 (SI: m/s^2 expected; import log: --accel-unit g)",
+         "Divide them by 57.2958 (SI: rad/s expected; import log: --rate-unit deg/s)")
+
+
+def check_units(path: DesiredPath, where, fixes: tuple[str, str] = FIXES) -> None:
     """Refuse a path whose magnitudes are in the wrong units: |f| (or M) above 100 g or reading like g
     (:func:`_check_not_in_g`), |omega| above 50 rad/s or held above :data:`MAX_SUSTAINED_RATE`
     (:func:`_check_sustained_rate`). ``where(k)`` names sample k in a message (a file's line), and
-    ``where(None)`` the path."""
+    ``where(None)`` the path; ``fixes`` what mends a force in g and rates in deg/s."""
     label = "M" if path.S_d is None else "|f|"
     rate = None if path.S_d is None else np.linalg.norm(path.S_d[:, :3], axis=1)
     _check_magnitude(where, path.M_d, label, MAX_SPECIFIC_FORCE, "m/s^2")
     if rate is not None:
         _check_magnitude(where, rate, "|omega|", MAX_ANGULAR_VELOCITY, "rad/s")
-    _check_not_in_g(where(None), path.M_d, label)
+    _check_not_in_g(where(None), path.M_d, label, fixes[0])
     if rate is not None:
-        _check_sustained_rate(where, path.t, rate)
+        _check_sustained_rate(where, path.t, rate, fixes[1])
 
 
 def _check_magnitude(where, values, label, limit, unit):
@@ -206,18 +211,17 @@ def _check_magnitude(where, values, label, limit, unit):
                            f"{limit:.4g} {unit}: wrong units? (SI: rad/s and m/s^2 expected)")
 
 
-def _check_not_in_g(where, size, label):
+def _check_not_in_g(where, size, label, fix=FIXES[0]):
     """Refuse specific forces written in g: a path whose |f| (or M) reads about 1 for most of its
     length (its median within :data:`G_LIKE_MEDIAN`) and never reaches half a g in m/s^2. A motion near
     1 m/s^2 throughout (a tenth of g) is no vehicle's on Earth; a weightless crop reads near 0."""
     median, peak = float(np.median(size)), float(np.max(size))
     if G_LIKE_MEDIAN[0] <= median <= G_LIKE_MEDIAN[1] and peak < 0.5 * G:
         raise ProfileError(f"{where}: {label} has a median of {median:.3g} and never exceeds {peak:.3g} m/s^2: "
-                           f"it reads like g (at rest 1 g is {G:g} m/s^2); multiply the force column(s) by "
-                           f"9.80665 (SI: m/s^2 expected; import log: --accel-unit g)")
+                           f"it reads like g (at rest 1 g is {G:g} m/s^2); {fix}")
 
 
-def _check_sustained_rate(where, t, rate):
+def _check_sustained_rate(where, t, rate, fix=FIXES[1]):
     """Refuse rates written in deg/s: |omega| above :data:`MAX_SUSTAINED_RATE` for
     :data:`SUSTAINED_FOR` or longer, several turns a second that no vehicle a simulator cues keeps
     (a fighter rolls at up to about 5 rad/s for a moment; the corpus peaks at 2)."""
@@ -225,7 +229,7 @@ def _check_sustained_rate(where, t, rate):
         if t[end - 1] - t[first] >= SUSTAINED_FOR:
             raise ProfileError(f"{where(first)}: |omega| stays above {MAX_SUSTAINED_RATE:g} "
                                f"rad/s for {t[end - 1] - t[first]:.3g} s (up to {rate[first:end].max():.4g}): rates "
-                               f"in deg/s? Divide them by 57.2958 (SI: rad/s expected; import log: --rate-unit deg/s)")
+                               f"in deg/s? {fix}")
 
 
 def write_csv(path_or_file, path: DesiredPath, comments=()) -> None:

@@ -1,7 +1,8 @@
 """Batches of off-line jobs: many profiles x configurations, on local processes or a Dask cluster.
 
-Each job optimises one desired path on one configuration and writes its own result folder
-``OUT/<profile>--<configuration>``; the batch ends with a table of all jobs (``OUT/batch.csv`` and
+Each job optimises one desired path on one configuration as ``optimize`` does
+(:func:`desdemona.runs.solve.offline`: whole, or in windows for a long recording or with
+``--window``) and writes its own result folder ``OUT/<profile>--<configuration>``; the batch ends with a table of all jobs (``OUT/batch.csv`` and
 printed). Jobs are independent and deterministic (seeded), so a Dask ``distributed`` cluster gives
 the same results as local processes; Dask is imported only when a scheduler address is given.
 """
@@ -9,7 +10,6 @@ the same results as local processes; Dask is imported only when a scheduler addr
 from __future__ import annotations
 
 import csv
-import dataclasses
 import multiprocessing
 import os
 import time
@@ -19,11 +19,11 @@ from pathlib import Path
 from desdemona import profiles
 from desdemona.check.simulate import LimitViolation
 from desdemona.cueing import sizing
-from desdemona.cueing.offline import OptimizeOptions, optimize
+from desdemona.cueing.offline import OptimizeOptions
 from desdemona.machine.model import Model
 from desdemona.machine.params import MachineParams
 from desdemona.results import report
-from desdemona.runs import session
+from desdemona.runs import session, solve
 from desdemona.support import files, guard
 
 
@@ -53,6 +53,7 @@ class JobResult:
     folder: str
     message: str = ""
     felt: dict | None = None  # metrics.Metrics.key_figures of the result
+    windows: int | None = None  # the windows it was solved in (1: whole)
 
 
 FELT_COLUMNS = ("peak_false_rotation_deg_s", "felt_force_rms_max", "rms_modulus", "reversals_per_s_max")
@@ -62,22 +63,22 @@ def run_job(job: Job, params: MachineParams, choices: session.Choices, options: 
             out_dir: str) -> JobResult:
     """Optimise one job and write its folder; failures become a table line, not an exception.
 
-    choices : the session's (:func:`desdemona.runs.session.offline`, resolved for the job's path and
-    configuration); options : the starts and workers (its ``problem`` is the session's).
+    choices : the session's (:func:`desdemona.runs.solve.offline`, resolved for the job's path and
+    configuration: whole or in windows, as ``optimize`` chooses); options : the starts, seed, workers
+    and refine (its ``problem`` is the session's).
     """
     start = time.perf_counter()
     folder = Path(out_dir) / job.folder_name
     try:
-        resolved = session.offline(profiles.load(job.profile), Model(params, job.config), choices,
-                                   workers=options.workers)
-        options = dataclasses.replace(options, problem=resolved.options)
-        result = optimize(resolved.path, resolved.model, options)
+        result = solve.offline(profiles.load(job.profile), Model(params, job.config), choices,
+                               workers=options.workers, starts=options.starts, seed=options.seed,
+                               refine=options.refine)
         report.write(result, folder, command=f"desdemona batch ({job.profile} on {job.config})", overwrite=True,
                      view=job.view)
         status = "ok" if result.converged else "not converged"
         return JobResult(job.profile, job.config, status, result.check.rms, result.check.worst_use,
                          time.perf_counter() - start, str(folder), "" if result.converged else result.solution.status,
-                         result.quality.key_figures())
+                         result.quality.key_figures(), result.timings.get("windows", 1))
     except LimitViolation as exc:
         return JobResult(job.profile, job.config, "no safe trajectory", None, exc.check.worst_use,
                          time.perf_counter() - start, "", str(exc))
@@ -85,8 +86,8 @@ def run_job(job: Job, params: MachineParams, choices: session.Choices, options: 
         return JobResult(job.profile, job.config, "error", None, None, time.perf_counter() - start, "", str(exc))
 
 
-TABLE_COLUMNS = ("profile", "configuration", "status", "rms", "worst_use", *FELT_COLUMNS, "seconds", "folder",
-                 "message")
+TABLE_COLUMNS = ("profile", "configuration", "status", "rms", "worst_use", *FELT_COLUMNS, "windows", "seconds",
+                 "folder", "message")
 
 
 def check_out(out_dir: str | Path, overwrite: bool = False) -> None:
@@ -129,13 +130,13 @@ def validate(jobs: list[Job], params: MachineParams, choices: session.Choices, o
         if job.profile not in paths:
             paths[job.profile] = profiles.load(job.profile)
         try:
-            job_session = session.offline(paths[job.profile], Model(params, job.config), choices,
-                                          workers=options.workers)
+            job_session = solve.resolve(paths[job.profile], Model(params, job.config), choices,
+                                        workers=options.workers, starts=options.starts)
         except (session.ChoiceError, profiles.ProfileError) as exc:
             raise type(exc)(f"{job.profile} on {job.config}: {exc}") from None
         problem = job_session.options
         sizing.check_time(job_session.path, job_session.model.config, problem.h_u, problem.solver, options.starts,
-                          options.workers, job_session.window, max_time)
+                          job_session.workers, job_session.window, max_time)
         folder = Path(out_dir) / job.folder_name
         report.check_replaceable(folder, protect=[job.profile] if Path(job.profile).is_file() else [])
 
@@ -191,8 +192,8 @@ def _write_table(out: Path, results: list[JobResult]) -> None:
             writer.writerow(TABLE_COLUMNS)
             for r in results:
                 felt = [None if r.felt is None else r.felt[c] for c in FELT_COLUMNS]
-                writer.writerow([r.profile, r.config, r.status, r.rms, r.worst_use, *felt, f"{r.seconds:.3f}",
-                                 r.folder, r.message])
+                writer.writerow([r.profile, r.config, r.status, r.rms, r.worst_use, *felt, r.windows,
+                                 f"{r.seconds:.3f}", r.folder, r.message])
         with guard.deferred():
             os.replace(tmp, out / "batch.csv")
 
@@ -250,19 +251,19 @@ def _negligible(value: float | None, below: float = 1e-3) -> float | None:
 def table(results: list[JobResult]) -> str:
     """The batch's printed table: per job its status, RMS, worst limit use, what is felt (peak false
     rotation [deg/s], worst felt force error RMS [m/s^2], most acceleration reversals per second) and
-    its time; a second line gives the units (RMS: weighted as the run's --weights, mixed units)."""
+    the windows it was solved in (1: whole) and its time; a second line gives the units (RMS: weighted as the run's --weights, mixed units)."""
     def cell(value, fmt):
         return "-" if value is None else format(value, fmt)
 
     lines = [f"{'profile':<18}{'configuration':<18}{'status':<20}{'RMS':>10}{'worst use':>11}{'false rot':>11}"
-             f"{'felt f':>9}{'rev/s':>9}{'time [s]':>10}",
+             f"{'felt f':>9}{'rev/s':>9}{'windows':>9}{'time [s]':>10}",
              f"{'':<56}{'weighted':>10}{'1 = limit':>11}{'[deg/s]':>11}{'[m/s^2]':>9}"]
     for r in results:
         felt = r.felt or {}
         lines.append(f"{r.profile:<18}{r.config:<18}{r.status:<20}{cell(r.rms, '.4g'):>10}"
                      f"{cell(r.worst_use, '.4f'):>11}{cell(_negligible(felt.get('peak_false_rotation_deg_s')), '.3g'):>11}"
                      f"{cell(felt.get('felt_force_rms_max'), '.3g'):>9}"
-                     f"{cell(felt.get('reversals_per_s_max'), '.3g'):>9}{r.seconds:>10.2f}")
+                     f"{cell(felt.get('reversals_per_s_max'), '.3g'):>9}{cell(r.windows, 'd'):>9}{r.seconds:>10.2f}")
         if r.message:
             lines.append(f"    {r.message}")
     return "\n".join(lines)

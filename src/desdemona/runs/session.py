@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import os
 from dataclasses import dataclass
 
 import numpy as np
@@ -103,13 +104,17 @@ class Choices:
 class Session:
     """A resolved session: the desired path the configuration follows (with the gain), and the
     options of its problem (:class:`~desdemona.cueing.formulation.ProblemOptions` off-line,
-    :class:`~desdemona.control.online.OnlineOptions` on-line), and its size (:mod:`desdemona.cueing.sizing`)."""
+    :class:`~desdemona.control.online.OnlineOptions` on-line), and its size (:mod:`desdemona.cueing.sizing`);
+    off-line also the window it is solved in (None: whole), the processes its starts run on, and its
+    method ("optimize", or "thesis": the thesis' own optimiser, :func:`thesis`)."""
 
     path: DesiredPath
     model: Model
     options: object
     size: sizing.Size
     window: float | None = None
+    workers: int = 1
+    method: str = "optimize"
 
 
 def cued(path: DesiredPath, model: Model, choices: Choices) -> DesiredPath:
@@ -146,13 +151,28 @@ def start(model: Model, choices: Choices, allowed: tuple[str, ...]) -> tuple[str
 
 
 def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solver: str = "auto",
-            perception=None, workers: int = 1) -> Session:
+            perception=None, workers: int | None = 1, starts: int = 1) -> Session:
     """The session of ``optimize`` and of each job of ``batch``: the cued path and its
-    :class:`~desdemona.cueing.formulation.ProblemOptions`, checked to fit in memory with ``workers`` at once.
-    solver "auto": fatrop on three joints or more (``yaw-track-cabin``, ``full``, ``dfs``) where a
-    solve (the path, or its window) has at most :data:`FATROP_UP_TO` intervals, and on a longer path
-    there in windows of :data:`~desdemona.cueing.windows.DEFAULT_WINDOW` unless a window is asked for; IPOPT
-    elsewhere."""
+    :class:`~desdemona.cueing.formulation.ProblemOptions`, checked to fit in memory with ``workers`` at once
+    (None: fitted, one process per core and at most one per start, fewer where they would not fit in
+    memory together). solver "auto": fatrop on three joints or more (``yaw-track-cabin``, ``full``,
+    ``dfs``) where a solve (the path, or its window) has at most :data:`FATROP_UP_TO` intervals, and on
+    a longer path there in windows of :data:`~desdemona.cueing.windows.DEFAULT_WINDOW` unless a window
+    is asked for; IPOPT elsewhere."""
+    if workers is not None:
+        return _offline(path, model, choices, solver, perception, workers)
+    workers = max(1, min(len(os.sched_getaffinity(0)), starts))
+    while True:
+        try:
+            return _offline(path, model, choices, solver, perception, workers)
+        except sizing.TooLarge:
+            if workers == 1:
+                raise
+            workers -= 1
+
+
+def _offline(path: DesiredPath, model: Model, choices: Choices, solver: str, perception, workers: int) -> Session:
+    """:func:`offline` on ``workers`` processes."""
     from desdemona.cueing import windows
     from desdemona.cueing.formulation import ProblemOptions
 
@@ -175,7 +195,7 @@ def offline(path: DesiredPath, model: Model, choices: Choices = Choices(), solve
         few = round(part.duration / choices.h_u) <= FATROP_UP_TO
         problem = dataclasses.replace(problem, solver="fatrop" if staged and few else "ipopt")
     size = sizing.check_fits(part, model.config, problem, workers, model.limits.smooth)
-    return Session(path, model, problem, size, window)
+    return Session(path, model, problem, size, window, workers)
 
 
 def _window(path: DesiredPath, model: Model, problem, asked: float | None, workers: int,
@@ -206,7 +226,7 @@ def thesis(path: DesiredPath, model: Model, choices: Choices = Choices()) -> Ses
     path = path.with_gain(choices.gain)
     problem = ProblemOptions(h_u=max(choices.h_u, 0.1))
     size = sizing.check_fits(path, model.config, problem, 1, model.limits.smooth)
-    return Session(path, model, problem, size)
+    return Session(path, model, problem, size, method="thesis")
 
 
 def default_rotation_band(config) -> float:
@@ -252,7 +272,7 @@ def _felt(model: Model, perception, rotation_band, rotation_ceiling, spin_weight
 def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, horizon: float | None = None,
            reach: float | None = None, step: float = 0.02, predictor: str = "perfect",
            reference: DesiredPath | None = None, forecast=None, perception="auto", rotation_band="auto",
-           rotation_ceiling="auto", spin_weight="auto", **timing) -> Session:
+           rotation_ceiling="auto", spin_weight="auto", live: bool = False, **timing) -> Session:
     """The session of ``online``: the cued path and its :class:`~desdemona.control.online.OnlineOptions`.
 
     horizon : how far the preview reaches [s], None: :func:`~desdemona.control.mpc.default_horizon`
@@ -269,7 +289,9 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     :attr:`MPCOptions.rotation_ceiling`, "auto": :data:`ROTATION_CEILING` with a perception model
     (docs/benchmarks/felt-rotation-ceiling.md); spin_weight : :attr:`MPCOptions.spin_weight` (None: 0), "auto":
     :data:`SPIN_WEIGHT`
-    with a perception model where the cabin follows the force (``dfs``), else 0; ``timing``: the other
+    with a perception model where the cabin follows the force (``dfs``), else 0; live : a live
+    session's (:func:`live`), whose predictor may run live and whose forecasts come from the host
+    (:func:`desdemona.control.predictors.check`); ``timing``: the other
     :class:`MPCOptions` fields (replan, delay, deadline, method, tail_step).
     """
     from desdemona.control.mpc import MPCOptions, default_horizon
@@ -279,9 +301,8 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     if reference is not None and (reference.S_d is None) != (path.S_d is None):
         raise ChoiceError(f"--reference {reference.name}: its channels ({'t,M' if reference.S_d is None else 'S'}) "
                          f"differ from the path's")
+    _predictor(predictor, live, reference, forecast)
     if forecast is not None:
-        if predictor != "forecast":
-            raise ChoiceError("--forecast is used only with --predictor forecast")
         if forecast.channels != (1 if path.S_d is None else 6):
             raise ChoiceError(f"--forecast: its channels ({'t0,t,M' if forecast.channels == 1 else 'S'}) differ "
                               f"from the path's")
@@ -302,9 +323,6 @@ def online(path: DesiredPath, model: Model, choices: Choices = Choices(), *, hor
     deadline = timing.get("deadline")
     if deadline is not None and not deadline > 0:
         raise ChoiceError(f"--deadline {deadline:g}: must be a positive number of seconds")
-    if (predictor == "route") != (reference is not None):
-        raise ChoiceError("--predictor route needs --reference, a recording of the same course" if reference is None
-                         else "--reference is used only with --predictor route")
     weighted, wall = cost(path, model, choices), _wall(choices)
     try:
         mpc = MPCOptions(horizon=horizon, step=step, reach=reach, wall=wall, **felt, **weighted, **timing)
@@ -329,22 +347,30 @@ def live(model: Model, choices: Choices = Choices(), *, channels: int, rate: flo
     (``channels``: 6 for S, 1 for the modulus) and the cycle's ``rate`` [Hz] (None: the on-line
     step's default, 50 Hz); sized for ``span`` seconds (None: :data:`LIVE_SPAN`). The path the result
     holds is a placeholder at 1 g; ``online_kwargs``: as :func:`online` takes them (not ``step``), the
-    predictor one of :data:`desdemona.control.predictors.LIVE` (default ``hold``)."""
+    predictor one that may run live (:data:`desdemona.control.predictors.PREDICTORS`, default ``hold``)."""
     if channels not in (1, 6):
         raise ChoiceError(f"--channels {channels}: 6 (S) or 1 (the modulus)")
     if rate is not None and not (math.isfinite(rate) and 0 < rate <= MAX_LIVE_RATE):
         raise ChoiceError(f"--rate {rate:g}: at most {MAX_LIVE_RATE:g} cycles a second (the controller takes "
                           f"several milliseconds a cycle; see docs/benchmarks/real-time-service.md)")
-    from desdemona.control.predictors import LIVE
+    from desdemona.control.predictors import LIVE_DEFAULT
 
-    predictor = online_kwargs.setdefault("predictor", LIVE[0])
-    if predictor not in LIVE:
-        raise ChoiceError(f"--predictor {predictor}: a live session uses one of {', '.join(LIVE)}")
+    online_kwargs.setdefault("predictor", LIVE_DEFAULT)
     span = LIVE_SPAN if span is None else span
     t = np.array([0.0, span])
     placeholder = (DesiredPath("host", t, None, modulus=np.full(2, profiles.G)) if channels == 1 else
                    DesiredPath("host", t, np.tile([0.0, 0.0, 0.0, 0.0, 0.0, profiles.G], (2, 1))))
-    return online(placeholder, model, choices, step=0.02 if rate is None else 1.0 / rate, **online_kwargs)
+    return online(placeholder, model, choices, step=0.02 if rate is None else 1.0 / rate, live=True, **online_kwargs)
+
+
+def _predictor(name: str, live: bool, reference, forecast) -> None:
+    """The predictor checked against what it needs and where it runs (:func:`desdemona.control.predictors.check`)."""
+    from desdemona.control import predictors
+
+    try:
+        predictors.check(name, live, reference is not None, forecast is not None)
+    except ValueError as exc:
+        raise ChoiceError(str(exc)) from None
 
 
 def parse_state(text: str, model: Model) -> tuple[np.ndarray, np.ndarray]:

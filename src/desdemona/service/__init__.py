@@ -5,6 +5,8 @@ service runs a session and sends setpoints to the motion system.
 - :mod:`desdemona.service.serve`: ``desdemona serve``, the session at a fixed rate, its watchdog and
   parking, and its log;
 - :mod:`desdemona.service.hosts`: hosts for one computer (``desdemona host replay|jsbsim``);
+- :mod:`desdemona.service.bridge`, :mod:`desdemona.service.flightgear`, :mod:`desdemona.service.xplane`:
+  bridges from a running simulator's own UDP output, checked live (``desdemona host flightgear|xplane``);
 - :mod:`desdemona.service.machine`: a stand-in for the motion system (``desdemona machine``), which
   checks every setpoint on its own.
 

@@ -41,9 +41,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from desdemona.check.simulate import TOLERANCE, ClosedLoop
+from desdemona.control import predictors
 from desdemona.control.mpc import MPC
 from desdemona.control.online import OnlineOptions, OnlineResult, judge
-from desdemona.control.predictors import LIVE, predictor
+from desdemona.control.predictors import predictor
 from desdemona.machine.model import Model
 from desdemona.machine.plan import Plan, State, stopping_jerk
 from desdemona.profiles import DesiredPath, ProfileError
@@ -238,11 +239,10 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
     """Run a session (see the module's docstring) until ``serving.duration``, ``serving.quiet_end`` or
     a stop signal; returns what it did. The controller's options are ``options.mpc`` (a plan every
     step: the session's step is the cycle); its predictor ``options.predictor``
-    (:data:`desdemona.control.predictors.LIVE`). ``ready()``, if given, is called once the service listens;
+    (one that may run live, :data:`desdemona.control.predictors.PREDICTORS`). ``ready()``, if given, is called once the service listens;
     ``on_drop(reason)`` the first time a datagram is dropped for a reason."""
     mpc = options.mpc
-    if options.predictor not in LIVE:
-        raise ValueError(f"predictor {options.predictor!r}: a live session uses one of {', '.join(LIVE)}")
+    predictors.check(options.predictor, True, options.reference is not None, options.forecast is not None)
     if mpc.replan_steps != 1:
         raise ValueError("a live session plans every cycle: no --replan")
     h = mpc.step
