@@ -186,7 +186,7 @@ def _guarded(tmp_path, body: str) -> subprocess.Popen:
     """A process that runs ``body`` inside guard.interruptible() and exits as the command line does."""
     script = tmp_path / "guarded.py"
     script.write_text(
-        "import sys\nimport numpy as np\nfrom desdemona import guard\n"
+        "import sys\nimport numpy as np\nfrom desdemona.support import guard\n"
         "a = np.random.default_rng(0).random((2500, 2500))\n"
         "print('ready', flush=True)\n"
         "try:\n    with guard.interruptible():\n" + "".join(f"        {line}\n" for line in body.splitlines())

@@ -327,12 +327,17 @@ def _compiled_into(cc: str | None, target: Path, files: dict[str, str], flags: l
         else:
             compile_only = [f for f in flags if f != "-shared"]
             largest = sorted(files, key=lambda name: -len(files[name]))
+            # the threads only compile: a failure is told from here, once (a warning from a thread
+            # came after an interrupted run's last line)
             with concurrent.futures.ThreadPoolExecutor(max_workers=workers or os.cpu_count() or 1) as pool:
-                done = list(pool.map(lambda name: _cc(cc, files[name], Path(work) / name,
-                                                      [*compile_only, "-c", "-o", str(Path(work) / f"{name}.o")]),
-                                     largest))
+                failed = [error for error in pool.map(lambda name: _compile_error(
+                    cc, files[name], Path(work) / name, [*compile_only, "-c", "-o", str(Path(work) / f"{name}.o")]),
+                    largest) if error is not None]
             objects = [str(Path(work) / f"{name}.o") for name in largest]
-            if not all(done) or not _cc(cc, None, None, [*flags, *objects, "-o", str(so_file)]):
+            if failed:
+                _failed(failed[0])
+                return False
+            if not _cc(cc, None, None, [*flags, *objects, "-o", str(so_file)]):
                 return False
         os.replace(so_file, target)
     return True
@@ -341,17 +346,27 @@ def _compiled_into(cc: str | None, target: Path, files: dict[str, str], flags: l
 def _cc(cc: str | None, source: str | None, c_file: Path | None, flags: list[str]) -> bool:
     """Compile ``source`` (written to ``c_file``; None: link the objects among ``flags``) with
     ``flags``; False, with a warning, where it fails."""
-    if c_file is not None:
-        c_file.write_text(source)
+    error = _compile_error(cc, source, c_file, flags)
+    if error is not None:
+        _failed(error, stacklevel=4)
+    return error is None
+
+
+def _compile_error(cc: str | None, source: str | None, c_file: Path | None, flags: list[str]) -> str | None:
+    """:func:`_cc` without the warning: None where it compiled, else what the compiler said."""
     try:
+        if c_file is not None:
+            c_file.write_text(source)
         subprocess.run([cc, *([str(c_file)] if c_file is not None else []), *flags, "-lm"], check=True,
                        capture_output=True, text=True, timeout=TIMEOUT)
     except (OSError, TypeError, subprocess.SubprocessError) as error:
-        detail = getattr(error, "stderr", "") or str(error)
-        warnings.warn(f"compiling the stage functions failed ({detail.strip()[:300]}): they stay "
-                      "interpreted", RuntimeWarning, stacklevel=3)
-        return False
-    return True
+        return (getattr(error, "stderr", "") or str(error)).strip()[:300]
+    return None
+
+
+def _failed(detail: str, stacklevel: int = 4) -> None:
+    warnings.warn(f"compiling the stage functions failed ({detail}): they stay interpreted", RuntimeWarning,
+                  stacklevel=stacklevel)
 
 
 def _background(cc: str, target: str, pending: str, *flags: str) -> None:
