@@ -187,7 +187,7 @@ def built() -> bool:
 def _background(marker: str) -> None:
     """:func:`load`'s process that builds BLASFEO for later runs, at the lowest priority; the marker
     that keeps other runs from starting another removed at its end, whatever happened."""
-    os.nice(19)
+    compiled.lowest_priority()
     try:
         with open(os.devnull, "w") as quiet, contextlib.redirect_stderr(quiet):
             build()
