@@ -35,8 +35,13 @@ what the occupant feels, read from the result's ``summary.json`` ("quality"):
 - felt direction RMS and peak [deg] and the peak of the part the machine made, beyond a still level
   cabin's (``made``: :func:`desdemona.check.metrics.direction_made`), peak felt rotation through the canals
   [deg/s], acceleration reversals per second of the worst joint (swings across 5 % of its peak);
+- what the occupant suffers beyond the cue (:mod:`desdemona.occupant.coriolis`,
+  :mod:`desdemona.occupant.sickness`): the peak cross-coupled angular velocity of a head nod (30 deg in
+  0.5 s, the worst of pitch, roll and yaw, started at any instant) [deg/s] and the sickness dose
+  MSDV_z of the vertical force [m/s^1.5];
 - on-line rows: the p99 compute time per cycle [ms] and the deadlines missed; and the classical
-  loop's felt force RMS, correlation, felt direction peak and felt rotation peak from the same run
+  loop's felt force RMS, correlation, felt direction peak, felt rotation peak, nod cross-coupling
+  peak and MSDV_z from the same run
   (it reads only the present sample, as ``hold``), with MPC / classical for the felt force;
 - on ``forecast`` rows, the share of the gap between ``hold`` and ``perfect`` that the forecast
   closes: (hold - forecast) / (hold - perfect) of the felt force RMS ("-" where the gap is under
@@ -195,7 +200,15 @@ def felt_figures(quality: dict | None, channel: str) -> dict:
             "direction_peak": quality["felt_direction"]["peak_deg"],
             "direction_made": quality["felt_direction"].get("made_peak_deg"),
             "rotation_peak": max((r for r in rotation if r is not None), default=None),
-            "reversals": max(reversals, default=None)}
+            "reversals": max(reversals, default=None), **suffered(quality)}
+
+
+def suffered(quality: dict) -> dict:
+    """What the occupant suffers, from a summary's ``quality`` (none where it predates them): the
+    largest peak cross-coupled angular velocity of the standard head nods [deg/s] and MSDV_z [m/s^1.5]."""
+    nods = quality.get("cross_coupling") or {}
+    peaks = [nods[name]["velocity_peak_deg_s"] for name in ("pitch", "roll", "yaw") if name in nods]
+    return {"cross_coupling": max(peaks, default=None), "msdv_z": (quality.get("sickness") or {}).get("msdv_z")}
 
 
 def shape_thresholds(path: profiles.DesiredPath, channel: str) -> float:
@@ -312,9 +325,10 @@ def cell(value, fmt: str) -> str:
 def table(rows: list[dict]) -> str:
     """The markdown table of every job's row."""
     lines = ["| case | s | configuration | mode | exit | wall [s] | wall / s | peak [MB] | felt force RMS | "
-             "corr | lag [s] | dir RMS / peak / made [deg] | rot peak [deg/s] | rev/s | p99 [ms] | missed | "
-             "classical: force RMS | corr | dir peak / made | rot peak | MPC / classical | forecast closes |",
-             "| --- " * 22 + "|"]
+             "corr | lag [s] | dir RMS / peak / made [deg] | rot peak [deg/s] | rev/s | nod x-coupling [deg/s] | "
+             "MSDV_z | p99 [ms] | missed | classical: force RMS | corr | dir peak / made | rot peak | "
+             "nod x-coupling | MSDV_z | MPC / classical | forecast closes |",
+             "| --- " * 26 + "|"]
     for r in rows:
         ratio = (r["force_rms"] / r["classical_force_rms"]
                  if r.get("force_rms") is not None and r.get("classical_force_rms") else None)
@@ -325,10 +339,12 @@ def table(rows: list[dict]) -> str:
             f"{cell(r.get('direction_rms'), '.1f')} / {cell(r.get('direction_peak'), '.0f')} / "
             f"{cell(r.get('direction_made'), '.0f')} | "
             f"{cell(r.get('rotation_peak'), '.0f')} | {cell(r.get('reversals'), '.2f')} | "
+            f"{cell(r.get('cross_coupling'), '.0f')} | {cell(r.get('msdv_z'), '.2f')} | "
             f"{cell(r.get('p99_ms'), '.1f')} | {cell(r.get('misses'), 'd')} | "
             f"{cell(r.get('classical_force_rms'), '.3f')} | {cell(r.get('classical_correlation'), '.2f')} | "
             f"{cell(r.get('classical_direction_peak'), '.0f')} / {cell(r.get('classical_direction_made'), '.0f')} | "
             f"{cell(r.get('classical_rotation_peak'), '.0f')} | "
+            f"{cell(r.get('classical_cross_coupling'), '.0f')} | {cell(r.get('classical_msdv_z'), '.2f')} | "
             f"{cell(ratio, '.2f')} | {cell(r.get('forecast_closes'), '.0%')} |")
     return "\n".join(lines)
 
@@ -343,6 +359,24 @@ def forecast_closes(rows: list[dict]) -> None:
         hold, perfect = rms.get((r["case"], r["config"], "hold")), rms.get((r["case"], r["config"], "perfect"))
         if None not in (hold, perfect, r.get("force_rms")) and abs(hold - perfect) >= GAP * hold:
             r["forecast_closes"] = (hold - r["force_rms"]) / (hold - perfect)
+
+
+def reread(record: Path, keys, key_of) -> list[dict]:
+    """The latest job of each key recorded in ``record`` (JSON lines), in the order of ``keys``; a key
+    never recorded is left out. key_of : a job's key."""
+    latest = {key_of(job): job for job in map(json.loads, record.read_text().splitlines())}
+    return [latest[key] for key in keys if key in latest]
+
+
+def recorder(record: Path, describe):
+    """The ``progress`` of :func:`desdemona.runs.batch.map_jobs`: ``[count/total] describe(job)`` on
+    stderr, and the job appended to ``record`` as it ends."""
+    def progress(count, total, job):
+        print(f"[{count}/{total}] {describe(job)}", file=sys.stderr, flush=True)
+        with open(record, "a") as fh:
+            fh.write(json.dumps(job) + "\n")
+
+    return progress
 
 
 def write_docs(text: str) -> None:
@@ -411,15 +445,11 @@ def main(argv=None) -> int:
     spread_before = None if args.table_only else jitter()
     started = time.perf_counter()
     if args.table_only:
-        latest = {(j["case"], j["config"], j["mode"]): j for j in map(json.loads, record.read_text().splitlines())}
-        done = [latest[(c["name"], config, mode)] for c, config, mode in jobs if (c["name"], config, mode) in latest]
+        done = reread(record, [(c["name"], config, mode) for c, config, mode in jobs],
+                      lambda j: (j["case"], j["config"], j["mode"]))
     else:
-        def progress(count, total, job):
-            print(f"[{count}/{total}] {job['case']} on {job['config']} ({job['mode']}): exit {job['exit']}, "
-                  f"{job['wall_s']:.1f} s, {job['peak_mb']:.0f} MB", file=sys.stderr, flush=True)
-            with open(record, "a") as fh:
-                fh.write(json.dumps(job) + "\n")
-
+        progress = recorder(record, lambda job: f"{job['case']} on {job['config']} ({job['mode']}): exit "
+                                                f"{job['exit']}, {job['wall_s']:.1f} s, {job['peak_mb']:.0f} MB")
         done = batch.map_jobs(run_job, [(c, config, mode, str(args.out), args.timeout, args.wall,
                                          None if mode == "offline" else steps.get(config),
                                          tuple((args.offline_args if mode == "offline" else args.online_args).split()))

@@ -1,7 +1,7 @@
 """Tune the classical washout per configuration on the corpus and the built-in paths: the honest baseline.
 
     nice -n 10 python benchmarks/tune_classical.py                 # the search, then the before/after table
-    python benchmarks/tune_classical.py --table-only               # the table of the frozen desdemona.baselines.washout.WASHOUT
+    python benchmarks/tune_classical.py --table-only               # the table of the tuned settings of the configurations (desdemona.baselines.washout.tuned)
     python benchmarks/tune_classical.py --configs full --cases f16-turn catapult   # a quick look
 
 Cases: every six-channel case of the corpus (``benchmarks/corpus/*.csv`` without ``-M``, built by
@@ -44,7 +44,7 @@ import numpy as np
 import real  # benchmarks/real.py: the corpus index (the script's own folder is on the path)
 
 from desdemona import profiles
-from desdemona.baselines.washout import WASHOUT, Washout, classical_washout
+from desdemona.baselines.washout import Washout, classical_washout, tuned
 from desdemona.check import metrics
 from desdemona.check.simulate import check, evaluate_plan
 from desdemona.machine.model import Model
@@ -169,7 +169,7 @@ def search(config: str, cases, step: float, worse: float, log) -> Washout:
 
 
 def table(cases, step: float) -> tuple[str, list[dict]]:
-    """The before/after markdown table (untuned ``Washout()`` and the frozen WASHOUT) on ``step``."""
+    """The before/after markdown table (untuned ``Washout()`` and the configurations' tuned settings) on ``step``."""
     lines = ["| case | configuration | felt force RMS before / after [m/s^2] | after / before | "
              "direction peak before / after [deg] | rotation peak before / after [deg/s] | limits |",
              "| --- " * 7 + "|"]
@@ -179,7 +179,7 @@ def table(cases, step: float) -> tuple[str, list[dict]]:
         ratios = []
         for name, path in cases:
             before = evaluate(path, model, Washout(), step, checked=True)
-            after = evaluate(path, model, WASHOUT[config], step, checked=True)
+            after = evaluate(path, model, tuned(model.config), step, checked=True)
             ratios.append(after["force_rms"] / before["force_rms"])
             records.append({"case": name, "config": config, "before": before, "after": after})
             limits = "held" if before["passed"] and after["passed"] else "BROKEN"

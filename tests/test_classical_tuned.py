@@ -1,4 +1,4 @@
-"""The tuned classical washout (:data:`desdemona.baselines.washout.WASHOUT`): on a sustained force the arm holds it
+"""The tuned classical washout (:func:`desdemona.baselines.washout.tuned`): on a sustained force the arm holds it
 as a centrifuge does, the felt force in the cabin follows the intent, and every limit holds."""
 
 import numpy as np
@@ -6,11 +6,11 @@ import pytest
 
 from desdemona.baselines.washout import (
     ARM_RATE_SHARE,
-    WASHOUT,
     Washout,
     _gimbal_angles,
     _rotation_between,
     classical_washout,
+    tuned,
 )
 from desdemona.check.simulate import TOLERANCE, check, evaluate_plan
 from desdemona.machine.model import Model
@@ -41,8 +41,8 @@ def held_force(config: str, force) -> np.ndarray:
     ``arm_min`` (eq. 7.7: on full the centripetal force beside g, sqrt(|f|^2 - g^2); on yaw-track-cabin
     the horizontal force), the arm's rate within its share of the limit, turned onto the desired
     direction."""
-    settings, force = WASHOUT[config], np.asarray(force, dtype=float)
     model = Model(config=config)
+    settings, force = tuned(model.config), np.asarray(force, dtype=float)
     need = np.sqrt(force @ force - G**2) if config == "full" else np.hypot(force[0], force[1])
     rate = min(np.sqrt(max(need - settings.arm_min, 0.0) / settings.radius), ARM_RATE_SHARE * model.limits.velocity[0])
     centripetal = settings.radius * rate**2
@@ -57,8 +57,8 @@ def test_the_tuned_washout_holds_a_sustained_force_within_every_limit(config, fo
     model = Model(config=config)
     path = sustained(force)
     old, _, _ = felt_force_rms(model, path, Washout())
-    tuned, plan, traj = felt_force_rms(model, path, WASHOUT[config])
-    assert tuned < 0.8 * old
+    rms, plan, traj = felt_force_rms(model, path, tuned(model.config))
+    assert rms < 0.8 * old
     # the felt force in the cabin, re-simulated, is what the arm holds once it is up to speed
     late = traj.t > path.t[-1] - 5.0
     np.testing.assert_allclose(traj.S[late, 3:], np.broadcast_to(held_force(config, force), (late.sum(), 3)),
@@ -71,11 +71,15 @@ def test_the_tuned_washout_holds_a_sustained_force_within_every_limit(config, fo
 
 
 def test_the_default_washout_is_the_tuned_one_per_configuration():
+    """The tuned settings are the configuration's data: the two tuned ones run them, the others the
+    untuned defaults."""
     path = sustained((0.0, 0.0, 1.2 * G), duration=4.0)
+    assert tuned(Model(config="yaw-track").config) == Washout()
+    assert tuned(Model(config="full").config) != tuned(Model(config="yaw-track-cabin").config) != Washout()
     for config in ("full", "yaw-track-cabin", "yaw-track"):
         model = Model(config=config)
         default = classical_washout(path, model)
-        expected = classical_washout(path, model, settings=WASHOUT.get(config, Washout()))
+        expected = classical_washout(path, model, settings=tuned(model.config))
         np.testing.assert_array_equal(default.u, expected.u)
 
 

@@ -19,6 +19,7 @@ from desdemona.cueing.formulation import ProblemOptions
 from desdemona.cueing.offline import initial_guesses
 from desdemona.cueing.transcription import CueingProblem
 from desdemona.machine.plan import Plan
+from desdemona.support import guard
 
 needs_compiler = pytest.mark.skipif(compiled.compiler() is None, reason="no C compiler")
 
@@ -82,13 +83,13 @@ def test_fatrop_takes_the_stage_assembled_derivatives_compiled(params, cache, mo
     iterates as on CasADi's own derivatives of the NLP, to the optimum IPOPT finds; the stage
     library goes to the cache, the NLP's own library nowhere."""
     monkeypatch.setattr("tempfile.tempdir", str(tmp_path))
-    told = []  # an optimised compile takes long: the command line is told before it
-    monkeypatch.setattr(compiled, "notice", told.append)
+    told = []  # an optimised compile takes long: the command line is told as it begins and ends
     model, path = Model(params, "yaw-track-cabin"), short(duration=1.5)
     options = ProblemOptions(h_u=0.1, solver="fatrop", expand=False)
-    fast = CueingProblem(model, path, options)
-    assert len(told) == 1 and "compiling the stage functions" in told[0]
-    assert CueingProblem(model, short(duration=2.0), options).compiled and len(told) == 1  # cached
+    with guard.reporting(None, tell=told.append):
+        fast = CueingProblem(model, path, options)
+        assert len(told) == 2 and "compiling the stage functions" in told[0] and told[1].endswith(" s")
+        assert CueingProblem(model, short(duration=2.0), options).compiled and len(told) == 2  # cached
     slow = CueingProblem(model, path, ProblemOptions(h_u=0.1, solver="fatrop", expand=False, compile=False))
     ipopt = CueingProblem(model, path, ProblemOptions(h_u=0.1, expand=False, compile=False))
     assert fast.compiled and not slow.compiled and fast.limit_curvature

@@ -1,5 +1,6 @@
-"""The felt-motion figure: drawn for a result (felt.png) and an on-line result beside its
-classical loop (online_felt.png), for full and modulus-only paths, without matplotlib's global state."""
+"""The felt-motion and suffered figures: drawn for a result (felt.png, suffered.png) and an on-line result
+beside its classical loop (online_felt.png, online_suffered.png), for full and modulus-only paths,
+without matplotlib's global state."""
 
 from types import SimpleNamespace
 
@@ -34,8 +35,9 @@ def test_draw_result_adds_felt_png_for_a_modulus_path(tmp_path):
     summary = {"configuration": {"name": "dfs", "free_joints": ["yaw"]}, "parameters": {"joints": joints},
                "path": {"name": "test"}, "quality": {"vestibular_model": "telban-cardullo"}}
     names = {p.name for p in figures.draw_result(trajectory(True), summary, tmp_path)}
-    assert {"felt.png", "modulus.png"} <= names
+    assert {"felt.png", "modulus.png", "suffered.png"} <= names
     assert (tmp_path / "felt.png").read_bytes()[:8] == PNG
+    assert (tmp_path / "suffered.png").read_bytes()[:8] == PNG
 
 
 def test_draw_online_sets_the_mpc_beside_the_classical_loop(tmp_path):
@@ -46,6 +48,7 @@ def test_draw_online_sets_the_mpc_beside_the_classical_loop(tmp_path):
                              path=SimpleNamespace(name="test"), loop=SimpleNamespace(compute_times=np.full(10, 1e-3)),
                              deadline=0.01, quality=SimpleNamespace(vestibular="thesis"))
     names = {p.name for p in figures.draw_online(result, tmp_path)}
-    assert "online_felt.png" in names
+    assert {"online_felt.png", "online_suffered.png"} <= names
     assert (tmp_path / "online_felt.png").read_bytes()[:8] == PNG
+    assert (tmp_path / "online_suffered.png").read_bytes()[:8] == PNG
     assert matplotlib.get_backend() == backend

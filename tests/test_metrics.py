@@ -228,6 +228,11 @@ def test_compare_two_folders(two_results, tmp_path, capsys):
     assert rows["correlation fz"][2:] == ["", ""]  # f_z_d = g: no correlation to speak of
     json.dumps(expected.to_dict(), allow_nan=False)  # ready for summary.json
     assert "peak false rotation" in expected.headline()
+    # what the occupant suffers, per folder: the nods' cross-coupling and the sickness dose
+    assert float(rows["cross_coupling pitch velocity_peak"][3]) == pytest.approx(
+        expected.to_dict()["cross_coupling"]["pitch"]["velocity_peak_deg_s"])
+    assert float(rows["sickness msdv_z"][3]) == pytest.approx(expected.sickness_dose.msdv_z)
+    assert "cross-couples" in expected.headline() and "MSDV_z" in expected.headline()
 
 
 def test_compare_rejects_a_folder_that_is_not_a_result(two_results, tmp_path, capsys):

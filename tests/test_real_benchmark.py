@@ -110,3 +110,22 @@ def test_a_folder_with_no_paths_is_refused_and_not_built_into(monkeypatch, tmp_p
         assert stop.value.code == 2
         assert "no paths there" in capsys.readouterr().err
     assert not (tmp_path / "typo").exists() and sorted(p.name for p in tmp_path.iterdir()) == []
+
+
+def test_the_table_has_the_nod_cross_coupling_and_msdv_of_the_mpc_and_the_loop(monkeypatch):
+    """The worst nod's peak and MSDV_z read from a summary's quality (none from one written before
+    they were), and one cell each for the row and its classical loop."""
+    real = load_real(monkeypatch)
+    quality = {"cross_coupling": {"pitch": {"velocity_peak_deg_s": 12.0}, "roll": {"velocity_peak_deg_s": 31.0},
+                                  "yaw": {"velocity_peak_deg_s": 4.0}, "worst": "roll"},
+               "sickness": {"msdv_z": 1.25}}
+    assert real.suffered(quality) == {"cross_coupling": 31.0, "msdv_z": 1.25}
+    assert real.suffered({}) == {"cross_coupling": None, "msdv_z": None}
+    line = real.table([{**row("spun"), "duration_s": 10.0, "exit": 0, "wall_s": 5.0, "peak_mb": 100.0,
+                        "cross_coupling": 31.0, "msdv_z": 1.25, "classical_cross_coupling": 48.0,
+                        "classical_msdv_z": 2.5}]).splitlines()
+    header = [c.strip() for c in line[0].split("|")]
+    cells = [c.strip() for c in line[2].split("|")]
+    assert len(header) == len(cells) == len(line[1].split("|"))
+    assert cells[header.index("nod x-coupling [deg/s]")] == "31" and cells[header.index("MSDV_z")] == "1.25"
+    assert cells[header.index("nod x-coupling")] == "48" and cells[len(header) - 1 - header[::-1].index("MSDV_z")] == "2.50"

@@ -92,8 +92,10 @@ def test_bad_csv_and_missing_folder(tmp_path, capsys):
 def test_existing_folder_is_not_overwritten(tmp_path, capsys):
     out = tmp_path / "r"
     out.mkdir()
+    (out / "notes.txt").write_text("the user's")  # an empty folder is taken as a new one (test_new_user)
     assert main(["optimize", "catapult", "--out", str(out)]) == 2
     assert "already exists" in capsys.readouterr().err
+    assert [p.name for p in out.iterdir()] == ["notes.txt"]
 
 
 def test_batch_on_dask_equals_local_processes(tmp_path, capsys):

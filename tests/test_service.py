@@ -106,7 +106,8 @@ def _serve(duration: float, data, at, extra=(), predictor: str = "hold", **servi
     model, options, port, stand_in, serving = _session(duration, predictor, **serving)
     go = threading.Event()
     host = _send(port, data, at, extra, go=go)
-    def ready():
+    def ready(early):
+        assert early == 0  # the host sends only once the service is ready
         stand_in.from_now()
         go.set()
 

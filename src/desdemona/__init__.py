@@ -4,7 +4,8 @@ The folders are the layers, lowest first; a module imports only from its own fol
 (``tests/test_layout.py`` holds the order):
 
 - :mod:`~desdemona.support`: CasADi helpers, interrupts, files written whole, constants;
-- :mod:`~desdemona.occupant`: the person in the cabin, the vestibular model (chapter 6);
+- :mod:`~desdemona.occupant`: the person in the cabin, the vestibular model (chapter 6), head movements'
+  cross-coupling and the sickness dose;
 - :mod:`~desdemona.profiles`: desired paths and their sources (built-in, CSV, JSBSim, logs);
 - :mod:`~desdemona.machine`: parameters, kinematics, dynamics, configurations, model, plans (appendices A, B);
 - :mod:`~desdemona.check`: the independent limit check and the felt figures;

@@ -81,7 +81,8 @@ def still_home(q, model: Model, force=None) -> np.ndarray:
     """
     config, lim, q = model.config, model.limits, np.asarray(q, dtype=float)
     home = np.full(len(q), np.nan)
-    home[lim.bounded] = 0.5 * (lim.position_min + lim.position_max)[lim.bounded]
+    b = lim.bounded  # the centres of the bounded joints only: -inf + inf of the others is not a number
+    home[b] = 0.5 * (lim.position_min[b] + lim.position_max[b])
     roll = pitch = psi = 0.0
     if force is not None and not model.config.takes_modulus:
         roll, pitch = tilt_angles(force[0], force[1], model.params.gravity)

@@ -20,7 +20,7 @@ as the cabin's orientation turns it into the arm frame. Every command passes the
 guard as the dfs loop (:class:`~desdemona.baselines.classical.Follower`, :class:`~desdemona.baselines.classical.Guard`):
 every limit holds.
 
-The per-configuration settings :data:`WASHOUT` are the tuned baseline.
+The per-configuration settings (:func:`tuned`) are the tuned baseline.
 """
 
 from __future__ import annotations
@@ -69,7 +69,7 @@ class Washout:
     force (omega_lp, unscaled), tilted at most by tilt_limit, and tilt_rate bounds the correction
     beyond the pointing's own rate.
     The defaults are the untuned washout of before (a small grid over four built-in paths); the tuned
-    ones are :data:`WASHOUT`.
+    ones are each configuration's (:func:`tuned`).
     """
 
     omega_hp: float = 0.5
@@ -89,16 +89,13 @@ class Washout:
     arm_min: float = 0.0
 
 
-#: The tuned washout per configuration, the baseline ``online`` runs beside the MPC (frozen): found by
-#: ``nice -n 10 python benchmarks/tune_classical.py`` on 2026-12-02, a coordinate search of the felt
-#: force on the corpus and the built-in paths (docs/benchmarks/classical-washout-tuned.md: mean
-#: felt force RMS 0.96x the untuned on yaw-track-cabin, 0.80x on full); elsewhere :class:`Washout` ().
-WASHOUT: dict[str, Washout] = {
-    "yaw-track-cabin": Washout(omega_hp=0.188, omega_centre=0.188, omega_lp=0.375, tilt_rate=0.279, omega_rot=0.333,
-                               gain=0.931, arm=True, radius=2.25, omega_arm=0.399, arm_accel=0.05, arm_min=4.0),
-    "full": Washout(omega_hp=0.188, omega_centre=0.375, omega_lp=0.665, tilt_rate=0.279, omega_rot=0.188, gain=0.665,
-                    tilt_limit=0.455, arm=True, radius=3.75, omega_arm=0.798, arm_accel=0.133, arm_min=12.0),
-}
+def tuned(config) -> Washout:
+    """The washout a configuration runs beside the MPC: its tuned settings (the configuration's
+    ``washout`` data, found by ``nice -n 10 python benchmarks/tune_classical.py`` on 2026-12-02, a
+    coordinate search of the felt force on the corpus and the built-in paths,
+    docs/benchmarks/classical-washout-tuned.md: mean felt force RMS 0.96x the untuned on
+    yaw-track-cabin, 0.80x on full), else :class:`Washout` ()."""
+    return Washout(**dict(config.washout))
 
 
 def _filtered(numerator, denominator, u, dt, steady: bool = False) -> np.ndarray:
@@ -298,13 +295,12 @@ def classical_washout(path: DesiredPath, model: Model, times=None, settings: Was
     torque, power and the rest over the step (:meth:`Model.step_limit_use`), the command (and so the
     jerk) scaled down until it passes. Without jerk limits the accelerations step, as before.
     Returns the free joints' plan on ``times`` (default: the path's grid), from ``state`` =
-    (q0, qd0[, qdd0]) (default rest). ``settings``: default the configuration's tuned
-    :data:`WASHOUT` (else :class:`Washout` ()). ``trimmed``: the filters start in the steady state of
-    the first sample, as for a session that begins trimmed to it
+    (q0, qd0[, qdd0]) (default rest). ``settings``: default the configuration's, :func:`tuned`.
+    ``trimmed``: the filters start in the steady state of the first sample, as for a session that begins trimmed to it
     (:func:`~desdemona.baselines.classical.steady_start`); else from zero, as if the path had been at rest
     before t = 0.
     """
-    o = WASHOUT.get(model.config.name, Washout()) if settings is None else settings
+    o = tuned(model.config) if settings is None else settings
     t = path.t if times is None else np.asarray(times, dtype=float)
     lim = model.limits
     target = _targets(path, model, t, o, state, trimmed)

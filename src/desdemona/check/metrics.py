@@ -68,6 +68,14 @@ Definitions (S, S_d : (K, 6) on a time grid t : (K,) [s]; channels wx, wy, wz [r
   within a few ms (the zero at tau_L = 0.11 s against the poles at 5 and 2 ms), then as about
   0.98 W exp(-t / 5.9 s). The cabin's own angular velocity is continuous (joint rates are), so the
   spike shows only where S_d steps.
+- What the occupant suffers beyond the cue (:mod:`desdemona.occupant.coriolis`,
+  :mod:`desdemona.occupant.sickness`): the Coriolis cross-coupling of a standard head nod (pitch, roll,
+  yaw by 30 deg in 0.5 s) started at each sample, from the cabin's angular velocity in space S[:, :3]:
+  per nod the peak and RMS of the cross-coupled angular velocity and acceleration and the share of
+  time at which a nod would be felt (any canal at or above its threshold); and the sickness dose of
+  the vertical force S[:, 5]: ISO 2631-1's MSDV_z and vomiting incidence, and Bos & Bles' subjective
+  vertical conflict and incidence. Both of the cabin's motion alone: a wanted rotation cross-couples
+  as much as an unwanted one.
 """
 
 from __future__ import annotations
@@ -79,7 +87,7 @@ import numpy as np
 import scipy.signal
 
 from desdemona.machine.params import default_params
-from desdemona.occupant import perception
+from desdemona.occupant import coriolis, perception, sickness
 from desdemona.profiles import CHANNELS, G
 
 #: Names of S's channels, as in a path CSV's header (and trajectory.csv). Not imported from report, which
@@ -351,12 +359,15 @@ class Metrics:
     rotation_rms: np.ndarray
     rotation_peak: np.ndarray
     rotation_above_pct: np.ndarray
+    cross_coupling: coriolis.CrossCoupling | None = None
+    sickness_dose: sickness.Dose | None = None
 
     CHANNEL_FIELDS = ("rms", "correlation", "lag_s", "perceived_rms", "above_threshold_pct", "peak_false_cue")
     JOINT_FIELDS = ("jerk_peak", "jerk_rms", "qdd_variation_per_s", "sign_changes_per_s", "reversals_per_s",
                     "qd_start")
     #: The first word of every name in :meth:`rows`, in the order the rows come.
-    ROW_GROUPS = (*CHANNEL_FIELDS, "felt_direction", "felt_rotation", *JOINT_FIELDS, "modulus")
+    ROW_GROUPS = (*CHANNEL_FIELDS, "felt_direction", "felt_rotation", *JOINT_FIELDS, "modulus", "cross_coupling",
+                  "sickness")
 
     def felt_direction(self) -> dict[str, float | None]:
         """The felt-direction error's statistics in degrees, JSON-safe: rms_deg, peak_deg,
@@ -383,7 +394,12 @@ class Metrics:
                 "modulus": {"rms": _plain(self.modulus_rms), "correlation": _plain(self.modulus_correlation),
                             "lag_s": _plain(self.modulus_lag_s)},
                 "felt_direction": {"reference": self.direction_reference, **self.felt_direction()},
-                "felt_rotation": self.felt_rotation()}
+                "felt_rotation": self.felt_rotation(), **self._suffered(lambda part: part.to_dict())}
+
+    def _suffered(self, show) -> dict:
+        """``show`` of the cross-coupling and the sickness dose, under their keys, where computed."""
+        parts = {"cross_coupling": self.cross_coupling, "sickness": self.sickness_dose}
+        return {key: show(part) for key, part in parts.items() if part is not None}
 
     def rows(self) -> list[tuple[str, str, float | None]]:
         """The metrics flattened for a table: (name, unit, value) per channel, joint and modulus."""
@@ -410,7 +426,7 @@ class Metrics:
         rows += [("modulus rms", "m/s^2", _plain(self.modulus_rms)),
                  ("modulus correlation", "", _plain(self.modulus_correlation)),
                  ("modulus lag_s", "s", _plain(self.modulus_lag_s))]
-        return rows
+        return rows + [row for part in self._suffered(lambda part: part.rows()).values() for row in part]
 
     def key_figures(self) -> dict[str, float | None]:
         """The few numbers a table of many runs shows (the batch table): peak false rotation [deg/s],
@@ -427,13 +443,16 @@ class Metrics:
             "felt_direction_rms_deg": _degrees(self.direction_rms),
             "felt_direction_peak_deg": _degrees(self.direction_peak),
             "felt_rotation_peak_deg_s": _degrees(np.max(self.rotation_peak)),
+            "cross_coupling_peak_deg_s": None if self.cross_coupling is None
+            else _degrees(self.cross_coupling.worst[1].velocity_peak),
+            "msdv_z": None if self.sickness_dose is None else self.sickness_dose.msdv_z,
         }
 
     def _lag(self, lag: float) -> str:
         """``lag 0.12 s``, or where the search found its best at its window's edge, which says only that
         the lag is that long or longer (or no lag fits): ``lag >= 2.00 s at the search's edge``."""
         if abs(lag) < self.lag_window_s - 1e-9:
-            return f"lag {lag:z.2f} s"
+            return f"lag {shown(lag):z.2f} s"
         return f"lag {'>=' if lag > 0 else '<='} {lag:z.2f} s at the search's edge"
 
     def headline(self) -> str:
@@ -441,7 +460,7 @@ class Metrics:
         parts = []
         if self.rms is not None:
             i = int(np.argmax(self.rms))
-            parts.append(f"worst RMS {self.rms[i]:.3g} {CHANNEL_UNITS[i]} ({CHANNELS[i]})")
+            parts.append(f"worst RMS {shown(self.rms[i]):.3g} {CHANNEL_UNITS[i]} ({CHANNELS[i]})")
             if np.isfinite(self.correlation[i]):
                 parts.append(f"correlation {self.correlation[i]:.2f}, {self._lag(self.lag_s[i])} ({CHANNELS[i]})")
             i = int(np.argmax(self.above_threshold_pct))
@@ -449,24 +468,24 @@ class Metrics:
             rotation = self.peak_false_cue[:3]
             if np.isfinite(rotation).any():
                 i = int(np.nanargmax(rotation))
-                parts.append(f"peak false rotation {math.degrees(rotation[i]):.3g} deg/s ({CHANNELS[i]})")
+                parts.append(f"peak false rotation {shown(math.degrees(rotation[i])):.3g} deg/s ({CHANNELS[i]})")
         elif self.modulus_rms is not None:
-            parts.append(f"RMS(M - M_d) {self.modulus_rms:.3g} m/s^2")
+            parts.append(f"RMS(M - M_d) {shown(self.modulus_rms):.3g} m/s^2")
             if self.modulus_correlation is not None and np.isfinite(self.modulus_correlation):
                 parts.append(f"correlation {self.modulus_correlation:.2f}, {self._lag(self.modulus_lag_s)}")
             i = int(np.argmax(self.rotation_peak))
-            parts.append(f"peak felt rotation {math.degrees(self.rotation_peak[i]):.3g} deg/s ({CHANNELS[i]})")
+            parts.append(f"peak felt rotation {shown(math.degrees(self.rotation_peak[i])):.3g} deg/s ({CHANNELS[i]})")
         if np.isfinite(self.direction_rms):
-            parts.append(f"felt direction off by {math.degrees(self.direction_rms):.3g} deg RMS, "
-                         f"{math.degrees(self.direction_peak):.3g} deg peak (against {self.direction_reference})")
+            parts.append(f"felt direction off by {shown(math.degrees(self.direction_rms)):.3g} deg RMS, "
+                         f"{shown(math.degrees(self.direction_peak)):.3g} deg peak (against {self.direction_reference})")
         if len(self.joints):
             k = int(np.argmax(self.reversals_per_s))
-            parts.append(f"max {self.reversals_per_s[k]:.3g} acceleration reversals/s ({self.joints[k]}, "
+            parts.append(f"max {shown(self.reversals_per_s[k]):.3g} acceleration reversals/s ({self.joints[k]}, "
                          f"swings over {100 * REVERSAL_SHARE:.0f}% of its peak)")
             k = int(np.argmax(np.abs(self.qd_start)))
             unit = joint_units(self.joints)[k]
-            parts.append(f"largest rate at start {abs(self.qd_start[k]):.3g} {unit}/s ({self.joints[k]})")
-        return ", ".join(parts)
+            parts.append(f"largest rate at start {shown(abs(self.qd_start[k])):.3g} {unit}/s ({self.joints[k]})")
+        return ", ".join(parts + list(self._suffered(lambda part: part.headline()).values()))
 
 
 def of_arrays(t, S, S_d, qdd, qd, joint_names, M=None, M_d=None,
@@ -511,7 +530,9 @@ def of_arrays(t, S, S_d, qdd, qd, joint_names, M=None, M_d=None,
                    direction_peak=direction[1], direction_threshold=threshold, direction_above_pct=direction[2],
                    direction_made_peak=float(np.nanmax(made)) if np.isfinite(made).any() else math.nan,
                    rotation_rms=rms(rotation), rotation_peak=np.abs(rotation).max(axis=0),
-                   rotation_above_pct=time_above_threshold(rotation, vestibular.thresholds[:3]))
+                   rotation_above_pct=time_above_threshold(rotation, vestibular.thresholds[:3]),
+                   cross_coupling=coriolis.statistics(t, S[:, :3], vestibular.thresholds[:3]),
+                   sickness_dose=sickness.dose(t, S[:, 5]))
 
 
 def of_trajectory(traj, joint_names, vestibular: perception.VestibularModel | None = None,
@@ -519,6 +540,21 @@ def of_trajectory(traj, joint_names, vestibular: perception.VestibularModel | No
     """All metrics of a :class:`~desdemona.check.simulate.Trajectory` (free joints named ``joint_names``)."""
     return of_arrays(traj.t, traj.S, traj.S_d, traj.qdd, traj.qd, joint_names, traj.M, traj.M_d,
                      vestibular, lag_window)
+
+
+#: A printed figure smaller than this in magnitude, in its printed unit (m/s^2, rad/s or deg/s, s,
+#: deg, %, 1/s), is printed as 0: it is the arithmetic's round-off, not a motion. Every figure that
+#: means something here is 1e-3 or more in these units (the smallest perception threshold, 0.5 deg/s,
+#: is 9e-3 rad/s), and nothing is resolved below 1e-8 (IPOPT's tolerance); double precision leaves
+#: 1e-16 of a value's size per operation, so a channel that should be 0 reads 1e-30..1e-15 (a false
+#: rotation of 4.89e-22 deg/s, a lag of 1.5e-16 s). Only what is printed is rounded: summary.json keeps
+#: every figure as computed.
+ROUND_OFF = 1e-9
+
+
+def shown(value):
+    """``value`` as printed: 0 where its magnitude is below :data:`ROUND_OFF`; None stays None."""
+    return value if value is None or not abs(value) < ROUND_OFF else 0.0
 
 
 def _plain(value) -> float | None:

@@ -19,7 +19,6 @@ from desdemona.machine.params import JOINT_NAMES
 from desdemona.machine.plan import Plan, State
 from desdemona.occupant.perception import VestibularModel
 from desdemona.profiles import CHANNELS, DesiredPath
-from desdemona.support import guard
 
 TOLERANCE = 1e-6
 LIMIT_NAMES = ("position", "velocity", "acceleration", "jerk", "effort", "power")
@@ -237,8 +236,7 @@ def closed_loop(controller, path: DesiredPath, predictor, q0=None, qd0=None,
 
     The plant starts at (q0, qd0) with zero acceleration and applies what it is told: a command whose
     acceleration does not start where the last one ended is a step of acceleration, which the
-    independent check reports on a machine with jerk limits. The loop tells how far it is
-    (:func:`desdemona.support.guard.progressed`: a long run's progress).
+    independent check reports on a machine with jerk limits.
 
     With ``delay`` (thesis 7.1, figure 7.2) the plan computed in the cycle that starts at t is applied
     from t + T_c: the controller is given the state predicted for then (the commands of the running
@@ -266,7 +264,6 @@ def closed_loop(controller, path: DesiredPath, predictor, q0=None, qd0=None,
         record(-o.period, command)
         pending = (command.sequence, command.jerks)
     for k in range(0, steps, r):
-        guard.progressed(k, steps)
         now = k * h
         if o.delay:
             ahead = state

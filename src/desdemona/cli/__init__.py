@@ -38,6 +38,10 @@ except (KeyboardInterrupt, RuntimeError, ImportError) as exc:  # see _stop_behin
 __all__ = ["EXIT_NOT_CONVERGED", "EXIT_UNSAFE", "EXIT_USAGE", "UserError", "main"]
 
 
+def _tell(text: str) -> None:
+    print(f"desdemona: {text}", file=sys.stderr, flush=True)
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     try:
@@ -47,6 +51,11 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print(f"desdemona: {guard.Interrupted(signal.SIGINT).message}", file=sys.stderr)
         return 128 + signal.SIGINT
+    blank = next((name for name in ("out", "csv")
+                  if isinstance(getattr(args, name, None), str) and not getattr(args, name).strip()), None)
+    if blank is not None:  # Path("") is the current folder: never what an empty name meant
+        print(f"desdemona: error: --{blank} {getattr(args, blank)!r}: give a name", file=sys.stderr)
+        return EXIT_USAGE
     from desdemona.check.simulate import LimitViolation
     from desdemona.results.report import ReportError
 
@@ -54,7 +63,8 @@ def main(argv: list[str] | None = None) -> int:
     allocator.one_blas_thread()  # one process per start, no spinning BLAS threads between them
     try:
         # args.held: the output folders this run holds (report.claim), released as it ends
-        with guard.interruptible(), contextlib.ExitStack() as args.held:
+        # a compile into a fresh cache is told, whatever the command (guard.lasting)
+        with guard.interruptible(), contextlib.ExitStack() as args.held, guard.reporting(None, tell=_tell):
             return args.run(args)
     except KeyboardInterrupt:  # a Ctrl-C before the guard was in place (or after it was removed)
         print(f"desdemona: {guard.Interrupted(signal.SIGINT).message}", file=sys.stderr)

@@ -7,6 +7,7 @@ errors, reported by :func:`desdemona.cli.main` as one line), resolves the sessio
 from __future__ import annotations
 
 import collections
+import contextlib
 import os
 import signal
 import sys
@@ -16,8 +17,8 @@ from pathlib import Path
 import numpy as np
 
 from desdemona import profiles
-from desdemona.cli import progress as progress_lines
 from desdemona.cli.exits import EXIT_NOT_CONVERGED, EXIT_UNSAFE, EXIT_USAGE, UserError
+from desdemona.cli.progress import OfflineProgress, OnlineProgress, compile_words
 from desdemona.cueing import sizing
 from desdemona.machine.configs import get_configuration
 from desdemona.machine.model import Model
@@ -26,7 +27,7 @@ from desdemona.occupant import perception as perception_models
 from desdemona.runs import session
 from desdemona.support import files, guard
 
-PROGRESS_EVERY = 10.0  # [s] between progress lines inside a long solve (stderr not a terminal)
+from desdemona.cli.progress import EVERY as PROGRESS_EVERY  # noqa: E402  (re-exported: tests set it)
 
 
 def _machine(args) -> Model:
@@ -38,8 +39,9 @@ def _machine(args) -> Model:
 
 
 def run_model(args) -> int:
-    model = _machine(args)
-    print(describe(model))
+    from desdemona.cli.model_table import describe
+
+    print(describe(_machine(args)))
     return 0
 
 
@@ -69,7 +71,20 @@ def _run_inputs(args):
     """The machine, the desired path and the output folder of a run, each checked before any work."""
     model = _machine(args)
     path = profiles.load(args.profile)
+    shift = _shift(args)
+    if shift:  # the file's own clock, said once: its times and the result's differ by it
+        print(f"desdemona: warning: {args.profile}: its time starts at {shift['time_origin_s']:g} s, read as t = 0 "
+              "(the result's times are the file's less that; summary.json keeps it as time_origin_s)",
+              file=sys.stderr)
     return model, path, _result_folder(args)
+
+
+def _shift(args) -> dict:
+    """The summary.json entry of a path file whose time does not start at 0: the file's time of t = 0."""
+    from desdemona.profiles.forecast import time_origin
+
+    origin = time_origin(args.profile)
+    return {"time_origin_s": origin} if origin else {}
 
 
 def _result_folder(args) -> Path:
@@ -78,18 +93,31 @@ def _result_folder(args) -> Path:
     from desdemona.results import report
 
     out = _claim_out(args)
-    if out.exists() and not args.overwrite:
+    if out.exists() and not args.overwrite and not report.empty_folder(out):
         raise UserError(f"{out}: already exists; choose another folder or add --overwrite")
     report.check_replaceable(out, protect=_inputs(args))
     return out
 
 
+def _check_starts(args, processes: str, count: int) -> None:
+    """--starts, --seed and the processes of an off-line run (``--workers`` or ``--processes``: ``count``)."""
+    from desdemona.cueing.offline import MAX_STARTS
+
+    if args.starts < 1 or count < 1:
+        raise UserError(f"--starts and --{processes} must be at least 1")
+    if args.starts > MAX_STARTS:
+        raise UserError(f"--starts {args.starts}: at most {MAX_STARTS}: each start is a whole solve, and every "
+                        "guess is made before the first; for a wider search run again with another --seed")
+    if args.seed < 0:
+        raise UserError(f"--seed {args.seed}: a seed is a whole number >= 0")
+
+
 def run_optimize(args) -> int:
-    from desdemona.cueing import compiled
     from desdemona.results import report
     from desdemona.runs import solve
 
     model, path, out = _run_inputs(args)
+    _check_starts(args, "workers", 1 if args.workers is None else args.workers)
     thesis = args.method == "thesis"  # the thesis' method has no perception model
     perception = perception_models.get_model(args.perception) if args.perception and not thesis else None
     resolved = solve.resolve(path, model, session.Choices.of(args), args.method, perception, args.workers,
@@ -98,23 +126,26 @@ def run_optimize(args) -> int:
     estimate = None if thesis else sizing.check_time(
         path, model.config, problem.h_u, problem.solver, args.starts, resolved.workers, resolved.window, args.max_time)
     unreachable = sizing.unreachable(path, model)
-    progress = None if args.quiet else progress_lines.Starts(args.starts, size, path, model.config, estimate)
-    compiled.notice = None if progress is None else progress.say
-    with guard.reporting(None if progress is None else progress.solving, PROGRESS_EVERY):
+    progress = None if args.quiet else OfflineProgress(args.starts, size, path, model.config, estimate=estimate)
+    compiling = guard.compile_seconds()
+    with contextlib.nullcontext() if progress is None else progress, \
+            guard.reporting(None if progress is None else progress.solving, PROGRESS_EVERY,
+                            None if progress is None else progress.say):
         result = solve.solve(resolved, args.starts, args.seed, args.refine,
                              progress=None if progress is None else progress.start_done,
                              announce=None if progress is None else progress.window)
     report.write(result, out, command=report.command_line(), overwrite=args.overwrite, unreachable=unreachable,
-                 protect=_inputs(args), view=args.view)
+                 protect=_inputs(args), view=args.view, extra_summary=_shift(args))
     c = result.check
     perceived = f" (perceived {c.rms_perceived:.4g})" if c.rms_perceived is not None else ""
     if model.config.aligned:
         perceived += f", RMS(M - M_d) = {c.rms_modulus:.4g}"
     solver = f"solver {result.solution.status}" + ("" if result.converged else " (NOT CONVERGED)")
     ends = FINAL_WORDS.get(problem.final, "")  # an on-line run ends free: on a short path the end weighs
+    compiling = guard.compile_seconds() - compiling  # printed apart from the solve
     print(f"{path.name} on {model.config.name}: RMS = {c.rms:.4g}{perceived}, worst limit use "
-          f"{c.worst_use:.4f}, {solver}, {result.timings['wall']:.2f} s{ends}{sizing.describe(unreachable)}; "
-          f"written to {out}")
+          f"{c.worst_use:.4f}, {solver}, {result.timings['wall'] - compiling:.2f} s{compile_words(compiling)}"
+          f"{ends}{sizing.describe(unreachable)}; written to {out}")
     print(f"  felt: {result.quality.headline()}")
     return 0 if result.converged else EXIT_NOT_CONVERGED
 
@@ -133,8 +164,7 @@ def run_batch(args) -> int:
     for name in args.profiles:
         if name not in profiles.PROFILES and not os.path.isfile(name):
             profiles.load(name)  # raises with the list of built-in profiles, or file not found
-    if args.starts < 1 or args.processes < 1:
-        raise UserError("--starts and --processes must be at least 1")
+    _check_starts(args, "processes", args.processes)
     params = load_params(args.params, base=args.base)
     options = OptimizeOptions(starts=args.starts, seed=args.seed)
     jobs = [batch.Job(p, c, view=args.view) for p in args.profiles for c in args.configs]
@@ -184,12 +214,11 @@ def run_online(args) -> int:
                               **_felt_choices(args), **timing)
     path, options = resolved.path, resolved.options
     estimate = sizing.check_time_online(path, model.config, options.mpc, args.max_time)
-    steps = None if args.quiet else progress_lines.Steps(path, model.config, estimate, PROGRESS_EVERY)
-    with guard.counting(steps, PROGRESS_EVERY):
-        result = online.run(path, model, options)
+    with OnlineProgress(path.duration, estimate=estimate) as progress, guard.reporting(None, tell=progress.say):
+        result = online.run(path, model, options, progress=progress.cycle)
     unreachable = sizing.unreachable(path, model)
     report.write_online(result, out, report.command_line(), args.overwrite, unreachable=unreachable,
-                        protect=_inputs(args), view=args.view)
+                        protect=_inputs(args), view=args.view, extra_summary=_shift(args))
     c, times, sources = result.check, result.loop.compute_times, result.loop.sources
     base = result.baseline_check
     classical = "" if base is None else f" (classical loop {base.rms:.4g})"
@@ -370,50 +399,6 @@ def run_compare(args) -> int:
     return 0
 
 
-def describe(model: Model) -> str:
-    """A human-readable summary of a model and its values at one sample state."""
-    p, c = model.params, model.config
-    lines = [f"Desdemona model: parameters '{p.name}', configuration '{c.name}'",
-             f"  {c.description}",
-             f"  gravity {p.gravity:g} m/s^2, head offset {list(p.head_offset)} m (cabin coordinates)",
-             "", "Joints (limits; * = free in this configuration):",
-             f"  {'':2}{'joint':<14}{'position':>18}{'velocity':>14}{'acceleration':>16}"
-             f"{'force/torque':>16}{'power':>12}"]
-    for i, j in enumerate(p.joints):
-        rev = j.kind == "revolute"
-        scale, unit = (180.0 / np.pi, "deg") if rev else (1.0, "m")
-        if j.position is None:
-            pos = "unbounded"
-        else:
-            pos = f"[{j.position[0] * scale:g}, {j.position[1] * scale:g}] {unit}"
-        held = "" if (position := c.held.get(i)) is None else f"  held at {position * scale:g} {unit}"
-        lines.append(
-            f"  {'*' if position is None else ' '} q{i + 1} {j.name:<11}{pos:>18}"
-            f"{f'{j.velocity * scale:.4g} {unit}/s':>14}{f'{j.acceleration * scale:.4g} {unit}/s2':>16}"
-            f"{f'{j.effort / 1e3:.4g} ' + ('kN*m' if rev else 'kN'):>16}{f'{j.power / 1e3:.4g} kW':>12}{held}")
-    lines += ["", "Bodies:"]
-    for b in p.bodies:
-        lines.append(f"  {b.name:<15} {b.mass:8g} kg  com {list(b.com)} m  "
-                     f"inertia diag {[round(b.inertia[k][k], 6) for k in range(3)]} kg*m^2")
-    # A sample state: every free joint moving at a third of its velocity and acceleration limits.
-    lim = model.limits
-    q = np.where(np.isfinite(lim.position_max), 0.5 * lim.position_max, 0.3)
-    qd, qdd = lim.velocity / 3.0, lim.acceleration / 3.0
-    S = model.S(q, qd, qdd)
-    tau = model.tau(q, qd, qdd)
-    power = model.power(q, qd, qdd)
-    eig = np.linalg.eigvalsh(model.mass_matrix(q))
-    fmt = lambda v: "[" + ", ".join(f"{x:.4g}" for x in v) + "]"  # noqa: E731
-    lines += ["", "Sample state (free joints at 1/3 of their rate and acceleration limits):",
-              f"  q    = {fmt(q)}", f"  qd   = {fmt(qd)}", f"  qdd  = {fmt(qdd)}",
-              f"  omega_cabin = {fmt(S[:3])} rad/s",
-              f"  f_cabin     = {fmt(S[3:])} m/s^2   |f| = {np.linalg.norm(S[3:]):.4g} m/s^2",
-              f"  tau         = {fmt(tau)}   (use {fmt(np.abs(tau) / lim.effort)} of the limits)",
-              f"  power       = {fmt(power)} W (use {fmt(np.abs(power) / lim.power)} of the limits)",
-              f"  inertia eigenvalues = {fmt(eig)}"]
-    return "\n".join(lines)
-
-
 def run_serve(args) -> int:
     from desdemona.results import report
     from desdemona.service import protocol, serve
@@ -428,23 +413,27 @@ def run_serve(args) -> int:
                                      quiet_end=args.quiet_end)
     except ValueError as exc:
         raise UserError(str(exc)) from None
+    try:  # bound before the controller is built (seconds): a port in use is said at once
+        inbound = args.held.enter_context(serve.listening(listen))
+    except OSError as exc:
+        raise UserError(f"--listen {args.listen}: {exc.strerror or exc}") from None
     reference = None if args.reference is None else profiles.load(args.reference)
     resolved = session.live(model, session.Choices.of(args), channels=channels, rate=args.rate, span=args.duration,
                             horizon=args.horizon, reach=args.reach, predictor=args.predictor, reference=reference,
                             tail_step=args.tail_step)
     options = resolved.options
 
-    def ready():
-        print(f"desdemona: serving {model.config.name} at {1.0 / options.mpc.step:g} Hz: motion from {args.listen}, "
-              f"setpoints to {args.send}; Ctrl-C parks the machine and ends the session", file=sys.stderr, flush=True)
+    def ready(early):
+        before = (f"; {early} host datagram{'s' if early != 1 else ''} came before it was ready (dropped: start "
+                  "the host after this line)" if early else "")
+        print(f"desdemona: serving {model.config.name} at {1.0 / options.mpc.step:g} Hz, ready: motion from "
+              f"{args.listen}, setpoints to {args.send}; Ctrl-C parks the machine and ends the session{before}",
+              file=sys.stderr, flush=True)
 
     def dropping(reason):
         print(f"desdemona: dropping datagrams: {reason}", file=sys.stderr, flush=True)
 
-    try:
-        served = serve.serve(model, options, serving, ready=ready, on_drop=dropping)
-    except OSError as exc:
-        raise UserError(f"--listen {args.listen}: {exc.strerror or exc}") from None
+    served = serve.serve(model, options, serving, ready=ready, on_drop=dropping, inbound=inbound)
     if not np.any(served.columns["status"] == "running"):
         dropped = sum(served.dropped.values())
         print(f"desdemona: the session never followed the host: no valid motion came to {args.listen} "

@@ -87,13 +87,17 @@ def build_parser() -> argparse.ArgumentParser:
         description="Run every PROFILE on every configuration of --configs, each into its own result folder "
                     "OUT/<profile>--<configuration>, and print a table of all jobs (also OUT/batch.csv). "
                     "Jobs run on local processes, or on a Dask distributed cluster given its scheduler.")
-    batch.add_argument("profiles", nargs="+", metavar="PROFILE_OR_CSV")
+    batch.add_argument("profiles", nargs="+", metavar="PROFILE_OR_CSV",
+                       help="built-in profiles (see 'desdemona profiles') or CSV files of desired paths, "
+                            "as optimize takes them; each runs on every configuration of --configs")
     batch.add_argument("--configs", nargs="+", required=True, metavar="NAME",
                        help=f"configurations, from: {', '.join(CONFIGURATIONS)}")
     batch.add_argument("--out", required=True, metavar="DIR", help="folder for all the jobs' results")
     batch.add_argument("--params", metavar="FILE", help="TOML file overriding machine parameters")
     batch.add_argument("--base", choices=BUILTIN_SETS, default=None, help="built-in parameter set")
-    _add_start_options(batch, starts=2)
+    _add_start_options(batch, starts=2, why=": half of optimize's 4, as a batch's processes go to its jobs and "
+                                             "each job's starts run one after the other; --starts 4 searches as "
+                                             "optimize does, in twice the time")
     _add_session_options(batch, given=False)
     batch.add_argument("--processes", type=int, default=2, metavar="N",
                        help="local processes when no --dask is given (default: 2)")
@@ -114,11 +118,11 @@ def build_parser() -> argparse.ArgumentParser:
                     "failed or late plan falls back to the previous plan, then to braking. The whole "
                     "run is checked against every limit and written as a result folder with per-cycle "
                     "timings (cycles.csv) and figures.")
-    online.add_argument("profile", metavar="PROFILE_OR_CSV")
+    online.add_argument("profile", metavar="PROFILE_OR_CSV",
+                        help="a built-in profile (see 'desdemona profiles') or a CSV file of the desired path, "
+                             "as optimize takes it")
     _add_machine_options(online, default_config="dfs")
     _add_time_option(online)
-    online.add_argument("--quiet", action="store_true",
-                        help="no progress on stderr (default: the estimate, and a line every 10 s of a long run)")
     online.add_argument("--out", required=True, metavar="DIR")
     online.add_argument("--horizon", type=float, default=None, metavar="SECONDS",
                         help="T_h (default: 2 on dfs and dfs-yaw; 4 with the track, whose position is planned "
@@ -214,7 +218,8 @@ def build_parser() -> argparse.ArgumentParser:
     plot = sub.add_parser("plot", help="re-draw the figures of a result folder",
                           description="Re-draw the PNG figures and view.html of a result folder from its "
                                       "trajectory.csv and summary.json.")
-    plot.add_argument("folder", metavar="DIR")
+    plot.add_argument("folder", metavar="DIR", help="a result folder (of optimize, online, serve or a batch's "
+                                                  "job); its figures are drawn again in it")
     plot.set_defaults(run=commands.run_plot)
 
     show = sub.add_parser(
@@ -394,9 +399,9 @@ def _add_overwrite_option(parser: argparse.ArgumentParser) -> None:
                              "folder, a file, or the current folder)")
 
 
-def _add_start_options(parser: argparse.ArgumentParser, starts: int) -> None:
+def _add_start_options(parser: argparse.ArgumentParser, starts: int, why: str = "") -> None:
     parser.add_argument("--starts", type=int, default=starts, metavar="N",
-                        help=f"initial guesses (default: {starts})")
+                        help=f"initial guesses, at most 100 (default: {starts}{why})")
     parser.add_argument("--seed", type=int, default=0, help="seed of the random starts (default: 0)")
     parser.add_argument("--h-u", type=float, default=0.05, metavar="SECONDS", dest="h_u",
                         help="control step: joint accelerations are held this long (default: 0.05)")
@@ -453,6 +458,10 @@ def _add_cost_options(parser: argparse.ArgumentParser) -> None:
                         help="the jerk's weight in the cost, against its limit: higher makes the joints "
                              "reverse their accelerations less, at some cost in the cue (default: 5 "
                              "off-line and 3 on-line on dfs, 1 elsewhere)")
+    parser.add_argument("--head-movement-weight", type=float, default=None, metavar="W", dest="head_movement_weight",
+                        help="the weight of the cabin's angular velocity in space, all three axes, as it is "
+                             "(a felt error of 1 m/s^2 per rad/s): a head moved in a turning cabin is "
+                             "cross-coupled, felt as a tumble (see docs/guide/occupant.md); 0: none (default)")
 
 
 def _add_view_option(parser) -> None:
@@ -536,14 +545,17 @@ def _add_host_parser(sub) -> None:
     kinds = host.add_subparsers(title="hosts", required=True, metavar="HOST")
     replay = kinds.add_parser("replay", help="send a path (built-in or CSV) in real time",
                               description="Send every sample of a path at its time (divided by --speed).")
-    replay.add_argument("profile", metavar="PROFILE_OR_CSV")
+    replay.add_argument("profile", metavar="PROFILE_OR_CSV",
+                        help="the path to send: a built-in profile (see 'desdemona profiles') or a CSV file "
+                             "(t,wx,wy,wz,fx,fy,fz or t,M; see --modulus)")
     _add_host_options(replay)
     replay.set_defaults(run=commands.run_host_replay)
     flight = kinds.add_parser("jsbsim", help="fly a JSBSim script in real time and send its pilot's motion",
                               description="Fly a JSBSim script (by name, or an XML file) in real time and send "
                                           "the pilot's motion at --rate, converted as 'import jsbsim' does "
                                           "(needs pip install 'desdemona[jsbsim]').")
-    flight.add_argument("script", metavar="SCRIPT")
+    flight.add_argument("script", metavar="SCRIPT",
+                        help="a script shipped with JSBSim (see 'desdemona import jsbsim --list') or a script file")
     flight.add_argument("--rate", type=float, default=100.0, metavar="HZ", help="messages a second (default: 100)")
     flight.add_argument("--start", type=float, default=None, metavar="SECONDS",
                         help="the flight's time of the first message (default: after its trim or settling)")

@@ -132,6 +132,7 @@ class MPCOptions:
     null_weight: float | None = None
     wall: float = 0.0
     spin_weight: float = 0.0
+    head_movement_weight: float = 0.0  # as ProblemOptions'
 
     def __post_init__(self):
         if self.method not in ("auto", "rti", "nlp"):

@@ -132,14 +132,14 @@ class OnlineResult:
         return trajectory_dataframe(self.trajectory, self.model.config)
 
 
-def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions()) -> OnlineResult:
+def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(), progress=None) -> OnlineResult:
     """Run the MPC in closed loop over a whole desired path and check the result (thesis chapter 7).
 
     The controller sees the path only through the predictor; each command is held for one step and
     integrated exactly. The machine starts as ``options`` say (by default at rest, where the first
     plan wants it, :meth:`MPC.place`; see :class:`OnlineOptions`), and the classical loop (``dfs``)
     or washout (the others) runs beside it from the same state as the baseline. Raises :class:`LimitViolation` if the run breaks a limit on the independent check's fine
-    grid.
+    grid. progress : optional ``progress(now)`` told as each cycle begins, ``now`` [s] on the path.
     """
     path = model.config.cue_path(path)
     reference = None if options.reference is None else model.config.cue_path(options.reference)
@@ -148,7 +148,15 @@ def run(path: DesiredPath, model: Model, options: OnlineOptions = OnlineOptions(
     controller = MPC(model, options.mpc, weights=path.weights)
 
     def fresh():  # a fresh predictor: hold and route keep state from call to call
-        return predictor(options.predictor, reference, forecast)
+        made = predictor(options.predictor, reference, forecast)
+        if progress is None:
+            return made
+
+        def told(seen, now, horizon):  # each cycle asks for its preview once
+            progress(now)
+            return made(seen, now, horizon)
+
+        return told
 
     if options.initial == "rest":  # a fresh predictor's first preview: no state is kept
         q0, qd0 = controller.place((q0, qd0), fresh()(path, 0.0, options.mpc.horizon))

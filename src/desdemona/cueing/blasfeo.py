@@ -44,6 +44,7 @@ from pathlib import Path
 import casadi as ca
 
 from desdemona.cueing import compiled
+from desdemona.support import guard
 
 VERSION = "0.1.4.2"
 SOURCES = Path(__file__).parents[1] / "data" / "blasfeo"
@@ -111,10 +112,8 @@ def _load(wait: bool) -> str:
         folder = _folder()
         folder.parent.mkdir(parents=True, exist_ok=True)
         marker = folder.with_name(folder.name + ".building")
-        source = os.pathsep.join([str(Path(__file__).parents[2]), os.environ.get("PYTHONPATH", "")])
         script = "import sys; from desdemona.cueing import blasfeo; blasfeo._background(sys.argv[1])"
-        compiled.start_once(marker, [sys.executable, "-c", script, str(marker)],
-                            env={**os.environ, "PYTHONPATH": source})  # this desdemona, wherever it was imported from
+        compiled.start_once(marker, [sys.executable, "-c", script, str(marker)], env=compiled.package_environment())
         return f"{generic} (BLASFEO for this processor is being built in the background, for later runs)"
     try:
         folder = build()
@@ -151,9 +150,8 @@ def build() -> Path:
     if built():
         return folder
     folder.parent.mkdir(parents=True, exist_ok=True)
-    print(f"desdemona: building BLASFEO {VERSION} for this processor, once, into {folder.parent} (about 15 s "
-          "on two cores)", file=sys.stderr, flush=True)
-    with tempfile.TemporaryDirectory(dir=folder.parent, prefix=".hpipm-") as work:
+    with guard.lasting(f"building BLASFEO {VERSION} for this processor", f", once, into {folder.parent} (about "
+                       "15 s on two cores)"), tempfile.TemporaryDirectory(dir=folder.parent, prefix=".hpipm-") as work:
         objects = _compile(cc, manifest, Path(work))
         lib = Path(work) / "lib"
         lib.mkdir()

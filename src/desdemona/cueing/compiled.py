@@ -50,14 +50,13 @@ from pathlib import Path
 
 import casadi as ca
 
+from desdemona.support import guard
+
 FLAGS = ("-O0", "-fPIC", "-shared")
 #: What :func:`build` does where an optimised library is not in the cache yet: "later" compiles it in
 #: the background for later runs and runs on the quick one (:data:`FLAGS`) now; "now" waits for it (the
 #: benchmarks' steady state); "never" keeps the quick one (the tests: their cache goes with them).
 OPTIMISED = "later"
-#: Told one line before compiling into the cache (the optimised library, where a run waits for it, takes
-#: a minute or more on ``full``); the command line prints it.
-notice = None
 # Where compiling takes longer than this, something is wrong with the toolchain: keep the virtual machine.
 TIMEOUT = 300.0
 
@@ -148,17 +147,18 @@ def build(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS, later: b
     if later and tuple(flags) != FLAGS and OPTIMISED != "now":
         quick = library(functions, FLAGS)[1]
         if not quick.exists():
-            if notice is not None:
-                notice("compiling the stage functions for this machine and these options (seconds); "
-                       "optimised ones in the background for later runs")
-            if not _compiled_into(cc, quick, files, list(FLAGS)):
-                return None
+            with guard.lasting("compiling the stage functions for this machine and these options",
+                               " (seconds; optimised ones in the background, for later runs)"):
+                if not _compiled_into(cc, quick, files, list(FLAGS)):
+                    return None
         if OPTIMISED == "later":
             in_background(path, files, list(flags))
         return quick
-    if notice is not None and "-O0" not in flags:
-        notice(f"compiling the stage functions for this machine and these options, once, into {path.parent}")
-    return path if _compiled_into(cc, path, files, list(flags)) else None
+    # told where it takes long (optimised: fatrop's stage functions on ``full`` take a minute or more
+    # at -O1); every compile is timed, for the command to print apart from the solve
+    with guard.lasting("compiling the stage functions for this machine and these options",
+                       f", once, into {path.parent}", told="-O0" not in flags):
+        return path if _compiled_into(cc, path, files, list(flags)) else None
 
 
 def in_background(target: Path, files: dict[str, str], flags: list[str]) -> None:
@@ -171,9 +171,17 @@ def in_background(target: Path, files: dict[str, str], flags: list[str]) -> None
         pending = Path(tempfile.mkdtemp(dir=target.parent, prefix=".pending-"))
         for name, source in files.items():
             (pending / name).write_text(source)
-        return [sys.executable, __file__, str(compiler()), str(target), str(pending), *flags]
+        script = "import sys; from desdemona.cueing import compiled; compiled._background(*sys.argv[1:])"
+        return [sys.executable, "-c", script, str(compiler()), str(target), str(pending), *flags]
 
-    start_once(target.with_name(target.name + ".building"), command)
+    start_once(target.with_name(target.name + ".building"), command, env=package_environment())
+
+
+def package_environment() -> dict:
+    """This process' environment, with the folder this desdemona is imported from first on the path: a
+    process started from it imports the same code, wherever it came from."""
+    source = os.pathsep.join([str(Path(__file__).parents[2]), os.environ.get("PYTHONPATH", "")])
+    return {**os.environ, "PYTHONPATH": source}
 
 
 def start_once(marker: Path, command, env: dict | None = None) -> None:
@@ -216,6 +224,11 @@ def linked(source: str, stages: Path, name: str, kept: Path | None = None) -> ca
     is removed once the library is loaded, or, given ``kept``, into that file of the cache (a stored
     solver's, :func:`store_solver`). None, with a warning, where compiling fails."""
     flags = [*FLAGS, str(stages), f"-Wl,-rpath,{stages.parent}"]
+    with guard.lasting("compiling the NLP's assembly of the stages", told=False):
+        return _linked(source, flags, name, kept)
+
+
+def _linked(source: str, flags: list[str], name: str, kept: Path | None) -> ca.Function | None:
     if kept is not None:
         return ca.external(name, str(kept)) if _compiled_into(compiler(), kept, {"assembly.c": source}, flags) else None
     with tempfile.TemporaryDirectory(prefix="desdemona-") as work:
@@ -401,5 +414,3 @@ def _background(cc: str, target: str, pending: str, *flags: str) -> None:
         target_path.with_name(target_path.name + ".building").unlink(missing_ok=True)
 
 
-if __name__ == "__main__":  # in_background's process, started as this file: nothing of desdemona imported
-    _background(*sys.argv[1:])

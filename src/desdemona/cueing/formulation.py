@@ -183,6 +183,7 @@ class ProblemOptions:
     rotation_ceiling: float | None = None
     null_weight: float | None = None
     spin_weight: float = 0.0
+    head_movement_weight: float = 0.0  # on the cabin's angular velocity in space, where a head may move (occupant.coriolis)
 
     def __post_init__(self):
         if not (math.isfinite(self.h_u) and self.h_u > 0):
@@ -204,9 +205,9 @@ class ProblemOptions:
                              f"than one and needs a uniform grid")
         if self.initial == "given" and self.initial_state is None:
             raise ValueError("initial = 'given' needs initial_state = (q0, qd0)")
-        for name in ("wall", "spin_weight", "unweighted", "null_weight", "rotation_band", "rotation_ceiling"):
+        for name in ("wall", "spin_weight", "head_movement_weight", "unweighted", "null_weight", "rotation_band", "rotation_ceiling"):
             value = getattr(self, name)  # the last four: None for none
-            if (value is not None or name in ("wall", "spin_weight")) and not (math.isfinite(value) and value >= 0):
+            if (value is not None or name in ("wall", "spin_weight", "head_movement_weight")) and not (math.isfinite(value) and value >= 0):
                 raise ValueError(f"{name} = {value!r}: must be a number >= 0")
             if name.startswith("rotation") and value is not None and self.perception is None:
                 raise ValueError(f"{name} = {value!r}: needs a perception model (it is on the felt rotation)")
@@ -406,7 +407,7 @@ class Formulation:
         data = ca.SX.sym("d", self.n_head + nd)  # see with_steps
         h_u, d = data[0], data[self.n_head:]
         q_next, qd_next = advance(q, qd, a, h_u, jerk)
-        positions, values, efforts, powers = [], [], [], []
+        positions, values, efforts, powers, motions = [], [], [], [], []
         for j, fraction in enumerate(self.fractions):
             tj = fraction * h_u
             qj, qdj = advance(q, qd, a, tj, jerk)
@@ -416,10 +417,12 @@ class Formulation:
             efforts.append(effort)
             powers.append(power)
             positions.append(qj)
+            motions.append((qj, qdj, aj))
         residuals, z_next = self._residuals(values, a, jerk, x[self.n_motion:], data, positions)
         null = gimbal_null_rate(q, qd, self.model.config.gimbals)
         if null is not None and self.null_weight > 0:
             residuals.append(ca.sqrt(self.null_weight * h_u * data[2]) * null)
+        residuals += [ca.sqrt(self.options.head_movement_weight * h_u * data[2] / points) * self.model.functions["S"](*m)[:3] for m in motions if self.options.head_movement_weight]
         r = ca.vertcat(*residuals)
         residual = ca.Function("stage_residual", [x, u, data], [r], ["x", "u", "d"], ["r"])
         a_next = a + jerk * h_u if self.smooth else None

@@ -39,6 +39,13 @@ SPIN_SHARE = 0.5
 SPIN_FLOOR = 0.3
 
 
+#: The most starts a run takes. Each start is a whole solve (about a second for the quick start warm,
+#: minutes for a long path on ``full``) and every guess is made before the first solve, so a run of a
+#: million starts never ends; a wider search is better split into runs with other seeds, each of
+#: which is checked and written.
+MAX_STARTS = 100
+
+
 @dataclass(frozen=True)
 class OptimizeOptions:
     """Options of :func:`optimize`.

@@ -62,6 +62,11 @@ class Configuration:
     modulus_cost: bool
     description: str
     aligned: bool = False
+    #: The classical washout's tuned settings on this configuration, by the names of
+    #: :class:`desdemona.baselines.washout.Washout`'s fields (empty: its untuned defaults). Found by
+    #: ``benchmarks/tune_classical.py`` (docs/benchmarks/classical-washout-tuned.md): the baseline an
+    #: on-line result is judged against is part of the configuration's data.
+    washout: tuple[tuple[str, float | bool], ...] = ()
 
     def __post_init__(self):
         if list(self.free) != sorted(set(self.free)) or not set(self.free) <= set(range(6)) or not self.free:
@@ -238,14 +243,20 @@ CONFIGURATIONS: dict[str, Configuration] = {
         Configuration("yaw-track", (0, 1), (0.0,) * 6, False,
                       "yaw and linear track (appendix B, chapters 4-5)"),
         Configuration("yaw-track-cabin", (0, 1, 4), (0.0,) * 6, False,
-                      "yaw, track and cabin yaw q5 (section 5.6)"),
+                      "yaw, track and cabin yaw q5 (section 5.6)",
+                      washout=(("omega_hp", 0.188), ("omega_centre", 0.188), ("omega_lp", 0.375), ("tilt_rate", 0.279),
+                               ("omega_rot", 0.333), ("gain", 0.931), ("arm", True), ("radius", 2.25),
+                               ("omega_arm", 0.399), ("arm_accel", 0.05), ("arm_min", 4.0))),
         # the track held at its outer end: every horizontal force comes from the arm (f = R qd1^2,
         # R qdd1, eq. 7.7), and at the largest radius a force takes the slowest yaw rate, so the least
         # rotation the occupant feels and did not ask for; the cabin's yaw q5 turns it where wanted
         Configuration("yaw-heave-cabin", (0, 2, 4), (0.0, -4.0, 0.0, 0.0, 0.0, 0.0), False,
                       "yaw, heave and cabin yaw q5, track held at -4 m: the arm's force turned by the cabin"),
         Configuration("full", (0, 1, 2, 3, 4, 5), (0.0,) * 6, False,
-                      "all six joints"),
+                      "all six joints",
+                      washout=(("omega_hp", 0.188), ("omega_centre", 0.375), ("omega_lp", 0.665), ("tilt_rate", 0.279),
+                               ("omega_rot", 0.188), ("gain", 0.665), ("tilt_limit", 0.455), ("arm", True),
+                               ("radius", 3.75), ("omega_arm", 0.798), ("arm_accel", 0.133), ("arm_min", 12.0))),
     )
 }
 

@@ -101,15 +101,17 @@ def read_csv(path: str | Path) -> DesiredPath:
                            f"(previous {t[k]:g} s)")
     _check_time_unit(path, t)
     name = path.stem
+    # a file whose time starts later is read from its first time as t = 0, and says so where it is described
+    described = f"read from {path.name}" + (f", its time from {t[0]:g} s as t = 0" if t[0] != 0 else "")
     if layout == MODULUS_COLUMNS:
         negative = data[:, 1] < 0
         if np.any(negative):
             k = int(np.argmax(negative))
             raise ProfileError(f"{path}: line {lines[k + 1][0]}: M = {data[k, 1]:g} m/s^2 is negative; the "
                                f"modulus |f| is >= 0")
-        read = DesiredPath(name, t - t[0], None, modulus=data[:, 1], description=f"read from {path.name}")
+        read = DesiredPath(name, t - t[0], None, modulus=data[:, 1], description=described)
     else:
-        read = DesiredPath(name, t - t[0], data[:, 1:], weights=weights, description=f"read from {path.name}")
+        read = DesiredPath(name, t - t[0], data[:, 1:], weights=weights, description=described)
     check_units(read, lambda k: f"{path}" if k is None else f"{path}: line {lines[k + 1][0]}")
     return read
 

@@ -22,7 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona.profiles import clock, convert, csvfile
+from desdemona.profiles import clock, convert, csvfile, turns
 from desdemona.profiles.clock import TIME_UNITS
 from desdemona.profiles.path import DesiredPath, G, ProfileError
 from desdemona.support import files
@@ -236,10 +236,13 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
     bias = gyro_bias(file, fmt, t, X, rate, logged, origin, dated) if zero_rates else None
     if bias is not None:
         X[:, :3] -= bias.omega_cabin
+    # read before the lever arm, whose force such rates would swamp; said after the convention check,
+    # whose words on a log that is nowhere still come first
+    unit = fmt.rates is not None and turns.rate_unit_problem(t, X[:, :3], X[:, 3:], fmt.rate_unit)
     r_cabin = R @ np.asarray(fmt.lever_arm, dtype=float)
     if np.any(r_cabin != 0):
         X[:, 3:] = head_force(X[:, :3], X[:, 3:], r_cabin, native)
-    t, X = convert.resample(t, X, rate)
+    t, X = convert.resample(t, X, rate, antialias="gaussian")
     scale = 1.0
     if check:
         still, later = _convention_checked(file, fmt, t, X, logged, origin, level, dated)
@@ -251,6 +254,8 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
             tilt = math.degrees(math.acos(min(1.0, float(turn[2, 2]))))
             X = np.column_stack([X[:, :3] @ turn.T, X[:, 3:] @ turn.T])
             notes = notes + _level_note(still, later, turn, tilt, origin, dated)
+    if unit:
+        raise ProfileError(f"{file}: {unit}")
     lo, t, X = _cropped(file, t, X, start, end, origin, dated)
     convert.check_no_crash(origin + lo + t, X[:, 3:], str(file))
     a, b = origin + lo, origin + lo + float(t[-1])
@@ -263,7 +268,7 @@ def from_log(file: str | Path, fmt: LogFormat = LogFormat(), start: float | None
         rates = ", ".join(f"{math.degrees(x):.3g}" for x in bias.omega_cabin)
         changes.append(f"rates less their bias ({rates}) deg/s in the cabin's x,y,z before any --level, read still "
                        f"from {clock.text(origin + bias.t0, dated)} (--zero-rates)")
-    comments = _source_lines(file, fmt, span, f"{convert.filter_note(native, rate)}; convention check "
+    comments = _source_lines(file, fmt, span, f"{convert.filter_note(native, rate, 'gaussian')}; convention check "
                              f"{'passed' if check else 'skipped (--no-check)'}", changes, modulus, dated)
     gap = longest_gap(logged, lo, lo + float(t[-1]))
     slow = native < 1.0 / csvfile.MS_MEDIAN_STEP  # a clock from 1970 in its unit (_check_time_unit)
@@ -420,7 +425,7 @@ def gyro_bias(file: Path, fmt: LogFormat, t, X, rate: float, logged, origin: flo
     (:func:`.convert.find_still`, ``biased``): a resting MEMS gyro reads a few deg/s, which would be
     cued as a turn. Refused where the log is nowhere still, or its rates are not steady there, saying
     what the rates read (:func:`_rates_hint`)."""
-    tr, Xr = convert.resample(t, X, rate)  # noise filtered as the check will see it
+    tr, Xr = convert.resample(t, X, rate, antialias="gaussian")  # noise filtered as the check will see it
     still = convert.find_still(tr, Xr[:, :3], Xr[:, 3:], usable=measured(tr, logged), biased=True)
     if still is None:
         raise ProfileError(f"{file}: --zero-rates: the log is nowhere still for {convert.STILL_SECONDS:g} s (a "

@@ -92,7 +92,7 @@ def _cell(value, width: int = 28) -> str:
         return "-"
     if isinstance(value, str):
         return value if len(value) <= width else value[:width - 3] + "..."
-    return f"{value:.4g}"
+    return f"{metrics.shown(value):.4g}"
 
 
 def table(entries) -> str:

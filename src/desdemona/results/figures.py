@@ -11,6 +11,10 @@
 - :func:`draw_felt`: what the occupant feels beyond the path: the felt-direction error [deg]
   and the felt rotation per canal channel [deg/s] over time, with their thresholds
   (:mod:`desdemona.check.metrics` defines both), one column per trajectory.
+- :func:`draw_suffered`: what the occupant suffers beyond the cue: the Coriolis cross-coupling of a
+  standard head nod started at each instant (:mod:`desdemona.occupant.coriolis`) and the sickness dose
+  building up over the session (:mod:`desdemona.occupant.sickness`), one column per trajectory
+  (``suffered.png``; ``online_suffered.png`` with the classical loop beside the MPC).
 - :func:`draw_comparison`: overlays of several result folders (``desdemona compare``).
 - :func:`plot_bode`: Bode diagrams of a vestibular model (thesis figures 6.4, 6.6).
 
@@ -118,7 +122,45 @@ def draw_result(traj, summary: dict, out_dir: str | Path) -> list[Path]:
                                     bands=THRESHOLDS), out / "perceived.png", title))
     paths.append(draw_felt([traj], [None], out / "felt.png",
                            _vestibular((summary.get("quality") or {}).get("vestibular_model")), title))
+    paths.append(draw_suffered([traj], [None], out / "suffered.png", title))
     return paths
+
+
+def draw_suffered(trajectories, labels, path: str | Path, title: str | None = None) -> Path:
+    """What the occupant suffers beyond the cue, one column per trajectory, to a PNG; returns its path.
+
+    Top: the peak cross-coupled angular velocity [deg/s] of a pitch, roll and yaw nod of the head
+    (30 deg in 0.5 s) started at each instant, with the lowest canal threshold. Middle: the vertical
+    force through ISO 2631-1's W_f [m/s^2]. Bottom: the sickness incidence [%] building up: ISO's
+    K_m MSDV_z of the session so far, and Bos & Bles' subjective vertical conflict model.
+    trajectories : :class:`desdemona.check.simulate.Trajectory` (sharing the axes' scales); labels : a
+    title per column (None: none)."""
+    from desdemona.occupant import coriolis, sickness
+
+    fig = _figure(figsize=(5.5 * len(trajectories) + 1.5, 8))
+    axes = fig.subplots(3, len(trajectories), sharex=True, sharey="row", squeeze=False)
+    threshold = math.degrees(float(np.min(THRESHOLDS[:3])))
+    for (top, middle, bottom), traj, label in zip(axes.T, trajectories, labels):
+        for k, nod in enumerate(coriolis.NODS):
+            peak = coriolis.per_start(traj.t, traj.S[:, :3], nod)[0]
+            top.plot(traj.t, np.degrees(peak), f"C{k}", lw=1.1, label=f"{nod.name} nod")
+        top.axhline(threshold, color="r", lw=0.8, ls=":", label=f"lowest canal threshold {threshold:.2g} deg/s")
+        if label:
+            top.set_title(label)
+        a_w = sickness.weighted_vertical(traj.t, traj.S[:, 5])
+        middle.plot(traj.t, a_w, "C0", lw=1.0, label="f_z through W_f")
+        bottom.plot(traj.t, sickness.K_M * sickness.msdv_so_far(traj.t, a_w), "C0", lw=1.2,
+                    label="ISO 2631-1: K_m MSDV_z so far")
+        bottom.plot(traj.t, sickness.conflict_incidence(traj.t, traj.S[:, 5]), "C3", lw=1.2,
+                    label="Bos & Bles: vertical conflict")
+        bottom.set_xlabel("t [s]")
+        for ax in (top, middle, bottom):
+            ax.grid(alpha=0.3)
+            ax.legend(fontsize=8, loc="upper left")
+    axes[0, 0].set_ylabel("cross-coupled angular\nvelocity of a nod [deg/s]")
+    axes[1, 0].set_ylabel("weighted vertical\nforce a_w [m/s^2]")
+    axes[2, 0].set_ylabel("sickness incidence [%]")
+    return _save(fig, Path(path), title)
 
 
 def _joints_figure(traj, summary: dict):
@@ -137,7 +179,7 @@ def _joints_figure(traj, summary: dict):
             q, qd, label = traj.q[:, joints.index(name)], traj.qd[:, joints.index(name)], name
         else:
             q, qd = np.full(len(traj.t), held[k]), np.zeros(len(traj.t))
-            label = f"{name} (held)"
+            label = f"{name}\n(held)"  # on one line "outer_gimbal (held) [deg]" ran past its axes
         axes[k, 0].plot(traj.t, q * scale)
         axes[k, 0].set_ylabel(f"{label} [{unit}]")
         if limits[name]["position"] is not None:
@@ -255,6 +297,7 @@ def draw_online_run(traj, classical, effort, power, compute_times, deadline: flo
     runs = [traj] if classical is None else [traj, classical]
     paths.append(draw_felt(runs, ["MPC", "classical loop"][:len(runs)], out / "online_felt.png",
                            _vestibular(vestibular), title))
+    paths.append(draw_suffered(runs, ["MPC", "classical loop"][:len(runs)], out / "online_suffered.png", title))
     fig = _figure(figsize=(8, 4))
     ax = fig.subplots()
     ax.hist(np.asarray(compute_times) * 1e3, bins=50)

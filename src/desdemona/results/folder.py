@@ -39,6 +39,8 @@ def check_replaceable(out_dir: str | Path, protect=()) -> None:
     cwd = Path.cwd().resolve()
     if real == cwd or real in cwd.parents:
         raise ReportError(refuse + "is the current folder or one of its parents")
+    if empty_folder(out):
+        return  # nothing in it to lose: a new result goes there as into a new folder (batch, compare too)
     for path in protect:
         if path is not None and real in Path(path).resolve().parents:
             raise ReportError(refuse + f"is the folder of the input {path}")
@@ -47,6 +49,13 @@ def check_replaceable(out_dir: str | Path, protect=()) -> None:
     others = foreign_names(out)
     if others:
         raise ReportError(refuse + f"one holds other files too ({', '.join(others[:3])}); move them first")
+
+
+def empty_folder(path: str | Path) -> bool:
+    """Whether ``path`` is a folder (not a link to one) with nothing in it: a result may go there as
+    into a folder that does not exist yet, with or without --overwrite."""
+    path = Path(path)
+    return path.is_dir() and not path.is_symlink() and not any(path.iterdir())
 
 
 def check_out_folder(out_dir: str | Path, overwrite: bool, ours, what: str) -> None:
@@ -134,10 +143,17 @@ def read_summary(out_dir: str | Path) -> dict:
     """The summary.json of a result folder, with every key that reading it back needs
     (:data:`SUMMARY_KEYS`); :class:`ReportError` naming what is missing."""
     out = Path(out_dir)
+    if not out.is_dir():
+        raise ReportError(f"{out}: {'is not a folder' if out.exists() else 'no such folder'}; give a result "
+                          "folder of desdemona (one that optimize, online or serve wrote)")
     try:
         summary = json.loads((out / "summary.json").read_text())
-    except (OSError, ValueError) as exc:
-        raise ReportError(f"{out}: not a readable result folder: {exc}") from None
+    except FileNotFoundError:
+        raise ReportError(f"{out}: not a result folder of desdemona: it has no summary.json") from None
+    except OSError as exc:
+        raise ReportError(f"{out}: its summary.json cannot be read: {exc.strerror or exc}") from None
+    except ValueError as exc:
+        raise ReportError(f"{out}: its summary.json is not JSON ({exc})") from None
     missing = next((".".join(keys) for keys in SUMMARY_KEYS if not _has(summary, keys)), None)
     if missing is not None:
         raise ReportError(f"{out}: not a complete result folder: its summary.json has no {missing!r}")

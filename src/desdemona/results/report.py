@@ -34,8 +34,8 @@ from desdemona.profiles import CHANNELS
 from desdemona.results import figures
 # The folder rules and readers, here too for the callers that write and read (report.load, ...).
 from desdemona.results.folder import (RESULT_FILES, RESULT_FORMAT, ReportError, check_out_folder,  # noqa: F401
-                                      check_replaceable, foreign_names, is_result_folder, load, read_summary,
-                                      read_table, refuse_batch_folder, trajectory_of)
+                                      check_replaceable, empty_folder, foreign_names, is_result_folder, load,
+                                      read_summary, read_table, refuse_batch_folder, trajectory_of)
 from desdemona.support import guard
 
 UNITS = "units: SI (s, rad, m, rad/s, m/s, rad/s^2, m/s^2, N*m, N, W)"
@@ -129,11 +129,11 @@ def run_description(path, config) -> dict:
 
 
 def write(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False,
-          unreachable: dict | None = None, protect=(), view: bool = True) -> Path:
+          unreachable: dict | None = None, protect=(), view: bool = True, extra_summary: dict | None = None) -> Path:
     """Write the result folder of an off-line :class:`~desdemona.cueing.offline.Result` atomically.
 
     unreachable : :func:`desdemona.cueing.sizing.unreachable` of the result's path (computed when not given).
-    protect, view : see :func:`write_folder`.
+    protect, view : see :func:`write_folder`; extra_summary : more entries of summary.json.
     """
     if unreachable is None:
         from desdemona.cueing import sizing
@@ -165,6 +165,7 @@ def write(result, out_dir: str | Path, command: str | None = None, overwrite: bo
         "options": _plain(result.options),
         "parameters": result.model.params.to_dict(),
         "versions": versions(),
+        **(extra_summary or {}),
     }
     return write_folder(result.trajectory, summary, result.model.config, out_dir, overwrite,
                         protect=protect, view=view)
@@ -182,7 +183,7 @@ def write_folder(traj: Trajectory, summary: dict, config, out_dir: str | Path, o
     import scipy.io
 
     out = Path(out_dir)
-    if out.exists() and not overwrite:
+    if out.exists() and not overwrite and not empty_folder(out):
         raise ReportError(f"{out}: already exists (it appeared while this run worked, or was not checked); "
                           f"left as it is, nothing written: choose another folder, or --overwrite for an "
                           f"earlier result of desdemona")
@@ -228,6 +229,15 @@ def _move_into_place(tmp: Path, out: Path, overwrite: bool, protect) -> None:
     while the run worked (os.rename would replace an empty folder, and moving one aside would lose it).
     An earlier result is moved aside, checked once more, and only its result files are deleted."""
     if not out.exists() and not out.is_symlink():
+        os.rename(tmp, out)
+        return
+    if empty_folder(out):  # given empty, or appeared so: nothing in it is lost (check_replaceable)
+        check_replaceable(out, protect)  # not the current folder, nor one of its parents
+        try:
+            os.rmdir(out)
+        except OSError as exc:  # a mount point, or something came into it just now
+            raise ReportError(f"{out}: cannot be replaced by the result ({exc.strerror or exc}); nothing written: "
+                              "choose another folder") from None
         os.rename(tmp, out)
         return
     if not overwrite or not is_result_folder(out):

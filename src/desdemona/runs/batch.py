@@ -12,11 +12,13 @@ from __future__ import annotations
 import csv
 import multiprocessing
 import os
+import socket
 import time
 from dataclasses import dataclass
 from pathlib import Path
 
 from desdemona import profiles
+from desdemona.check import metrics
 from desdemona.check.simulate import LimitViolation
 from desdemona.cueing import sizing
 from desdemona.cueing.offline import OptimizeOptions
@@ -25,6 +27,10 @@ from desdemona.machine.params import MachineParams
 from desdemona.results import report
 from desdemona.runs import session, solve
 from desdemona.support import files, guard
+
+
+#: [s] how long a Dask scheduler has to accept the connection (distributed's default is 30 s).
+CONNECT_TIMEOUT = 3.0
 
 
 @dataclass(frozen=True)
@@ -154,6 +160,8 @@ def run_batch(jobs: list[Job], params: MachineParams, choices: session.Choices, 
     cluster's jobs); the jobs done by then keep their folders, and ``batch.csv`` lists them with the
     others as "interrupted" (the :class:`~desdemona.support.guard.Interrupted` raised says so).
     """
+    if dask_address is not None:
+        reach_scheduler(dask_address)
     validate(jobs, params, choices, options, out_dir, overwrite, max_time)
     out = Path(out_dir)
     created = not out.exists()
@@ -198,6 +206,27 @@ def _write_table(out: Path, results: list[JobResult]) -> None:
             os.replace(tmp, out / "batch.csv")
 
 
+def reach_scheduler(address: str, timeout: float = CONNECT_TIMEOUT) -> None:
+    """Refuse, with :class:`session.ChoiceError`, a ``tcp://host:port`` Dask scheduler address where nothing
+    accepts a connection within ``timeout`` [s]; before Dask is imported (seconds) or anything is
+    validated, so that a wrong address is one line at once, not a half-minute wait and a traceback.
+    Other schemes (tls://, inproc://) are left to Dask's own connect, also bounded by ``timeout``."""
+    scheme, _, rest = address.rpartition("://")
+    if scheme not in ("", "tcp"):
+        return
+    host, _, port = rest.rpartition(":")
+    try:
+        with socket.create_connection((host.strip("[]") or "127.0.0.1", int(port)), timeout=timeout):
+            pass
+    except ValueError:
+        raise session.ChoiceError(f"--dask {address}: give the scheduler as tcp://HOST:PORT, e.g. "
+                                  "tcp://127.0.0.1:8786") from None
+    except OSError as exc:
+        raise session.ChoiceError(f"--dask {address}: no Dask scheduler there "
+                                  f"({exc.strerror or exc or 'no answer'}); start one with 'dask scheduler' "
+                                  "or drop --dask to run on this computer's processes") from None
+
+
 def map_jobs(function, args: list[tuple], processes: int = 2, dask_address: str | None = None, progress=None,
              results: list | None = None) -> list:
     """``function(*a)`` for every tuple ``a`` of ``args``, on ``processes`` local processes (spawned) or
@@ -218,7 +247,11 @@ def map_jobs(function, args: list[tuple], processes: int = 2, dask_address: str 
     if dask_address is not None:
         from distributed import Client, as_completed
 
-        with Client(dask_address) as client:
+        try:
+            client = Client(dask_address, timeout=CONNECT_TIMEOUT)
+        except OSError as exc:  # distributed's own wait for the scheduler, bounded
+            raise session.ChoiceError(f"--dask {dask_address}: no Dask scheduler answered ({exc})") from None
+        with client:
             futures = [client.submit(function, *a, pure=False) for a in args]
             index = {f.key: i for i, f in enumerate(futures)}
             try:
@@ -243,11 +276,6 @@ def _indexed_call(item):
     return index, function(*args)
 
 
-def _negligible(value: float | None, below: float = 1e-3) -> float | None:
-    """0 for a value that is round-off (a false rotation of 1e-20 deg/s on a path without rotation)."""
-    return 0.0 if value is not None and abs(value) < below else value
-
-
 def table(results: list[JobResult]) -> str:
     """The batch's printed table: per job its status, RMS, worst limit use, what is felt (peak false
     rotation [deg/s], worst felt force error RMS [m/s^2], most acceleration reversals per second) and
@@ -261,7 +289,7 @@ def table(results: list[JobResult]) -> str:
     for r in results:
         felt = r.felt or {}
         lines.append(f"{r.profile:<18}{r.config:<18}{r.status:<20}{cell(r.rms, '.4g'):>10}"
-                     f"{cell(r.worst_use, '.4f'):>11}{cell(_negligible(felt.get('peak_false_rotation_deg_s')), '.3g'):>11}"
+                     f"{cell(r.worst_use, '.4f'):>11}{cell(metrics.shown(felt.get('peak_false_rotation_deg_s')), '.3g'):>11}"
                      f"{cell(felt.get('felt_force_rms_max'), '.3g'):>9}"
                      f"{cell(felt.get('reversals_per_s_max'), '.3g'):>9}{cell(r.windows, 'd'):>9}{r.seconds:>10.2f}")
         if r.message:

@@ -81,6 +81,8 @@ class Choices:
         whole path at once; None: windows above :data:`~desdemona.cueing.windows.WHOLE_UP_TO` seconds.
     wall : the cost's wall before the position limits (:attr:`ProblemOptions.wall`, off-line and
         on-line), None: :data:`~desdemona.cueing.formulation.WALL`.
+    head_movement_weight : the weight of the cabin's angular velocity in space in the cost
+        (:attr:`ProblemOptions.head_movement_weight`, off-line and on-line), None: 0.
     """
 
     weights: str | tuple | None = None
@@ -92,6 +94,7 @@ class Choices:
     jerk_weight: float | None = None
     window: float | None = None
     wall: float | None = None
+    head_movement_weight: float | None = None
 
     @classmethod
     def of(cls, namespace) -> Choices:
@@ -128,12 +131,13 @@ def cued(path: DesiredPath, model: Model, choices: Choices) -> DesiredPath:
 
 def cost(path: DesiredPath, model: Model, choices: Choices) -> dict:
     """The fields of the cost that the choices set, for :class:`ProblemOptions` and :class:`MPCOptions`
-    alike: the diagonal of Q for the cued ``path``."""
+    alike: the diagonal of Q for the cued ``path``, the jerk's weight and the head movement's."""
     spec = choices.weights if choices.weights is not None else model.config.default_weights
-    jerk = choices.jerk_weight
-    if jerk is not None and not (math.isfinite(jerk) and jerk >= 0):
-        raise ChoiceError(f"--jerk-weight {jerk:g}: must be a number >= 0")
-    return {"weights": tuple(profiles.weights_for(spec, path)), "jerk_weight": jerk}
+    jerk, head = choices.jerk_weight, choices.head_movement_weight or 0.0
+    for option, value in (("jerk-weight", jerk), ("head-movement-weight", head)):
+        if value is not None and not (math.isfinite(value) and value >= 0):
+            raise ChoiceError(f"--{option} {value:g}: must be a number >= 0")
+    return {"weights": tuple(profiles.weights_for(spec, path)), "jerk_weight": jerk, "head_movement_weight": head}
 
 
 def start(model: Model, choices: Choices, allowed: tuple[str, ...]) -> tuple[str, tuple | None]:
@@ -216,11 +220,15 @@ def thesis(path: DesiredPath, model: Model, choices: Choices = Choices()) -> Ses
 
     if choices.window:
         raise ChoiceError("--method thesis solves the whole path at once: drop --window")
-    if choices.wall is not None:
-        raise ChoiceError("--method thesis reproduces the thesis' cost, which has no wall: drop --wall")
+    for option, value in (("wall", choices.wall), ("head-movement-weight", choices.head_movement_weight)):
+        if value is not None:
+            raise ChoiceError(f"--method thesis reproduces the thesis' cost, which has no such term: drop --{option}")
     if (choices.initial, choices.initial_state, choices.final, choices.weights) != (None, None, "centre", None):
         raise ChoiceError("--method thesis reproduces the thesis: its weights are the path's and its start "
                          "free; drop --initial, --initial-state, --final and --weights")
+    if path.S_d is None:
+        raise ChoiceError(f"--method thesis fits the six channels of a full path (thesis 5.2); {path.name} gives "
+                          "only the modulus: drop --method thesis (ours follows a modulus on dfs)")
     _check_h_u(choices.h_u, path)
     cued(path, model, choices)  # the channels checked; the thesis' method cues the path itself
     path = path.with_gain(choices.gain)

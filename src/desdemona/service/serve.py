@@ -234,13 +234,43 @@ class _Preview:
         return self.predict(self.model.config.cue_path(_host_path(t, values)), float(t[-1]), self.horizon)
 
 
+def listening(address: tuple[str, int]) -> socket.socket:
+    """A UDP socket bound to ``address``, for the host's datagrams; OSError where the port is taken."""
+    sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    try:
+        sock.bind(address)
+    except OSError:
+        sock.close()
+        raise
+    return sock
+
+
+def _discard_queued(sock: socket.socket) -> int:
+    """Read and drop what waits in ``sock``: the datagrams that came before the session began, stale by
+    then (the controller takes seconds to build); how many."""
+    sock.setblocking(False)
+    count = 0
+    while True:
+        try:
+            sock.recv(65536)
+        except (BlockingIOError, InterruptedError):
+            return count
+        except OSError:
+            pass
+        count += 1
+
+
 def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=time.monotonic, ready=None,
-          on_drop=None) -> Served:
+          on_drop=None, inbound: socket.socket | None = None) -> Served:
     """Run a session (see the module's docstring) until ``serving.duration``, ``serving.quiet_end`` or
     a stop signal; returns what it did. The controller's options are ``options.mpc`` (a plan every
     step: the session's step is the cycle); its predictor ``options.predictor``
-    (one that may run live, :data:`desdemona.control.predictors.PREDICTORS`). ``ready()``, if given, is called once the service listens;
-    ``on_drop(reason)`` the first time a datagram is dropped for a reason."""
+    (one that may run live, :data:`desdemona.control.predictors.PREDICTORS`). ``ready(early)``, if given,
+    is called once the service listens, with the number of host datagrams that came before (counted as
+    dropped); ``on_drop(reason)`` the first time a datagram is dropped for a reason. ``inbound``: the
+    host's socket (:func:`listening`), bound before the controller is built, so that a port in use is
+    said at once and what a host sends meanwhile is counted, not lost unseen; None: bound here to
+    ``serving.listen``."""
     mpc = options.mpc
     predictors.check(options.predictor, True, options.reference is not None, options.forecast is not None)
     if mpc.replan_steps != 1:
@@ -253,14 +283,15 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
     preview = _Preview(options.predictor, model, mpc.horizon, options.reference, serving.history)
     guard_use = model.step_limit_use(h)
     stops: list[int] = []
-    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as inbound, \
+    with inbound or listening(serving.listen) as inbound, \
             socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as outbound, \
             guard.handled_here(stops.append):
-        inbound.bind(serving.listen)
-        inbound.setblocking(False)
+        early = _discard_queued(inbound)
         if ready is not None:
-            ready()
+            ready(early)
         inbox = _Inbox(inbound, channels, clock, serving.timeout * h, on_drop)
+        if early:
+            inbox.dropped["came before the service was ready"] = early
         session = _Session(model, controller, h, guard_use)
         start = clock()
         k = 0

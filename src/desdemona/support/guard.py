@@ -30,9 +30,12 @@ Signals and signal handlers are process-wide, so is the state here: it is set on
 ``with interruptible():`` and is inert for a library user who never enters it.
 
 The same monitor reports on a long solve: every ``every`` seconds it calls the reporter given to
-:func:`reporting` with the iteration count and the current cost. A long loop (the on-line closed loop)
-says how far it is with :func:`progressed`, which calls the reporter given to :func:`counting` as
-often; :func:`estimated_end` turns either into the time of day the work will end.
+:func:`reporting` with the iteration count and the current cost. A step of compiled code that says
+nothing while it runs (compiling generated C into the cache: a minute on a fresh cache) is wrapped in
+:func:`lasting`: it is told as it begins and ends with its time, it is the :func:`step` a command's
+own clock names while it runs, and its time adds to :func:`compile_seconds`, which a command prints
+apart from the solve's. :func:`estimated_end` turns a run's estimate and its pace into the time of
+day it will end.
 """
 
 from __future__ import annotations
@@ -79,12 +82,13 @@ class _State:
         self.speak = False  # say why the process ends (the command's own process, not a worker)
         self.reporter = None  # reporter(iteration, cost, seconds) for long solves
         self.every = 10.0
-        self.counter = None  # counter(done, total) for long loops (counting)
-        self.counted = 0.0  # when it was last called [time.perf_counter()]
         self.on_hard_exit = []  # callables run before the process ends with os._exit (release a lock)
         self.deferring = 0  # depth of blocks that must not be cut in two (deferred)
         self.acted = False  # the handler has run since the signal: the main thread knows of it
         self.held = False  # a signal arrived inside a deferred block: it is acted on as the block ends
+        self.tell = None  # tell(text): a line for the user about a long step (lasting)
+        self.step = None  # what the lasting step now running does, else None
+        self.compiling = 0.0  # [s] spent in lasting steps in this process
 
 
 _state = _State()
@@ -273,36 +277,51 @@ def finish(pool) -> None:
 
 
 @contextlib.contextmanager
-def reporting(reporter, every: float = 10.0):
-    """Within this block a long solve calls ``reporter(iteration, cost, seconds)`` every ``every`` s."""
-    saved = _state.reporter, _state.every
-    _state.reporter, _state.every = reporter, every
+def reporting(reporter, every: float = 10.0, tell=None):
+    """Within this block a long solve calls ``reporter(iteration, cost, seconds)`` every ``every`` s,
+    and a :func:`lasting` step ``tell(text)`` as it begins and ends."""
+    saved = _state.reporter, _state.every, _state.tell
+    _state.reporter, _state.every, _state.tell = reporter, every, tell
     try:
         yield
     finally:
-        _state.reporter, _state.every = saved
+        _state.reporter, _state.every, _state.tell = saved
 
 
 @contextlib.contextmanager
-def counting(counter, every: float = 10.0):
-    """Within this block a long loop calls ``counter(done, total)`` every ``every`` s (:func:`progressed`)."""
-    saved = _state.counter, _state.every, _state.counted
-    _state.counter, _state.every, _state.counted = counter, every, time.perf_counter()
+def lasting(what: str, where: str = "", told: bool = True):
+    """Around a step of compiled code that says nothing while it runs: compiling generated C into the
+    cache. ``what`` ("compiling the stage functions") and ``where`` (", once, into FOLDER") are told as
+    it begins where ``told`` (a step known to be long; a short one is only timed), ``what`` is the
+    :func:`step` while it runs and is told with its time as it ends; its time adds to
+    :func:`compile_seconds`."""
+    tell = _state.tell if told else None
+    if tell is not None:
+        tell(f"{what}{where}")
+    begin = time.perf_counter()
+    saved, _state.step = _state.step, (what, begin)
     try:
         yield
     finally:
-        _state.counter, _state.every, _state.counted = saved
+        seconds = time.perf_counter() - begin
+        _state.step = saved
+        _state.compiling += seconds
+        if tell is not None:
+            tell(f"{what}: {seconds:.1f} s")
 
 
-def progressed(done: int, total: int) -> None:
-    """``done`` of a loop's ``total`` units of work are done: told to :func:`counting`'s counter where
-    its period has passed since it was last told (a clock read otherwise, nothing without one)."""
-    if _state.counter is None:
-        return
-    now = time.perf_counter()
-    if now - _state.counted >= _state.every:
-        _state.counted = now
-        _state.counter(done, total)
+def step() -> str | None:
+    """What the :func:`lasting` step now running does and for how long it has, None outside one (read
+    by a command's clock)."""
+    if _state.step is None:
+        return None
+    what, begin = _state.step
+    return f"{what} ({time.perf_counter() - begin:.0f} s so far)"
+
+
+def compile_seconds() -> float:
+    """[s] spent in :func:`lasting` steps (compiling) in this process so far."""
+    return _state.compiling
 
 
 def estimated_end(begin: float, done: float, total: float, estimate: float | None = None) -> str:
