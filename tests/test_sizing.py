@@ -102,6 +102,8 @@ def test_an_offline_run_too_long_is_refused_with_the_h_u_that_fits(tmp_path, cap
     path, full = profiles.load("catapult"), get_configuration("full")
     assert sizing.estimate_time(path, full, h_u, "fatrop", 4, 2) <= sizing.time_limit(path) == 160.0
     assert sizing.check_time(path, full, 0.05, "fatrop", 4, 2) < 60.0  # the default runs
+    line, _ = _refused(capsys, ["optimize", "catapult", "--config", "full", "--max-time", "-3", "--out", str(out)])
+    assert line.endswith("--max-time -3: must be a positive number of seconds") and not out.exists()
 
 
 def test_the_estimate_grows_with_the_work():

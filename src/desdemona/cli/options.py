@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import argparse
 import difflib
-import math
 
 from desdemona._version import __version__
 from desdemona.cli import bridges, commands
@@ -375,19 +374,8 @@ def _add_machine_options(parser: argparse.ArgumentParser, default_config: str = 
                         help="built-in parameter set to start from (default: default)")
 
 
-def _positive_seconds(text: str) -> float:
-    """A positive, finite number of seconds (argparse reports anything else as a usage error)."""
-    try:
-        seconds = float(text)
-    except ValueError:
-        seconds = math.nan
-    if not (seconds > 0 and math.isfinite(seconds)):
-        raise argparse.ArgumentTypeError(f"{text!r}: must be a positive number of seconds")
-    return seconds
-
-
 def _add_time_option(parser: argparse.ArgumentParser, what: str = "the run") -> None:
-    parser.add_argument("--max-time", type=_positive_seconds, default=None, metavar="SECONDS",
+    parser.add_argument("--max-time", type=float, default=None, metavar="SECONDS",
                         help=f"how long {what} may take, as estimated before it starts from figures measured "
                              "per interval and cycle; one estimated to take longer is refused with the step "
                              "that fits (default: 20 times the path's duration, at least 60 s)")

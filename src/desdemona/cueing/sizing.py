@@ -287,7 +287,10 @@ class TooLong(ValueError):
 
 def time_limit(path: DesiredPath, max_time: float | None = None) -> float:
     """The seconds a run of ``path`` may take: ``max_time`` where given, else :data:`TIME_FACTOR` times
-    its duration, at least :data:`MIN_TIME_LIMIT`."""
+    its duration, at least :data:`MIN_TIME_LIMIT`. Raises :class:`TooLong` for a ``max_time`` that is
+    not a positive number of seconds."""
+    if max_time is not None and not (max_time > 0 and math.isfinite(max_time)):
+        raise TooLong(f"--max-time {max_time:g}: must be a positive number of seconds")
     return max_time if max_time is not None else max(TIME_FACTOR * path.duration, MIN_TIME_LIMIT)
 
 
