@@ -6,7 +6,7 @@ import os
 import pytest
 
 from desdemona import default_params, thesis_toy_params
-from desdemona.cueing import blasfeo
+from desdemona.cueing import blasfeo, compiled
 
 
 @pytest.fixture(scope="session")
@@ -26,7 +26,8 @@ def compiled_cache(tmp_path_factory):
 
     Under pytest-xdist the workers of one run share that folder (each library is compiled once and
     renamed into place whole, so a worker reads another's), and one of them builds BLASFEO while the
-    others wait for it."""
+    others wait for it. Nothing is compiled in the background for later runs (the folder goes with
+    the run), so a test that asks for an optimised library gets the quick one."""
     base = tmp_path_factory.getbasetemp()
     if os.environ.get("PYTEST_XDIST_WORKER"):
         base = base.parent  # the run's folder, above each worker's own
@@ -34,11 +35,13 @@ def compiled_cache(tmp_path_factory):
     cache.mkdir(exist_ok=True)
     before = os.environ.get("DESDEMONA_CACHE")
     os.environ["DESDEMONA_CACHE"] = str(cache)
+    optimised, compiled.OPTIMISED = compiled.OPTIMISED, "never"
     if blasfeo.unavailable() is None:
         with open(base / "compiled.lock", "w") as lock:
             fcntl.flock(lock, fcntl.LOCK_EX)
             blasfeo.build()
     yield
+    compiled.OPTIMISED = optimised
     if before is None:
         os.environ.pop("DESDEMONA_CACHE", None)
     else:

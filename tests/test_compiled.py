@@ -4,6 +4,8 @@ off-line cost, now assembled from stages without their ends and a terminal stage
 trapezoid rule over the whole grid."""
 
 import os
+import sys
+import time
 import warnings
 
 import casadi as ca
@@ -237,3 +239,57 @@ def test_the_real_time_iterations_qp_data_compiled_gives_the_same_numbers():
     w, p = rng.normal(size=problem.nlp["x"].numel()), rng.normal(size=problem.nlp["p"].numel())
     for a, b in zip(machine(w, p), flat(w, p)):
         np.testing.assert_allclose(np.asarray(ca.densify(a)), np.asarray(ca.densify(b)), rtol=1e-12, atol=1e-12)
+
+
+def _tiny() -> list[ca.Function]:
+    x = ca.SX.sym("x", 3)
+    return [ca.Function("tiny", [x], [ca.sin(x[0]) * x[1] + x[2] ** 3])]
+
+
+def _settled(cache, seconds=120.0) -> bool:
+    """Whether the cache's background builds ended within ``seconds`` (polled, bounded)."""
+    for _ in range(int(seconds / 0.2)):
+        if not list(cache.glob("*.building")):
+            return True
+        time.sleep(0.2)
+    return False
+
+
+@needs_compiler
+def test_an_optimised_library_is_compiled_in_the_background_for_later_runs(cache, monkeypatch):
+    """A first run waits only for the quick library (-O0); the optimised one appears in the cache
+    from a process of its own, a later run takes it, and both compute the same."""
+    monkeypatch.setattr(compiled, "OPTIMISED", "later")
+    optimised = ("-O1", "-fPIC", "-shared")
+    functions = _tiny()
+    first = compiled.build(functions, optimised)
+    assert first == compiled.library(functions, compiled.FLAGS)[1]  # the quick one, now
+    assert _settled(cache)
+    later = compiled.build(functions, optimised)
+    assert later == compiled.library(functions, optimised)[1] and later.exists() and later != first
+    assert sorted(p.name for p in cache.iterdir()) == sorted([first.name, later.name])  # nothing else left
+    x = [0.3, -1.2, 0.7]
+    a, b = (float(ca.external("tiny", str(path))(x)) for path in (first, later))
+    assert a == pytest.approx(b, rel=1e-15) and a == pytest.approx(float(functions[0](x)), rel=1e-15)
+    # told to wait (the benchmarks): the optimised library at once, nothing in the background
+    monkeypatch.setattr(compiled, "OPTIMISED", "now")
+    y = ca.SX.sym("y", 3)
+    other = [ca.Function("tiny", [y], [2.0 * y[0]])]
+    assert compiled.build(other, optimised) == compiled.library(other, optimised)[1]
+    assert not list(cache.glob("*.building"))
+
+
+def test_a_background_process_is_started_once(tmp_path):
+    """Of two runs that ask for the same background work at once, one starts it; once it has ended
+    (its marker gone), the next ask starts it again."""
+    marker = tmp_path / "work.building"
+    command = [sys.executable, "-c", "import sys, time, pathlib; time.sleep(1.0); pathlib.Path(sys.argv[1]).unlink()",
+               str(marker)]
+    compiled.start_once(marker, command)
+    pid = marker.read_text()
+    compiled.start_once(marker, command)
+    assert marker.read_text() == pid  # the first still runs: not started again
+    assert _settled(tmp_path, 30.0)
+    compiled.start_once(marker, command)
+    assert marker.read_text() not in ("", pid)
+    assert _settled(tmp_path, 30.0)

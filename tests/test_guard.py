@@ -139,6 +139,7 @@ def test_progress_lines_when_stderr_is_not_a_terminal(tmp_path, monkeypatch, cap
     assert "50 control intervals" in err
     assert "start 1/2 done" in err and "start 2/2 done" in err and "best cost so far" in err
     assert "solving: iteration 1," in err
+    assert "ends about" in err.splitlines()[0] and "start 1/2 done" in err and ", ends about " in err
     assert _optimize(tmp_path / "b", "--quiet") == 0
     assert capsys.readouterr().err == ""
 
@@ -185,7 +186,7 @@ def _guarded(tmp_path, body: str) -> subprocess.Popen:
     """A process that runs ``body`` inside guard.interruptible() and exits as the command line does."""
     script = tmp_path / "guarded.py"
     script.write_text(
-        "import sys\nimport numpy as np\nfrom desdemona import guard\n"
+        "import sys\nimport numpy as np\nfrom desdemona.support import guard\n"
         "a = np.random.default_rng(0).random((2500, 2500))\n"
         "print('ready', flush=True)\n"
         "try:\n    with guard.interruptible():\n" + "".join(f"        {line}\n" for line in body.splitlines())
@@ -223,3 +224,29 @@ def test_the_watchdog_waits_for_a_block_that_holds_signals_back(tmp_path):
     out, _ = proc.communicate(timeout=60)
     assert proc.returncode == 130
     assert out.split() == ["block", "done"]
+
+
+def test_the_end_is_estimated_from_the_pace_or_the_estimate():
+    """10 s for half of the work: 10 s more; nothing done yet after 10 s of an estimated 100: 90 more."""
+
+    def seconds_ahead(end: str) -> float:
+        now = time.localtime()
+        hours, minutes, seconds = map(int, end.split(":"))
+        return ((hours - now.tm_hour) * 3600 + (minutes - now.tm_min) * 60 + seconds - now.tm_sec) % 86400
+
+    assert 8 <= seconds_ahead(guard.estimated_end(time.perf_counter() - 10.0, 1, 2)) <= 12
+    assert 88 <= seconds_ahead(guard.estimated_end(time.perf_counter() - 10.0, 0, 2, estimate=100.0)) <= 92
+
+
+def test_an_online_run_tells_its_estimate_and_end(capsys):
+    """An on-line run estimated longer than the clock's period says so as it starts, with its end; as
+    it runs, what it does names the end at its pace."""
+    from desdemona.cli.progress import OnlineProgress
+
+    with OnlineProgress(12.0, tty=False, estimate=600.0) as progress:
+        progress.cycle(3.0)
+        assert progress.doing.startswith("on-line: 3.0 of 12.0 s of the path, ends about ")
+    assert "desdemona: on-line: about 10 min (ends about " in capsys.readouterr().err
+    with OnlineProgress(12.0, tty=False, estimate=5.0):
+        pass
+    assert capsys.readouterr().err == ""  # a short run: no line

@@ -1,9 +1,12 @@
-"""Problem size before building it, and targets no trajectory can give (sizing)."""
+"""Problem size and run time before building it, and targets no trajectory can give (sizing)."""
+
+import time
 
 import numpy as np
 import pytest
 
 from desdemona import Model, profiles
+from desdemona.control.mpc import MPCOptions
 from desdemona.cueing import sizing
 from desdemona.cueing.formulation import ProblemOptions
 from desdemona.cueing.transcription import CueingProblem
@@ -61,3 +64,53 @@ def test_a_rest_logged_at_standard_gravity_is_not_below_g(params):
         assert sizing.unreachable(profiles.DesiredPath("x", t, None, modulus=noisy), model)["below_g"] is None
         dip = np.where((t > 4.0) & (t < 6.0), params.gravity - 0.4, noisy)
         assert sizing.unreachable(profiles.DesiredPath("x", t, None, modulus=dip), model)["below_g"] is not None
+
+
+def _refused(capsys, argv) -> tuple[str, float]:
+    """The exit-2 line of a command refused before any work, and the processor time it took."""
+    from desdemona.cli import main
+
+    start = time.process_time()
+    assert main(argv) == 2
+    seconds = time.process_time() - start
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("desdemona: error: "), lines
+    return lines[0], seconds
+
+
+def test_an_online_run_too_long_is_refused_with_the_step_that_fits(tmp_path, capsys):
+    """20 times its duration by default: 240,000 cycles of dfs-catapult are refused at once (the
+    memory allows them), naming a --step whose estimate fits, and --max-time that would allow it."""
+    out = tmp_path / "run"
+    line, seconds = _refused(capsys, ["online", "dfs-catapult", "--config", "dfs", "--step", "5e-5",
+                                      "--out", str(out)])
+    assert "240,000 closed-loop steps" in line and seconds < 2.0 and not out.exists()
+    step = float(line.split("Use --step ")[1].split()[0])
+    allowed = float(line.split("--max-time ")[1].split()[0])
+    path, dfs = profiles.load("dfs-catapult"), get_configuration("dfs")
+    mpc = MPCOptions(step=5e-5)
+    assert sizing.estimate_time_online(path, dfs, MPCOptions(step=step)) <= sizing.time_limit(path)
+    assert sizing.check_time_online(path, dfs, mpc, max_time=allowed) <= allowed
+    assert sizing.check_time_online(path, dfs, MPCOptions()) <= sizing.time_limit(path)  # the default runs
+
+
+def test_an_offline_run_too_long_is_refused_with_the_h_u_that_fits(tmp_path, capsys):
+    out = tmp_path / "run"
+    line, seconds = _refused(capsys, ["optimize", "catapult", "--config", "full", "--h-u", "0.001", "--out", str(out)])
+    assert "8,000 control intervals" in line and seconds < 2.0 and not out.exists()
+    h_u = float(line.split("Use --h-u ")[1].split()[0])
+    path, full = profiles.load("catapult"), get_configuration("full")
+    assert sizing.estimate_time(path, full, h_u, "fatrop", 4, 2) <= sizing.time_limit(path) == 160.0
+    assert sizing.check_time(path, full, 0.05, "fatrop", 4, 2) < 60.0  # the default runs
+    line, _ = _refused(capsys, ["optimize", "catapult", "--config", "full", "--max-time", "-3", "--out", str(out)])
+    assert line.endswith("--max-time -3: must be a positive number of seconds") and not out.exists()
+
+
+def test_the_estimate_grows_with_the_work():
+    """Twice the intervals, twice the starts on one worker, a solver twice as dear per interval: more."""
+    path, full = profiles.load("catapult"), get_configuration("full")
+    base = sizing.estimate_time(path, full, 0.01, "fatrop") - sizing.BASE_SECONDS
+    assert sizing.estimate_time(path, full, 0.005, "fatrop") - sizing.BASE_SECONDS > 2 * base
+    assert sizing.estimate_time(path, full, 0.01, "fatrop", starts=2) - sizing.BASE_SECONDS > 1.5 * base
+    assert sizing.estimate_time(path, full, 0.01, "fatrop", starts=2, workers=2) == base + sizing.BASE_SECONDS
+    assert sizing.estimate_time(path, full, 0.01, "fatrop", window=2.0) < base + sizing.BASE_SECONDS

@@ -73,7 +73,7 @@ def main(argv: list[str] | None = None) -> int:
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # nor a traceback at exit's flush
         return 0
     except (UserError, ParameterError, profiles.ProfileError, session.ChoiceError, ReportError,
-            sizing.TooLarge) as exc:
+            sizing.TooLarge, sizing.TooLong) as exc:
         print(f"desdemona: error: {exc}", file=sys.stderr)
         return EXIT_USAGE
     except LimitViolation as exc:

@@ -122,8 +122,10 @@ def run_optimize(args) -> int:
     resolved = solve.resolve(path, model, session.Choices.of(args), args.method, perception, args.workers,
                              args.starts)
     path, problem, size = resolved.path, resolved.options, resolved.size
+    estimate = None if thesis else sizing.check_time(
+        path, model.config, problem.h_u, problem.solver, args.starts, resolved.workers, resolved.window, args.max_time)
     unreachable = sizing.unreachable(path, model)
-    progress = None if args.quiet else OfflineProgress(args.starts, size, path, model.config)
+    progress = None if args.quiet else OfflineProgress(args.starts, size, path, model.config, estimate=estimate)
     compiling = guard.compile_seconds()
     with contextlib.nullcontext() if progress is None else progress, \
             guard.reporting(None if progress is None else progress.solving, PROGRESS_EVERY,
@@ -172,7 +174,8 @@ def run_batch(args) -> int:
               f"{job.config}: {job.status}", file=sys.stderr, flush=True)
 
     results = batch.run_batch(jobs, params, session.Choices.of(args), options, out, args.processes, args.dask,
-                              progress=None if args.quiet else progress, overwrite=args.overwrite)
+                              progress=None if args.quiet else progress, overwrite=args.overwrite,
+                              max_time=args.max_time)
     print(batch.table(results))
     if any(r.status not in ("ok", "not converged") for r in results):
         return EXIT_UNSAFE
@@ -209,7 +212,8 @@ def run_online(args) -> int:
                               step=args.step, predictor=args.predictor, reference=reference, forecast=forecast,
                               **_felt_choices(args), **timing)
     path, options = resolved.path, resolved.options
-    with OnlineProgress(path.duration) as progress, guard.reporting(None, tell=progress.say):
+    estimate = sizing.check_time_online(path, model.config, options.mpc, args.max_time)
+    with OnlineProgress(path.duration, estimate=estimate) as progress, guard.reporting(None, tell=progress.say):
         result = online.run(path, model, options, progress=progress.cycle)
     unreachable = sizing.unreachable(path, model)
     report.write_online(result, out, report.command_line(), args.overwrite, unreachable=unreachable,

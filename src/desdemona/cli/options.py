@@ -75,6 +75,7 @@ def build_parser() -> argparse.ArgumentParser:
                      help="parallel processes for the starts (default: one per core, at most one per start, "
                           "as many as fit in memory)")
     _add_overwrite_option(opt)
+    _add_time_option(opt)
     opt.add_argument("--quiet", action="store_true",
                      help="no progress on stderr (default: a bar on a terminal, else a line per start)")
     _add_view_option(opt)
@@ -105,6 +106,7 @@ def build_parser() -> argparse.ArgumentParser:
                        help="write into DIR if it is an earlier batch folder of desdemona (only its batch.csv "
                             "and result folders inside): its jobs' folders and batch.csv are replaced")
     batch.add_argument("--quiet", action="store_true", help="no line on stderr as each job ends")
+    _add_time_option(batch, "each job")
     _add_view_option(batch)
     batch.set_defaults(run=commands.run_batch)
 
@@ -119,6 +121,7 @@ def build_parser() -> argparse.ArgumentParser:
                         help="a built-in profile (see 'desdemona profiles') or a CSV file of the desired path, "
                              "as optimize takes it")
     _add_machine_options(online, default_config="dfs")
+    _add_time_option(online)
     online.add_argument("--out", required=True, metavar="DIR")
     online.add_argument("--horizon", type=float, default=None, metavar="SECONDS",
                         help="T_h (default: 2 on dfs and dfs-yaw; 4 with the track, whose position is planned "
@@ -369,6 +372,13 @@ def _add_machine_options(parser: argparse.ArgumentParser, default_config: str = 
                         help="TOML file overriding any subset of the machine parameters")
     parser.add_argument("--base", choices=BUILTIN_SETS, default=None,
                         help="built-in parameter set to start from (default: default)")
+
+
+def _add_time_option(parser: argparse.ArgumentParser, what: str = "the run") -> None:
+    parser.add_argument("--max-time", type=float, default=None, metavar="SECONDS",
+                        help=f"how long {what} may take, as estimated before it starts from figures measured "
+                             "per interval and cycle; one estimated to take longer is refused with the step "
+                             "that fits (default: 20 times the path's duration, at least 60 s)")
 
 
 def _add_overwrite_option(parser: argparse.ArgumentParser) -> None:

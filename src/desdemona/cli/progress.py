@@ -4,7 +4,9 @@ On a terminal: one line drawn over itself (a bar of the starts, the on-line sess
 log file, a CI job): whole lines, one as each piece of work ends, and a clock that says what the
 command is doing whenever nothing was said for :data:`EVERY` seconds: the compile of a fresh cache
 (:func:`desdemona.support.guard.lasting`), the problem being built, the starts being solved, the
-on-line session's time. The clock is a thread; it speaks while the main thread waits on a compiler
+on-line session's time. Where the run's time was estimated before it began
+(:mod:`desdemona.cueing.sizing`), its lines say when it should end, revised at its pace
+(:func:`desdemona.support.guard.estimated_end`). The clock is a thread; it speaks while the main thread waits on a compiler
 or on worker processes, or runs Python code (the on-line loop), not inside one long call of compiled
 code that holds the interpreter (CasADi setting a problem up).
 """
@@ -15,6 +17,7 @@ import sys
 import threading
 import time
 
+from desdemona.cueing import sizing
 from desdemona.support import guard
 
 EVERY = 10.0  # [s] at most between lines when stderr is not a terminal
@@ -77,12 +80,17 @@ class OfflineProgress(Progress):
     one per finished start with the elapsed time and the best cost so far, one every :data:`EVERY`
     seconds inside a long IPOPT solve (:func:`desdemona.support.guard.reporting`), and the clock."""
 
-    def __init__(self, starts: int, size, path, config, tty: bool | None = None):
+    def __init__(self, starts: int, size, path, config, tty: bool | None = None, estimate: float | None = None):
         super().__init__("building the problem", tty=tty)
-        self.starts = starts
+        self.starts, self.estimate = starts, estimate
         if not self.tty:
+            about = "" if estimate is None else f", about {sizing.duration_words(estimate)} (ends about {self.end(0, starts)})"
             self.say(f"{path.name} on {config.name}: {size.intervals:,} control intervals, {size.variables:,} "
-                     f"variables, {starts} start{'s' if starts > 1 else ''}")
+                     f"variables, {starts} start{'s' if starts > 1 else ''}{about}")
+
+    def end(self, done: int, total: int) -> str:
+        """When the run should end: at its pace once a start is done, else by its estimate."""
+        return guard.estimated_end(self.begin, done, total, self.estimate)
 
     def start_done(self, done: int, total: int, best: float) -> None:
         self.doing = f"solving: {done} of {total} starts done"
@@ -91,7 +99,8 @@ class OfflineProgress(Progress):
             print(f"\r  starts [{bar}] {done}/{total}", end="" if done < total else "\n", file=sys.stderr,
                   flush=True)
         else:
-            self.say(f"start {done}/{total} done, {self.elapsed():.1f} s, best cost so far {best:.6g}")
+            ends = "" if done == total else f", ends about {self.end(done, total)}"
+            self.say(f"start {done}/{total} done, {self.elapsed():.1f} s, best cost so far {best:.6g}{ends}")
 
     def window(self, index: int, count: int, start: float, end: float) -> None:
         self.doing = f"window {index}/{count}"
@@ -99,21 +108,26 @@ class OfflineProgress(Progress):
 
     def solving(self, iteration: int, cost: float, seconds: float) -> None:
         if not self.tty:
+            ends = "" if self.estimate is None else f", ends about {self.end(0, self.starts)}"
             self.say(f"  solving: iteration {iteration}, cost {cost:.6g}, {seconds:.0f} s in this start, "
-                     f"{self.elapsed():.1f} s in all")
+                     f"{self.elapsed():.1f} s in all{ends}")
 
 
 class OnlineProgress(Progress):
     """Progress of an on-line session in closed loop: its time against the path's, drawn over itself
     on a terminal, else a line every :data:`EVERY` seconds (the clock)."""
 
-    def __init__(self, duration: float, tty: bool | None = None):
+    def __init__(self, duration: float, tty: bool | None = None, estimate: float | None = None):
         super().__init__("building the controller and placing the machine for its first plan", tty=tty)
         self.duration = duration
+        if estimate is not None and estimate > self.every and not self.tty:
+            self.say(f"on-line: about {sizing.duration_words(estimate)} (ends about "
+                     f"{guard.estimated_end(self.begin, 0, 1, estimate)})")
 
     def cycle(self, now: float) -> None:
         """The session has reached ``now`` [s] of the path."""
-        self.doing = f"on-line: {now:.1f} of {self.duration:.1f} s of the path"
+        ends = f", ends about {guard.estimated_end(self.begin, now, self.duration)}" if now > 0 else ""
+        self.doing = f"on-line: {now:.1f} of {self.duration:.1f} s of the path{ends}"
         self.draw(f"{self.doing}, {self.elapsed():.0f} s")
 
 

@@ -22,7 +22,9 @@ MAP_MODE, MAP_THREADS = "thread", 2
 def stage_functions(prob) -> dict[str, ca.Function]:
     """One stage's functions of ``prob`` (a :class:`~desdemona.cueing.transcription.CueingProblem`): ``stage`` itself, the upper triangle of its Lagrangian's Hessian
     ``hess`` and the Jacobian ``jac`` of its gaps and path constraints, the cost and its gradient
-    ``grad``; ``hess0`` and ``jac0`` for the first stage, which also carries the initial constraint."""
+    ``grad``; ``hess0`` and ``jac0`` for the first stage where it also carries an initial constraint
+    (with perception). Without one the first stage's are the others' (:func:`first_stage`): the same
+    code compiled twice took a third of the stage library's compile on ``full``."""
     nx, nu, ni = prob.nx, prob.nu, prob.n_initial
     x, u = ca.SX.sym("x", nx), ca.SX.sym("u", nu)
     d = ca.SX.sym("d", prob.stage.size1_in(2))
@@ -36,20 +38,23 @@ def stage_functions(prob) -> dict[str, ca.Function]:
         f.expression.numel() for f in prob.families if f.name in ("position", "stopping", "rate"))
     gaps, limits = -ca.dot(l_gap, x_next), ca.dot(l_path[:curved], g[:curved])
     J = ca.jacobian(ca.vertcat(-x_next, g), xu)
-    J0 = ca.jacobian(ca.vertcat(-x_next, init, g), xu)
     functions = {"stage": prob.stage, "jac": ca.Function("stage_jac", [x, u, d], [J]),
-                 "jac0": ca.Function("stage_jac0", [x, u, d], [J0]),
                  "grad": ca.Function("stage_grad", [x, u, d], [L, ca.gradient(L, xu)])}
+    if ni:
+        functions["jac0"] = ca.Function("stage_jac0", [x, u, d], [ca.jacobian(ca.vertcat(-x_next, init, g), xu)])
     # per Hessian: (a term given as a matrix, the rest of the Lagrangian, differentiated)
     hessians = {"hess": (None, sigma * L + gaps + limits)}
     if prob.gauss_newton_first:  # the cost is sum(r^2): 2 J_r^T J_r, without the residuals' curvature
         J_r = ca.jacobian(prob.residual(x, u, d), xu)
         hessians["hess_gn"] = (2 * sigma * ca.mtimes(J_r.T, J_r), gaps + limits)
     for key, (given, rest) in hessians.items():
-        H, H0 = (ca.hessian(e, xu)[0] for e in (rest, rest + ca.dot(l_init, init)))
-        H, H0 = (ca.triu(M if given is None else given + M) for M in (H, H0))
-        functions[key] = ca.Function(f"stage_{key}", [x, u, d, sigma, l_gap, l_path], [H])
-        functions[key + "0"] = ca.Function(f"stage_{key}0", [x, u, d, sigma, l_gap, l_init, l_path], [H0])
+        H = ca.hessian(rest, xu)[0]
+        functions[key] = ca.Function(f"stage_{key}", [x, u, d, sigma, l_gap, l_path],
+                                     [ca.triu(H if given is None else given + H)])
+        if ni:
+            H0 = ca.hessian(rest + ca.dot(l_init, init), xu)[0]
+            functions[key + "0"] = ca.Function(f"stage_{key}0", [x, u, d, sigma, l_gap, l_init, l_path],
+                                               [ca.triu(H0 if given is None else given + H0)])
     if prob.terminal is not None:  # its Hessian (of the cost, and of the limits with limit_curvature)
         d = ca.SX.sym("d", prob.terminal.size1_in(1))
         L, g = prob.terminal(x, d)
@@ -61,6 +66,12 @@ def stage_functions(prob) -> dict[str, ca.Function]:
                          terminal_jac=ca.Function("terminal_jac", [x, d], [ca.jacobian(g, x)]),
                          terminal_grad=ca.Function("terminal_grad", [x, d], [L, ca.gradient(L, x)]))
     return functions
+
+
+def first_stage(stage: dict[str, ca.Function], key: str) -> ca.Function:
+    """The first stage's function ``key`` (``jac``, ``hess``, ``hess_gn``): its own where it carries an
+    initial constraint (which the Hessian's takes the multipliers of), else the other stages'."""
+    return stage.get(key + "0", stage[key])
 
 
 def derivatives(prob, w, p, XU, data, data_end, stage: dict[str, ca.Function]) -> dict[str, ca.Function]:
@@ -82,12 +93,12 @@ def derivatives(prob, w, p, XU, data, data_end, stage: dict[str, ca.Function]) -
     # The Jacobian's nonzeros, column by column: a stage's own, each state's column led by the +1 of
     # its gap row in the stage before (the first stage's states have none).
     jac_end = stage["terminal_jac"](end, data_end) if terminal else ca.MX(0, nx)
-    pieces = [stage["jac0"](X[:, 0], U[:, 0], data[:, 0])]
+    pieces = [first_stage(stage, "jac")(X[:, 0], U[:, 0], data[:, 0])]
     if N > 1:
         led = _composed(stage["jac"], lambda J: _gap_led(J, nx), "stage_jac_led")
         pieces.append(led.map(N - 1, MAP_MODE, MAP_THREADS)(X[:, 1:], U[:, 1:], data[:, 1:]))
     pieces.append(_gap_led(jac_end, nx))
-    blocks = [stage["jac0"].sparsity_out(0), *[stage["jac"].sparsity_out(0)] * (N - 1), jac_end.sparsity()]
+    blocks = [pieces[0].sparsity(), *[stage["jac"].sparsity_out(0)] * (N - 1), jac_end.sparsity()]
     jacobian = concatenated(pieces, _jacobian_sparsity(blocks, nx, nw))
     L_all, grad_all = stage["grad"].map(N, MAP_MODE, MAP_THREADS)(X, U, data)
     f, grad_end = ca.sum2(L_all), ca.MX(nx, 1)
@@ -117,7 +128,8 @@ def lagrangian_hessian(prob, w, p, XU, data, data_end, stage, key: str) -> ca.Fu
     lam_f, lam_g = ca.MX.sym("lam_f"), ca.MX.sym("lam_g", prob.nlp["g"].numel())
     X, U = XU[:nx, :], XU[nx:, :]
     l0 = lam_g[: nx + ni + npath]
-    pieces = [stage[key + "0"](X[:, 0], U[:, 0], data[:, 0], lam_f, l0[:nx], l0[nx:nx + ni], l0[nx + ni:])]
+    multipliers = (l0[:nx], l0[nx:nx + ni], l0[nx + ni:]) if key + "0" in stage else (l0[:nx], l0[nx:])
+    pieces = [first_stage(stage, key)(X[:, 0], U[:, 0], data[:, 0], lam_f, *multipliers)]
     if N > 1:
         rest = ca.reshape(lam_g[nx + ni + npath: lam_g.numel() - prob.n_terminal], nx + npath, N - 1)
         pieces.append(stage[key].map(N - 1, MAP_MODE, MAP_THREADS)(
@@ -125,7 +137,7 @@ def lagrangian_hessian(prob, w, p, XU, data, data_end, stage, key: str) -> ca.Fu
     l_end = lam_g[lam_g.numel() - prob.n_terminal:]
     pieces.append(stage["terminal_hess"](w[N * nw:], data_end, lam_f, l_end) if prob.terminal is not None
                   else ca.MX(nx, nx))
-    sparsity = ca.diagcat(stage[key + "0"].sparsity_out(0), *[stage[key].sparsity_out(0)] * (N - 1),
+    sparsity = ca.diagcat(pieces[0].sparsity(), *[stage[key].sparsity_out(0)] * (N - 1),
                           pieces[-1].sparsity())
     return ca.Function("nlp_hess_l", [w, p, lam_f, lam_g], [concatenated(pieces, sparsity)],
                        ["x", "p", "lam_f", "lam_g"], ["hess_gamma_x_x"])

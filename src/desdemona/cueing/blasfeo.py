@@ -29,6 +29,7 @@ loaded before :func:`load` ran, or ``DESDEMONA_BLASFEO=generic`` in the environm
 from __future__ import annotations
 
 import concurrent.futures
+import contextlib
 import hashlib
 import os
 import platform
@@ -85,24 +86,35 @@ def unavailable() -> str | None:
     return None
 
 
-def load() -> str:
+def load(wait: bool = True) -> str:
     """Have CasADi's ``hpipm`` and ``fatrop`` plugins run on BLASFEO built for this processor, building
     it into the cache the first time (about 15 s on two cores), where it can; once per process (a
-    plugin, once loaded, stays). Returns :func:`status`."""
+    plugin, once loaded, stays). Returns :func:`status`.
+
+    wait : where it is not built yet, build it now; else (an off-line solve, which a first run should
+    not hold up for it) run on CasADi's build this time and build it in the background for later runs
+    (:func:`desdemona.cueing.compiled.start_once`). The two give the same iterates to round-off."""
     global _status
     with _lock:
         if _status is None:
-            _status = _load()
+            _status = _load(wait)
         return _status
 
 
-def _load() -> str:
+def _load(wait: bool) -> str:
     generic = "CasADi's generic BLASFEO"
     if _mapped("libcasadi_conic_hpipm") or _mapped("libfatrop"):
         return f"{generic} (HPIPM or fatrop was loaded before)"
     reason = unavailable()
     if reason:
         return f"{generic} ({reason})"
+    if not wait and not built():
+        folder = _folder()
+        folder.parent.mkdir(parents=True, exist_ok=True)
+        marker = folder.with_name(folder.name + ".building")
+        script = "import sys; from desdemona.cueing import blasfeo; blasfeo._background(sys.argv[1])"
+        compiled.start_once(marker, [sys.executable, "-c", script, str(marker)], env=compiled.package_environment())
+        return f"{generic} (BLASFEO for this processor is being built in the background, for later runs)"
     try:
         folder = build()
     except (OSError, subprocess.SubprocessError) as error:
@@ -134,29 +146,51 @@ def build() -> Path:
     complete (two processes building at once keep one); nothing is left behind by a failed or
     interrupted build."""
     manifest = (SOURCES / "sources.txt").read_text().split()
-    cc = compiled.compiler()
-    key = hashlib.sha256("\n".join([VERSION, ca.__version__, str(cc), *C_FLAGS, *ASM_FLAGS,
-                                    *manifest]).encode()).hexdigest()
-    folder = compiled.cache_dir() / f"hpipm-{key[:24]}"
-    if all((folder / name).exists() for name in (*CASADI_FILES, "libblasfeo.so.0")):
+    cc, folder = compiled.compiler(), _folder()
+    if built():
         return folder
     folder.parent.mkdir(parents=True, exist_ok=True)
     with guard.lasting(f"building BLASFEO {VERSION} for this processor", f", once, into {folder.parent} (about "
                        "15 s on two cores)"), tempfile.TemporaryDirectory(dir=folder.parent, prefix=".hpipm-") as work:
         objects = _compile(cc, manifest, Path(work))
-        built = Path(work) / "lib"
-        built.mkdir()
-        _run([cc, "-shared", "-Wl,-soname,libblasfeo.so.0", "-o", str(built / "libblasfeo.so.0"),
+        lib = Path(work) / "lib"
+        lib.mkdir()
+        _run([cc, "-shared", "-Wl,-soname,libblasfeo.so.0", "-o", str(lib / "libblasfeo.so.0"),
               *map(str, objects), "-lm"])
         casadi_dir = Path(ca.__file__).parent
         for name in CASADI_FILES:
-            shutil.copy2(casadi_dir / name, built / name)
+            shutil.copy2(casadi_dir / name, lib / name)
         try:
-            built.rename(folder)
+            lib.rename(folder)
         except OSError:  # another process finished first: keep its folder
             if not (folder / "libblasfeo.so.0").exists():
                 raise
     return folder
+
+
+def _folder() -> Path:
+    """The cache's folder of BLASFEO built for this processor (built or not)."""
+    manifest = (SOURCES / "sources.txt").read_text().split()
+    key = hashlib.sha256("\n".join([VERSION, ca.__version__, str(compiled.compiler()), *C_FLAGS, *ASM_FLAGS,
+                                    *manifest]).encode()).hexdigest()
+    return compiled.cache_dir() / f"hpipm-{key[:24]}"
+
+
+def built() -> bool:
+    """Whether the cache holds BLASFEO built for this processor, with CasADi's HPIPM beside it."""
+    folder = _folder()
+    return all((folder / name).exists() for name in (*CASADI_FILES, "libblasfeo.so.0"))
+
+
+def _background(marker: str) -> None:
+    """:func:`load`'s process that builds BLASFEO for later runs, at the lowest priority; the marker
+    that keeps other runs from starting another removed at its end, whatever happened."""
+    compiled.lowest_priority()
+    try:
+        with open(os.devnull, "w") as quiet, contextlib.redirect_stderr(quiet):
+            build()
+    finally:
+        Path(marker).unlink(missing_ok=True)
 
 
 def _compile(cc: str, manifest: list[str], work: Path) -> list[Path]:

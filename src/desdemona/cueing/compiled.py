@@ -13,6 +13,15 @@ SHA-256 of its C source (with the CasADi version and the compiler command), in :
 new library is written under a temporary name and renamed, so that two processes compiling the same
 source at once leave one whole file. Files there are only ever added: remove the folder to clear it.
 
+An optimised library (fatrop's stage functions at ``-O1`` with fused multiply-adds) takes a minute or
+more to compile on ``full`` (6.7 MB of C; gcc's register allocation on straight-line code): a first
+run, or the first after a changed weight or limit, does not wait for it. It compiles the same sources
+at ``-O0``, each function a file of its own side by side on the cores (3.8 MB, a few seconds), solves
+on that, and leaves the optimised library to a process of its own at the lowest priority, for later
+runs (:func:`build`, :func:`in_background`; docs/benchmarks/first-run.md). The two
+libraries give the same results to round-off, not bit for bit: the first run's iterates may differ
+from a later run's in the last digits.
+
 A fatrop solver of a problem that later runs pose again (the windows of a recording, the same for
 every recording: :mod:`desdemona.cueing.windows`) is kept there too, serialized with its NLP's library
 (:func:`store_solver`): CasADi's set-up of fatrop for a problem's structure takes 15 s at 1,200
@@ -24,13 +33,17 @@ and the caller keeps the virtual machine: slower, same results.
 
 from __future__ import annotations
 
+import concurrent.futures
 import gzip
 import hashlib
 import os
 import platform
 import shutil
 import subprocess
+import sys
 import tempfile
+import threading
+import time
 import warnings
 import zlib
 from pathlib import Path
@@ -40,6 +53,10 @@ import casadi as ca
 from desdemona.support import guard
 
 FLAGS = ("-O0", "-fPIC", "-shared")
+#: What :func:`build` does where an optimised library is not in the cache yet: "later" compiles it in
+#: the background for later runs and runs on the quick one (:data:`FLAGS`) now; "now" waits for it (the
+#: benchmarks' steady state); "never" keeps the quick one (the tests: their cache goes with them).
+OPTIMISED = "later"
 # Where compiling takes longer than this, something is wrong with the toolchain: keep the virtual machine.
 TIMEOUT = 300.0
 
@@ -79,12 +96,18 @@ def processor_flags() -> tuple[str, ...]:
     return ()
 
 
-def library(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> tuple[str, Path]:
-    """The C source of ``functions`` and the path its compiled library (compiled with ``flags``) has
-    in the cache."""
-    source = c_source(functions, "stages.c")
-    key = hashlib.sha256("\n".join([ca.__version__, str(compiler()), *flags, source]).encode()).hexdigest()
-    return source, cache_dir() / f"stages-{key[:24]}.so"
+def library(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> tuple[dict[str, str], Path]:
+    """The C sources of ``functions``, one file each (:func:`sources`), and the path their compiled
+    library (compiled with ``flags``) has in the cache."""
+    files = sources(functions)
+    key = hashlib.sha256("\n".join([ca.__version__, str(compiler()), *flags, *files, *files.values()]).encode())
+    return files, cache_dir() / f"stages-{key.hexdigest()[:24]}.so"
+
+
+def sources(functions: list[ca.Function]) -> dict[str, str]:
+    """Each function's C source by its file's name: compiled side by side on the cores, and linked into
+    one library (each file's own helpers are prefixed with its name)."""
+    return {f"{function.name()}.c": c_source([function], f"{function.name()}.c") for function in functions}
 
 
 def is_cached(functions: list[ca.Function]) -> bool:
@@ -95,14 +118,19 @@ def is_cached(functions: list[ca.Function]) -> bool:
 def compiled(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> list[ca.Function] | None:
     """The same functions, evaluated by a library compiled with ``flags`` from the cache (compiled now
     if it is not there yet), or None without a working compiler (with a warning that says why)."""
-    path = build(functions, flags)
+    path = build(functions, flags, later=False)
     return None if path is None else [ca.external(function.name(), str(path)) for function in functions]
 
 
-def build(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> Path | None:
+def build(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS, later: bool = True) -> Path | None:
     """The path of the cached library of ``functions`` compiled with ``flags`` (compiled now if it is
-    not there yet), or None without a working compiler (with a warning that says why)."""
-    source, path = library(functions, flags)
+    not there yet), or None without a working compiler (with a warning that says why).
+
+    later : where ``flags`` optimise (they are not :data:`FLAGS`) and their library is not cached yet,
+    return the library of :data:`FLAGS` (``-O0``: seconds to compile, not a minute) and compile the
+    optimised one in the background for later runs (as :data:`OPTIMISED` says). The two give the same
+    results to round-off (fused multiply-adds), not bit for bit."""
+    files, path = library(functions, flags)
     if path.exists():
         return path
     cc = compiler()
@@ -116,11 +144,67 @@ def build(functions: list[ca.Function], flags: tuple[str, ...] = FLAGS) -> Path 
         warnings.warn(f"cannot create the cache {path.parent} ({error}): the stage functions stay "
                       "interpreted", RuntimeWarning, stacklevel=2)
         return None
-    # told where it takes long (with optimisation: fatrop's stage functions on ``full`` take about a
-    # minute at -O1); every compile is timed, for the command to print apart from the solve
+    if later and tuple(flags) != FLAGS and OPTIMISED != "now":
+        quick = library(functions, FLAGS)[1]
+        if not quick.exists():
+            with guard.lasting("compiling the stage functions for this machine and these options",
+                               " (seconds; optimised ones in the background, for later runs)"):
+                if not _compiled_into(cc, quick, files, list(FLAGS)):
+                    return None
+        if OPTIMISED == "later":
+            in_background(path, files, list(flags))
+        return quick
+    # told where it takes long (optimised: fatrop's stage functions on ``full`` take a minute or more
+    # at -O1); every compile is timed, for the command to print apart from the solve
     with guard.lasting("compiling the stage functions for this machine and these options",
                        f", once, into {path.parent}", told="-O0" not in flags):
-        return path if _compiled_into(cc, path, source, "stages.c", list(flags)) else None
+        return path if _compiled_into(cc, path, files, list(flags)) else None
+
+
+def in_background(target: Path, files: dict[str, str], flags: list[str]) -> None:
+    """Compile ``files`` with ``flags`` into the library ``target`` of the cache in a process of its
+    own, at the lowest priority, that outlives this one (a later run finds the library there); once
+    for all processes that ask at once (a marker file beside the target holds the process' id while
+    it lives). The sources wait in a folder of the cache that the compiling process removes."""
+
+    def command() -> list[str]:
+        pending = Path(tempfile.mkdtemp(dir=target.parent, prefix=".pending-"))
+        for name, source in files.items():
+            (pending / name).write_text(source)
+        script = "import sys; from desdemona.cueing import compiled; compiled._background(*sys.argv[1:])"
+        return [sys.executable, "-c", script, str(compiler()), str(target), str(pending), *flags]
+
+    start_once(target.with_name(target.name + ".building"), command, env=package_environment())
+
+
+def package_environment() -> dict:
+    """This process' environment, with the folder this desdemona is imported from first on the path: a
+    process started from it imports the same code, wherever it came from."""
+    source = os.pathsep.join([str(Path(__file__).parents[2]), os.environ.get("PYTHONPATH", "")])
+    return {**os.environ, "PYTHONPATH": source}
+
+
+def start_once(marker: Path, command, env: dict | None = None) -> None:
+    """Start the process ``command`` (its arguments, or a callable that prepares and returns them) on
+    its own, in a session of its own (it outlives this process; it removes ``marker`` when it ends),
+    unless the process whose id ``marker`` holds still runs: so of the runs that ask at once, one
+    starts it. ``env``: its environment (default: this process'). Where it cannot be started, a
+    warning: the run goes on, a later one tries again."""
+    try:
+        if _alive(marker):
+            return
+        marker.unlink(missing_ok=True)
+        with open(marker, "x") as held:  # exclusive: of two processes asking at once, one starts it
+            child = subprocess.Popen(command() if callable(command) else command, stdin=subprocess.DEVNULL,
+                                     stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                     start_new_session=True, close_fds=True, env=env)
+            held.write(str(child.pid))
+        threading.Thread(target=child.wait, daemon=True).start()  # reaped if this process outlives it
+    except FileExistsError:
+        return
+    except OSError as error:
+        marker.unlink(missing_ok=True)
+        warnings.warn(f"cannot start {marker.stem} in the background ({error})", RuntimeWarning, stacklevel=3)
 
 
 def c_source(functions: list[ca.Function], file: str) -> str:
@@ -146,7 +230,7 @@ def linked(source: str, stages: Path, name: str, kept: Path | None = None) -> ca
 
 def _linked(source: str, flags: list[str], name: str, kept: Path | None) -> ca.Function | None:
     if kept is not None:
-        return ca.external(name, str(kept)) if _compiled_into(compiler(), kept, source, "assembly.c", flags) else None
+        return ca.external(name, str(kept)) if _compiled_into(compiler(), kept, {"assembly.c": source}, flags) else None
     with tempfile.TemporaryDirectory(prefix="desdemona-") as work:
         so_file = Path(work) / "assembly.so"
         if not _cc(compiler(), source, Path(work) / "assembly.c", [*flags, "-o", str(so_file)]):
@@ -228,27 +312,105 @@ def oracle(nlp: dict, derivatives: dict[str, ca.Function]) -> list[ca.Function]:
                         ["f", "g", "grad_gamma_x", "grad_gamma_p"])]
 
 
-def _compiled_into(cc: str | None, target: Path, source: str, c_name: str, flags: list[str]) -> bool:
-    """Compile ``source`` with ``cc`` and ``flags`` into the library ``target`` of the cache: in a temporary folder
-    beside it, then renamed (atomic: a reader sees no library or a whole one). False, with a warning,
-    where compiling fails."""
+def lowest_priority() -> None:
+    """This process at the lowest priority: nice 19, and so its session's scheduling group (Linux's
+    autogroup: a process in a session of its own shares the processor with the user's run as an equal
+    group whatever its nice value; measured, the first run's solve took twice as long beside the
+    background compile before)."""
+    os.nice(19)
+    try:
+        with open("/proc/self/autogroup", "w") as group:
+            group.write("19")
+    except OSError:  # no autogroup here: nice alone
+        pass
+
+
+def _alive(marker: Path) -> bool:
+    """Whether the process whose id ``marker`` holds still runs (a marker being written counts)."""
+    try:
+        text = marker.read_text().strip()
+        if not text:
+            return time.time() - marker.stat().st_mtime < 10.0
+        os.kill(int(text), 0)
+    except (OSError, ValueError):
+        return False
+    return True
+
+
+def _compiled_into(cc: str | None, target: Path, files: dict[str, str], flags: list[str],
+                   workers: int | None = None) -> bool:
+    """Compile the C ``files`` (name: source) with ``cc`` and ``flags`` into the library ``target`` of
+    the cache: in a temporary folder beside it, then renamed (atomic: a reader sees no library or a
+    whole one). Several files are compiled side by side on ``workers`` cores (default: all; the
+    largest first) and linked.
+    False, with a warning, where compiling fails."""
     with tempfile.TemporaryDirectory(dir=target.parent, prefix=".compiling-") as work:
         so_file = Path(work) / target.name
-        if not _cc(cc, source, Path(work) / c_name, [*flags, "-o", str(so_file)]):
-            return False
+        if len(files) == 1:
+            (name, source), = files.items()
+            if not _cc(cc, source, Path(work) / name, [*flags, "-o", str(so_file)]):
+                return False
+        else:
+            compile_only = [f for f in flags if f != "-shared"]
+            largest = sorted(files, key=lambda name: -len(files[name]))
+            # the threads only compile: a failure is told from here, once (a warning from a thread
+            # came after an interrupted run's last line)
+            with concurrent.futures.ThreadPoolExecutor(max_workers=workers or os.cpu_count() or 1) as pool:
+                failed = [error for error in pool.map(lambda name: _compile_error(
+                    cc, files[name], Path(work) / name, [*compile_only, "-c", "-o", str(Path(work) / f"{name}.o")]),
+                    largest) if error is not None]
+            objects = [str(Path(work) / f"{name}.o") for name in largest]
+            if failed:
+                _failed(failed[0])
+                return False
+            if not _cc(cc, None, None, [*flags, *objects, "-o", str(so_file)]):
+                return False
         os.replace(so_file, target)
     return True
 
 
-def _cc(cc: str | None, source: str, c_file: Path, flags: list[str]) -> bool:
-    """Compile ``source`` (written to ``c_file``) with ``flags``; False, with a warning, where it fails."""
-    c_file.write_text(source)
+def _cc(cc: str | None, source: str | None, c_file: Path | None, flags: list[str]) -> bool:
+    """Compile ``source`` (written to ``c_file``; None: link the objects among ``flags``) with
+    ``flags``; False, with a warning, where it fails."""
+    error = _compile_error(cc, source, c_file, flags)
+    if error is not None:
+        _failed(error, stacklevel=4)
+    return error is None
+
+
+def _compile_error(cc: str | None, source: str | None, c_file: Path | None, flags: list[str]) -> str | None:
+    """:func:`_cc` without the warning: None where it compiled, else what the compiler said."""
     try:
-        subprocess.run([cc, str(c_file), *flags, "-lm"], check=True, capture_output=True, text=True,
-                       timeout=TIMEOUT)
+        if c_file is not None:
+            c_file.write_text(source)
+        subprocess.run([cc, *([str(c_file)] if c_file is not None else []), *flags, "-lm"], check=True,
+                       capture_output=True, text=True, timeout=TIMEOUT)
     except (OSError, TypeError, subprocess.SubprocessError) as error:
-        detail = getattr(error, "stderr", "") or str(error)
-        warnings.warn(f"compiling the stage functions failed ({detail.strip()[:300]}): they stay "
-                      "interpreted", RuntimeWarning, stacklevel=3)
-        return False
-    return True
+        return (getattr(error, "stderr", "") or str(error)).strip()[:300]
+    return None
+
+
+def _failed(detail: str, stacklevel: int = 4) -> None:
+    warnings.warn(f"compiling the stage functions failed ({detail}): they stay interpreted", RuntimeWarning,
+                  stacklevel=stacklevel)
+
+
+def _background(cc: str, target: str, pending: str, *flags: str) -> None:
+    """:func:`in_background`'s process: the sources in ``pending`` compiled one after the other (a
+    core stays free for the run that started it) into ``target``, then the sources and the marker
+    removed, whatever happened. At the lowest priority on a busy machine a file may take many times
+    what it takes in the foreground: each may take an hour here."""
+    global TIMEOUT
+    lowest_priority()
+    TIMEOUT = 3600.0
+    folder, target_path = Path(pending), Path(target)
+    try:
+        files = {file.name: file.read_text() for file in sorted(folder.glob("*.c"))}
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # nobody reads them: a failure leaves no library, a later run tries again
+            _compiled_into(cc, target_path, files, list(flags), workers=1)
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+        target_path.with_name(target_path.name + ".building").unlink(missing_ok=True)
+
+

@@ -1,9 +1,12 @@
-"""What a run will need and what it can reach, known before any work: problem size and unreachable targets.
+"""What a run will need and what it can reach, known before any work: problem size, time and unreachable targets.
 
 :func:`estimate` counts the control intervals and NLP variables of an off-line problem and its memory,
 from figures measured per control interval; :func:`check_fits` refuses a problem that would not fit in
 the memory this machine has available, saying what to change, instead of a ``std::bad_alloc`` after
-minutes; :func:`estimate_online` and :func:`check_fits_online` do the same for an on-line run. :func:`unreachable` finds the parts of a desired path that no trajectory of the configuration
+minutes; :func:`estimate_online` and :func:`check_fits_online` do the same for an on-line run.
+:func:`check_time` and :func:`check_time_online` do it for the run's time, from figures measured per
+interval and iteration and per cycle: a run estimated above :func:`time_limit` (20 times its path,
+``--max-time`` to allow more) is refused with the ``--h-u`` or ``--step`` that fits, instead of hours. :func:`unreachable` finds the parts of a desired path that no trajectory of the configuration
 can give, by construction: a modulus below g on ``dfs`` (with the cabin aligned the modulus is
 sqrt((R qdd)^2 + (R qd^2)^2 + g^2) >= g, thesis 7.2) and a specific force beyond what the machine can
 hold steadily (the centripetal force at the largest radius and the fastest yaw rate its motors can hold).
@@ -248,3 +251,124 @@ def _share(t, M, mask, bound, extreme) -> dict | None:
     weights = np.gradient(t)  # the time each sample stands for
     return {"share_of_time": float(np.sum(weights[mask]) / np.sum(weights)), "worst_m_s2": float(extreme(M[mask])),
             "limit_m_s2": bound}
+
+
+# ----------------------------------------------------------------------------------------------
+# time: a run's estimated seconds, from figures measured per interval and per cycle
+
+#: A run may take this many times its path's duration (and at least :data:`MIN_TIME_LIMIT`) unless
+#: the user allows more (``--max-time``).
+TIME_FACTOR = 20.0
+MIN_TIME_LIMIT = 60.0
+# Off-line, per control interval, free joint and solver iteration [s], measured on the reference
+# machine with the compiled stages (docs/benchmarks/fatrop-on-blasfeo-for-the-processor.md): fatrop on
+# `full`, the F-16 turn's 1,100 intervals at 77 ms an iteration; IPOPT on `full`, the catapult's 160
+# at 24 ms. A start is taken to need ITERATIONS (the corpus' hard cases: 150-500, the cap 500);
+# fatrop's set-up grows with the square of a solve's intervals (12 s at 1,140, 40 s at 1,880);
+# BASE_SECONDS: imports, the check, the figures.
+SECONDS_PER_INTERVAL = {"fatrop": 12e-6, "ipopt": 25e-6}
+ITERATIONS = 300
+SETUP_PER_INTERVAL_SQUARED = 1e-5
+BASE_SECONDS = 10.0
+# On-line, per interval of a plan [s], by free joints (the next listed at or above): one cycle's
+# computation with its real-time iteration, `dfs` at 100 Hz (56 intervals, p99 5.6 ms, the QP alone
+# 1.2-1.4 ms), `full` at 50 Hz (46, median 8.7 ms); a plan solved by IPOPT (--replan) NLP_FACTOR times
+# that (7 ms for 50 intervals of one joint against 0.6 ms); and per closed-loop step the plant, the
+# predictor and the check. Figures of a quiet machine: one that shares its cores takes longer.
+SECONDS_PER_PLAN_INTERVAL = {4: 60e-6, 6: 200e-6}
+NLP_FACTOR = 6.0
+SECONDS_PER_STEP = 5e-4
+H_U_STEPS = (0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5)  # the --h-u values suggested
+
+
+class TooLong(ValueError):
+    """The run would take longer than its limit: the message gives the estimate and what to change."""
+
+
+def time_limit(path: DesiredPath, max_time: float | None = None) -> float:
+    """The seconds a run of ``path`` may take: ``max_time`` where given, else :data:`TIME_FACTOR` times
+    its duration, at least :data:`MIN_TIME_LIMIT`. Raises :class:`TooLong` for a ``max_time`` that is
+    not a positive number of seconds."""
+    if max_time is not None and not (max_time > 0 and math.isfinite(max_time)):
+        raise TooLong(f"--max-time {max_time:g}: must be a positive number of seconds")
+    return max_time if max_time is not None else max(TIME_FACTOR * path.duration, MIN_TIME_LIMIT)
+
+
+def estimate_time(path: DesiredPath, config: Configuration, h_u: float, solver: str, starts: int = 1,
+                  workers: int = 1, window: float | None = None) -> float:
+    """The seconds an off-line run of ``path`` on ``config`` at the control step ``h_u`` takes with
+    ``solver`` ("ipopt" or "fatrop"), ``starts`` on ``workers`` processes, whole or in windows of
+    ``window`` s: the starts' iterations over every interval, and fatrop's set-up per solve."""
+    intervals = path.duration / h_u
+    per_solve = intervals if window is None else min(intervals, window / h_u)
+    rounds = math.ceil(starts / max(1, min(workers, starts)))
+    seconds = rounds * ITERATIONS * intervals * config.n * SECONDS_PER_INTERVAL[solver]
+    if solver == "fatrop":
+        seconds += SETUP_PER_INTERVAL_SQUARED * per_solve * intervals
+    return BASE_SECONDS + seconds
+
+
+def check_time(path: DesiredPath, config: Configuration, h_u: float, solver: str, starts: int = 1,
+               workers: int = 1, window: float | None = None, max_time: float | None = None) -> float:
+    """:func:`estimate_time`, raising :class:`TooLong` above :func:`time_limit`, with the smallest
+    ``--h-u`` of :data:`H_U_STEPS` that fits."""
+    seconds, limit = estimate_time(path, config, h_u, solver, starts, workers, window), time_limit(path, max_time)
+    if seconds <= limit:
+        return seconds
+    fitting = next((h for h in H_U_STEPS if h_u < h <= path.duration and estimate_time(
+        path, config, h, solver, starts, workers, window) <= limit), None)
+    advice = f"Use --h-u {fitting:g} or more" if fitting is not None else "Use a larger --h-u or a shorter path"
+    raise TooLong(f"{path.name} on {config.name}: {round(path.duration / h_u):,} control intervals "
+                  f"({path.duration:g} s at --h-u {h_u:g} s), {starts} start{'s' if starts > 1 else ''}: "
+                  f"{time_words(seconds, limit, max_time)}. {advice}, fewer --starts, or --max-time "
+                  f"{_seconds_up(seconds)} to allow it")
+
+
+def estimate_time_online(path: DesiredPath, config: Configuration, mpc) -> float:
+    """The seconds an on-line run of ``path`` on ``config`` with the
+    :class:`~desdemona.control.mpc.MPCOptions` ``mpc`` takes: a plan every re-plan period, each over
+    the plan's intervals, and the closed loop's steps."""
+    steps = path.duration / mpc.step
+    known = sorted(SECONDS_PER_PLAN_INTERVAL)
+    per_interval = SECONDS_PER_PLAN_INTERVAL[min((k for k in known if k >= config.n), default=known[-1])]
+    plan = len(mpc.grid()) * per_interval * (1.0 if mpc.replan_steps == 1 else NLP_FACTOR)
+    return BASE_SECONDS + steps / mpc.replan_steps * plan + steps * SECONDS_PER_STEP
+
+
+def check_time_online(path: DesiredPath, config: Configuration, mpc, max_time: float | None = None) -> float:
+    """:func:`estimate_time_online`, raising :class:`TooLong` above :func:`time_limit`, with the
+    smallest ``--step`` of :data:`ONLINE_STEPS` that fits."""
+    import dataclasses
+
+    seconds, limit = estimate_time_online(path, config, mpc), time_limit(path, max_time)
+    if seconds <= limit:
+        return seconds
+    fitting = next((s for s in ONLINE_STEPS if s > mpc.step and 2 * s <= mpc.horizon and estimate_time_online(
+        path, config, dataclasses.replace(mpc, step=s, replan=None, tail_step=mpc.tail_step and max(mpc.tail_step, s))
+    ) <= limit), None)
+    advice = f"Use --step {fitting:g} or more" if fitting is not None else "Use a larger --step"
+    raise TooLong(f"{path.name} on-line on {config.name}: {round(path.duration / mpc.step):,} closed-loop "
+                  f"steps (--step {mpc.step:g} s over {path.duration:g} s), {len(mpc.grid()):,} intervals in "
+                  f"each plan: {time_words(seconds, limit, max_time)}. {advice}, or --max-time "
+                  f"{_seconds_up(seconds)} to allow it")
+
+
+def time_words(seconds: float, limit: float, max_time: float | None) -> str:
+    """An estimate against its limit, in words."""
+    allowed = (f"--max-time {max_time:g} s" if max_time is not None else
+               f"the limit of {limit:.0f} s ({TIME_FACTOR:g} times the path, at least {MIN_TIME_LIMIT:g} s)")
+    return f"about {duration_words(seconds)} estimated, above {allowed}"
+
+
+def _seconds_up(seconds: float) -> str:
+    """``seconds`` rounded up to one significant digit, as a whole number."""
+    return f"{float(_round_up(max(seconds, 1.0))):.0f}"
+
+
+def duration_words(seconds: float) -> str:
+    """``seconds`` as a person reads them: 45 s, 12 min, 3.2 h."""
+    if seconds < 120.0:
+        return f"{seconds:.0f} s"
+    if seconds < 7200.0:
+        return f"{seconds / 60:.0f} min"
+    return f"{seconds / 3600:.1f} h"

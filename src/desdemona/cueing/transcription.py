@@ -383,7 +383,10 @@ class CueingProblem(Formulation):
         opts = {"structure_detection": "auto", "equality": self.equality, "print_time": False, "expand": self.expanded,
                 "calc_lam_x": False, "calc_lam_p": False,  # fatrop's own multipliers (compiled.oracle)
                 "fatrop": {"print_level": 0, "max_iter": o.max_iter, "tol": o.tol}}
-        blasfeo.load()  # on linear algebra built for this processor, where it can be (desdemona.cueing.blasfeo)
+        # on linear algebra built for this processor, where it can be (desdemona.cueing.blasfeo); an off-line
+        # run does not wait for its first build where optimised code is built later (compiled.OPTIMISED),
+        # an on-line controller's does (its QPs are timed)
+        blasfeo.load(wait=self.parametric or compiled.OPTIMISED != "later")
         if not self.compiled:
             return ca.nlpsol("cueing", "fatrop", self.nlp, opts)
         # the NLP with the derivatives assembled here, compiled, for fatrop to find by name; one solver

@@ -20,6 +20,7 @@ from pathlib import Path
 from desdemona import profiles
 from desdemona.check import metrics
 from desdemona.check.simulate import LimitViolation
+from desdemona.cueing import sizing
 from desdemona.cueing.offline import OptimizeOptions
 from desdemona.machine.model import Model
 from desdemona.machine.params import MachineParams
@@ -121,35 +122,39 @@ def _is_table(path: Path) -> bool:
 
 
 def validate(jobs: list[Job], params: MachineParams, choices: session.Choices, options: OptimizeOptions,
-             out_dir: str | Path, overwrite: bool = False) -> None:
+             out_dir: str | Path, overwrite: bool = False, max_time: float | None = None) -> None:
     """Check every job before any runs: the batch's folder (:func:`check_out`), each job's
     configuration, its path (each CSV read and checked) and its session (:func:`desdemona.runs.session.offline`:
-    the path suits the configuration, the choices are valid for it, the problem fits in memory), and
-    that its folder is free or an earlier result. Raises ValueError
-    (:class:`~desdemona.profiles.ProfileError`, :class:`~desdemona.runs.session.ChoiceError`,
-    :class:`~desdemona.cueing.sizing.TooLarge`) or :class:`~desdemona.results.report.ReportError` naming the job."""
+    the path suits the configuration, the choices are valid for it, the problem fits in memory and in
+    its time, ``max_time`` or :func:`desdemona.cueing.sizing.time_limit`), and that its folder is free
+    or an earlier result. Raises ValueError (:class:`~desdemona.profiles.ProfileError`,
+    :class:`~desdemona.runs.session.ChoiceError`, :class:`~desdemona.cueing.sizing.TooLarge`,
+    :class:`~desdemona.cueing.sizing.TooLong`) or :class:`~desdemona.results.report.ReportError` naming the job."""
     check_out(out_dir, overwrite)
     paths = {}
     for job in jobs:
         if job.profile not in paths:
             paths[job.profile] = profiles.load(job.profile)
         try:
-            solve.resolve(paths[job.profile], Model(params, job.config), choices, workers=options.workers,
-                          starts=options.starts)
+            job_session = solve.resolve(paths[job.profile], Model(params, job.config), choices,
+                                        workers=options.workers, starts=options.starts)
         except (session.ChoiceError, profiles.ProfileError) as exc:
             raise type(exc)(f"{job.profile} on {job.config}: {exc}") from None
+        problem = job_session.options
+        sizing.check_time(job_session.path, job_session.model.config, problem.h_u, problem.solver, options.starts,
+                          job_session.workers, job_session.window, max_time)
         folder = Path(out_dir) / job.folder_name
         report.check_replaceable(folder, protect=[job.profile] if Path(job.profile).is_file() else [])
 
 
 def run_batch(jobs: list[Job], params: MachineParams, choices: session.Choices, options: OptimizeOptions,
               out_dir: str | Path, processes: int = 2, dask_address: str | None = None, progress=None,
-              overwrite: bool = False) -> list[JobResult]:
+              overwrite: bool = False, max_time: float | None = None) -> list[JobResult]:
     """Run every job, on ``processes`` local processes or on the Dask scheduler at ``dask_address``;
     ``choices`` and ``options`` as in :func:`run_job`; ``overwrite``: replace an earlier batch in
     ``out_dir`` (:func:`check_out`).
 
-    Every job is validated (:func:`validate`) before anything runs. progress : optional
+    Every job is validated (:func:`validate`, each within ``max_time``) before anything runs. progress : optional
     ``progress(done, total, job_result)`` told as each job ends. Returns the jobs' lines in the order
     given and writes them to ``OUT/batch.csv``. Interrupted, it stops the local workers (or cancels the
     cluster's jobs); the jobs done by then keep their folders, and ``batch.csv`` lists them with the
@@ -157,7 +162,7 @@ def run_batch(jobs: list[Job], params: MachineParams, choices: session.Choices, 
     """
     if dask_address is not None:
         reach_scheduler(dask_address)
-    validate(jobs, params, choices, options, out_dir, overwrite)
+    validate(jobs, params, choices, options, out_dir, overwrite, max_time)
     out = Path(out_dir)
     created = not out.exists()
     try:

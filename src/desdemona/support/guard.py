@@ -34,7 +34,8 @@ The same monitor reports on a long solve: every ``every`` seconds it calls the r
 nothing while it runs (compiling generated C into the cache: a minute on a fresh cache) is wrapped in
 :func:`lasting`: it is told as it begins and ends with its time, it is the :func:`step` a command's
 own clock names while it runs, and its time adds to :func:`compile_seconds`, which a command prints
-apart from the solve's.
+apart from the solve's. :func:`estimated_end` turns a run's estimate and its pace into the time of
+day it will end.
 """
 
 from __future__ import annotations
@@ -321,6 +322,17 @@ def step() -> str | None:
 def compile_seconds() -> float:
     """[s] spent in :func:`lasting` steps (compiling) in this process so far."""
     return _state.compiling
+
+
+def estimated_end(begin: float, done: float, total: float, estimate: float | None = None) -> str:
+    """The time of day (HH:MM:SS) that work begun at ``begin`` (:func:`time.perf_counter`) ends: at the
+    pace of the share ``done`` of ``total`` so far, else (nothing done yet) after ``estimate`` seconds."""
+    elapsed = time.perf_counter() - begin
+    if done > 0:
+        left = elapsed * (total - done) / done
+    else:
+        left = max((estimate or 0.0) - elapsed, 0.0)
+    return time.strftime("%H:%M:%S", time.localtime(time.time() + left))
 
 
 class SolveMonitor(ca.Callback):
