@@ -498,11 +498,7 @@ def _add_serve_parser(sub) -> None:
     serve.add_argument("--quiet-end", type=float, default=None, metavar="SECONDS", dest="quiet_end",
                        help="end the session once the machine is parked and the host has been quiet this long "
                             "(default: never)")
-    serve.add_argument("--operator", default="127.0.0.1", metavar="HOST",
-                       help="the host whose Commands (pause, park, resume, estop, reset) it takes (default: "
-                            "127.0.0.1)")
-    serve.add_argument("--state-lost", type=float, default=0.5, metavar="SECONDS", dest="state_lost",
-                       help="park when the machine's States, once they came, stop for this long (default: 0.5)")
+    serviceoptions.add_serve_arguments(serve)
     _add_cost_options(serve)
     _add_overwrite_option(serve)
     _add_view_option(serve)

@@ -1,9 +1,18 @@
-"""The options of the stand-in for the motion system (``desdemona machine``) and of an operator's
-``desdemona command``: the service's own, beside :mod:`desdemona.cli.options`' table."""
+"""The options of the stand-in for the motion system (``desdemona machine``), of an operator's
+``desdemona command`` and the service's about them: beside :mod:`desdemona.cli.options`' table."""
 
 from __future__ import annotations
 
 from desdemona.cli import serving
+
+
+def add_serve_arguments(serve) -> None:
+    """The service's options about the machine it drives and the operator it obeys."""
+    serve.add_argument("--operator", default="127.0.0.1", metavar="HOST",
+                       help="the host whose Commands (pause, park, resume, estop, reset) it takes (default: "
+                            "127.0.0.1)")
+    serve.add_argument("--state-lost", type=float, default=0.5, metavar="SECONDS", dest="state_lost",
+                       help="park when the machine's States, once they came, stop for this long (default: 0.5)")
 
 
 def add_machine_arguments(machine) -> None:
