@@ -146,7 +146,7 @@ def test_serve_killed_at_speed_the_machine_stops_on_its_own(tmp_path):
     # the killed service's log, written as it went: every cycle to the last, commanded and measured
     with open(tmp_path / "session" / "session.csv", newline="") as f:
         session = list(csv.DictReader(f))
-    assert len(session) > 100 and session[-1]["status"] == "running"
+    assert len(session) > 20 and session[-1]["status"] == "running"
     # measured where the machine's queue and delay put it on the commanded time line, behind the cycle
     behind = float(session[-1]["t"]) - float(session[-1]["measured_at"])
     assert 0.0 < behind < QUEUE * STEP + 0.010 + 0.5
