@@ -12,39 +12,16 @@ from __future__ import annotations
 from pathlib import Path
 
 from desdemona.occupant.perception import THRESHOLDS
-from desdemona.profiles.builtin import (
-    PROFILES,
-    RATE_NOISE_PER_FORCE_NOISE,
-    car_lap,
-    catapult,
-    cosine,
-    cosine_sweep,
-    dfs_catapult,
-    get_profile,
-    pulses,
-    recorded_version,
-    roller_coaster,
-)
+from desdemona.profiles.builtin import (PROFILES, RATE_NOISE_PER_FORCE_NOISE, car_lap, catapult, cosine,
+                                        cosine_sweep, dfs_catapult, get_profile, pulses, recorded_version,
+                                        roller_coaster)
 from desdemona.profiles.csvfile import read_csv, write_csv
 from desdemona.profiles.jsbsim import from_jsbsim
 from desdemona.profiles.log import LogFormat, from_log
-from desdemona.profiles.path import (
-    ALIGNED_ROTATION_WEIGHT,
-    ALIGNED_WEIGHTS,
-    CHANNELS,
-    MAX_ANGULAR_VELOCITY,
-    MAX_SPECIFIC_FORCE,
-    MODULUS_COLUMNS,
-    PATH_COLUMNS,
-    DesiredPath,
-    G,
-    ProfileError,
-    above_g,
-    along_vertical,
-    at_least_g,
-    modulus_version,
-    vertical_force,
-)
+from desdemona.profiles.path import (ALIGNED_ROTATION_WEIGHT, ALIGNED_WEIGHTS, CHANNELS, MAX_ANGULAR_VELOCITY,
+                                     MAX_SPECIFIC_FORCE, MODULUS_COLUMNS, PATH_COLUMNS, DesiredPath, G,
+                                     ProfileError, above_g, along_vertical, at_least_g, modulus_version,
+                                     vertical_force)
 from desdemona.profiles.weights import WEIGHT_CHOICES, weights_for
 
 __all__ = ["ALIGNED_ROTATION_WEIGHT", "ALIGNED_WEIGHTS", "CHANNELS", "G", "LogFormat", "MAX_ANGULAR_VELOCITY",

@@ -11,15 +11,8 @@ from pathlib import Path
 
 import numpy as np
 
-from desdemona.profiles.path import (
-    MAX_ANGULAR_VELOCITY,
-    MAX_SPECIFIC_FORCE,
-    MODULUS_COLUMNS,
-    PATH_COLUMNS,
-    DesiredPath,
-    G,
-    ProfileError,
-)
+from desdemona.profiles.path import (MAX_ANGULAR_VELOCITY, MAX_SPECIFIC_FORCE, MODULUS_COLUMNS, PATH_COLUMNS,
+                                     DesiredPath, G, ProfileError)
 from desdemona.profiles.weights import _weight_numbers
 
 #: |omega| [rad/s] that a path may not keep for :data:`SUSTAINED_FOR` [s] or longer: rates in deg/s.
