@@ -261,7 +261,7 @@ def test_serve_says_it_is_ready_and_how_many_datagrams_came_before(tmp_path, mon
         port = probe.getsockname()[1]
     main(["serve", "--config", "dfs", "--listen", f"127.0.0.1:{port}", "--send", "127.0.0.1:9",
           "--duration", "0.2", "--out", str(tmp_path / "s"), "--no-view"])
-    ready = [line for line in capsys.readouterr().err.splitlines() if "ready" in line]
+    ready = [line for line in capsys.readouterr().err.splitlines() if ", ready:" in line]
     assert len(ready) == 1 and "serving dfs at 50 Hz, ready" in ready[0]
     assert "5 host datagrams came before it was ready" in ready[0]
 

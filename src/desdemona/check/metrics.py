@@ -89,6 +89,7 @@ import scipy.signal
 from desdemona.machine.params import default_params
 from desdemona.occupant import coriolis, perception, sickness
 from desdemona.profiles import CHANNELS, G
+from desdemona.support.units import ROUND_OFF, shown  # noqa: F401 (the printed figures' resolution)
 
 #: Names of S's channels, as in a path CSV's header (and trajectory.csv). Not imported from report, which
 #: sits above this module in the data flow and may import it.
@@ -540,21 +541,6 @@ def of_trajectory(traj, joint_names, vestibular: perception.VestibularModel | No
     """All metrics of a :class:`~desdemona.check.simulate.Trajectory` (free joints named ``joint_names``)."""
     return of_arrays(traj.t, traj.S, traj.S_d, traj.qdd, traj.qd, joint_names, traj.M, traj.M_d,
                      vestibular, lag_window)
-
-
-#: A printed figure smaller than this in magnitude, in its printed unit (m/s^2, rad/s or deg/s, s,
-#: deg, %, 1/s), is printed as 0: it is the arithmetic's round-off, not a motion. Every figure that
-#: means something here is 1e-3 or more in these units (the smallest perception threshold, 0.5 deg/s,
-#: is 9e-3 rad/s), and nothing is resolved below 1e-8 (IPOPT's tolerance); double precision leaves
-#: 1e-16 of a value's size per operation, so a channel that should be 0 reads 1e-30..1e-15 (a false
-#: rotation of 4.89e-22 deg/s, a lag of 1.5e-16 s). Only what is printed is rounded: summary.json keeps
-#: every figure as computed.
-ROUND_OFF = 1e-9
-
-
-def shown(value):
-    """``value`` as printed: 0 where its magnitude is below :data:`ROUND_OFF`; None stays None."""
-    return value if value is None or not abs(value) < ROUND_OFF else 0.0
 
 
 def _plain(value) -> float | None:

@@ -58,7 +58,8 @@ def add_command_parser(sub) -> None:
         description="Send one Command (docs/protocol.md): pause (the service parks and holds until resume), "
                     "park, resume, estop (an emergency stop: the fastest stop; no motion until reset), reset "
                     "(clears the motion system's fault or emergency stop, at rest).")
-    command.add_argument("action", choices=("pause", "park", "resume", "estop", "reset"))
+    command.add_argument("action", choices=("pause", "park", "resume", "estop", "reset"),
+                         help="the operator's action: pause, park, resume, estop or reset")
     command.add_argument("--to", required=True, metavar="HOST:PORT",
                          help="the service's --listen or the machine's --listen address")
     command.set_defaults(run=serving.run_command)

@@ -53,6 +53,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from desdemona.occupant import perception
+from desdemona.support.units import shown
 
 #: The standard nod: 30 deg [rad] in 0.5 s [s], sampled at this many instants of its own.
 NOD_ANGLE = math.radians(30.0)
@@ -188,8 +189,8 @@ class CrossCoupling:
     def headline(self) -> str:
         """The worst nod's peak and share above threshold, for a printed line."""
         name, figures = self.worst
-        return (f"head {name} nod cross-couples up to {math.degrees(figures.velocity_peak):.3g} deg/s, "
-                f"{math.degrees(figures.acceleration_peak):.3g} deg/s^2 (felt {figures.above_threshold_pct:.0f}% "
+        return (f"head {name} nod cross-couples up to {shown(math.degrees(figures.velocity_peak)):.3g} deg/s, "
+                f"{shown(math.degrees(figures.acceleration_peak)):.3g} deg/s^2 (felt {figures.above_threshold_pct:.0f}% "
                 f"of the time)")
 
 

@@ -44,6 +44,8 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.signal
 
+from desdemona.support.units import shown
+
 #: W_f's parameters (ISO 2631-1:1997, annex A): corner frequencies [Hz] and quality factors.
 W_F = {"f1": 0.08, "f2": 0.63, "f4": 0.25, "Q4": 0.86, "f5": 0.0625, "Q5": 0.80, "f6": 0.1, "Q6": 0.80}
 #: ISO 2631-1 annex D: the share of people who may vomit [%] per MSDV_z [m/s^1.5] (mixed adults).
@@ -163,8 +165,8 @@ class Dose:
         return [(f"sickness {name.removesuffix('_pct')}", unit, getattr(self, name)) for name, unit in self.UNITS.items()]
 
     def headline(self) -> str:
-        return (f"sickness dose MSDV_z {self.msdv_z:.3g} m/s^1.5 (ISO: {self.iso_incidence_pct:.2g}% may vomit; "
-                f"vertical conflict: {self.conflict_incidence_end_pct:.2g}%)")
+        return (f"sickness dose MSDV_z {shown(self.msdv_z):.3g} m/s^1.5 (ISO: {shown(self.iso_incidence_pct):.2g}% "
+                f"may vomit; vertical conflict: {shown(self.conflict_incidence_end_pct):.2g}%)")
 
 
 def dose(t, f_z) -> Dose:

@@ -84,8 +84,7 @@ class Checker:
 
     def __init__(self, model: Model):
         self.model = model
-        self.free = list(model.config.free)
-        self.select = model.config.select
+        self.select, self.expand = model.config.select, model.config.expand
         self.held = model.config.held
         self.names = list(model.config.joint_names)
         lim = model.limits
@@ -105,7 +104,7 @@ class Checker:
         # continuity: a position's scale is its range, or a second at the rate limit where unbounded
         self.position_scale = np.where(self.bounded, self.hi - self.lo, self.velocity)
         self.reanchored = 0  # setpoints re-anchored on the measured machine
-        self.largest_reanchor = np.zeros(2 * len(self.free))  # positions, then rates
+        self.largest_reanchor = np.zeros(2 * model.n)  # positions, then rates
         # the motion made: every joint's limits (the held ones must stay still within them too)
         self.every = {"position": (p.position_min, p.position_max), "rate": p.velocity_max,
                       "acceleration": p.acceleration_max, "jerk": p.jerk_max}
@@ -206,10 +205,10 @@ class Checker:
         low, high = np.where(bounded, lo, -1.0), np.where(bounded, hi, 1.0)
         mid = np.where(bounded, 0.5 * (low + high), 0.0)
         half = np.where(bounded, 0.5 * (high - low), np.inf)
-        f = self.free
-        tau = np.asarray(self.tau(q[-1, f], qd[-1, f], qdd[-1, f]), dtype=float).reshape(-1)
-        effort, power = np.zeros(6), np.zeros(6)
-        effort[f], power[f] = np.abs(tau) / self.effort, np.abs(tau * qd[-1, f]) / self.power
+        q_free, qd_free, qdd_free = self.select(q[-1]), self.select(qd[-1]), self.select(qdd[-1])
+        tau = np.asarray(self.tau(q_free, qd_free, qdd_free), dtype=float).reshape(-1)
+        effort = self.expand(np.abs(tau) / self.effort, "zero")
+        power = self.expand(np.abs(tau * qd_free) / self.power, "zero")
         use = {"position": np.max(np.abs(q - mid) / half, axis=0),
                "rate": np.max(np.abs(qd) / self.every["rate"], axis=0),
                "acceleration": np.max(np.abs(qdd) / self.every["acceleration"], axis=0),
@@ -223,10 +222,10 @@ class Checker:
                     value = float(column[np.argmax(np.abs(column - (mid[i] if kind == "position" else 0.0)))])
                     limit = (float(hi[i] if value > mid[i] else lo[i]) if kind == "position"
                              else float(self.every[kind][i]))
-                else:
-                    k = f.index(i)
-                    value = float(tau[k] if kind == "effort" else tau[k] * qd[-1, i])
-                    limit = float((self.effort if kind == "effort" else self.power)[k])
+                else:  # a free joint's torque or power (a held joint's use is 0)
+                    torque = self.expand(tau, "zero")[i]
+                    value = float(torque if kind == "effort" else torque * qd[-1, i])
+                    limit = float(self.expand(self.effort if kind == "effort" else self.power, "zero")[i])
                 out.append(Violation(t, sequence, JOINT_NAMES[i], f"made {kind}", value, limit,
                                      "the motion the joints made"))
         return out, use
