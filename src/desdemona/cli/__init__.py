@@ -21,6 +21,15 @@ def _stop_behind(exc: BaseException, kinds: tuple = (KeyboardInterrupt,)) -> Bas
     return next((e for e in (exc, exc.__cause__) if isinstance(e, kinds)), None)
 
 
+def _stopped_loading(exc: BaseException) -> int:
+    """The exit code of a Ctrl-C that came while modules were loading (re-raising anything else), told
+    in one line."""
+    if _stop_behind(exc) is None:
+        raise exc
+    print("desdemona: interrupted (SIGINT): stopped, nothing written", file=sys.stderr)
+    return 128 + signal.SIGINT
+
+
 try:  # a Ctrl-C while the libraries load (a second or two) ends the command quietly, as later
     from desdemona import profiles
     from desdemona.cli.exits import EXIT_NOT_CONVERGED, EXIT_UNSAFE, EXIT_USAGE, UserError
@@ -30,10 +39,7 @@ try:  # a Ctrl-C while the libraries load (a second or two) ends the command qui
     from desdemona.runs import session
     from desdemona.support import allocator, guard
 except (KeyboardInterrupt, RuntimeError, ImportError) as exc:  # see _stop_behind
-    if _stop_behind(exc) is None:
-        raise
-    print("desdemona: interrupted (SIGINT): stopped, nothing written", file=sys.stderr)
-    raise SystemExit(128 + signal.SIGINT) from None
+    raise SystemExit(_stopped_loading(exc)) from None
 
 __all__ = ["EXIT_NOT_CONVERGED", "EXIT_UNSAFE", "EXIT_USAGE", "UserError", "main"]
 
@@ -56,8 +62,11 @@ def main(argv: list[str] | None = None) -> int:
     if blank is not None:  # Path("") is the current folder: never what an empty name meant
         print(f"desdemona: error: --{blank} {getattr(args, blank)!r}: give a name", file=sys.stderr)
         return EXIT_USAGE
-    from desdemona.check.simulate import LimitViolation
-    from desdemona.results.report import ReportError
+    try:  # the result's modules load here, where a Ctrl-C may still come
+        from desdemona.check.simulate import LimitViolation
+        from desdemona.results.report import ReportError
+    except (KeyboardInterrupt, RuntimeError, ImportError) as exc:
+        return _stopped_loading(exc)
 
     allocator.reuse_freed_memory()  # IPOPT's factorisations reuse their workspace (allocator.py)
     allocator.one_blas_thread()  # one process per start, no spinning BLAS threads between them
