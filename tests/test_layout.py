@@ -117,3 +117,13 @@ def test_ci_runs_the_readme_s_test_command():
     command = (root / "README.md").read_text().split("Install the test extras")[1].split("```")[1].strip()
     assert command.startswith("pip install '.[test]' && pytest")
     assert command in (root / ".ci" / "run").read_text().splitlines()
+
+
+def test_every_public_name_resolves_from_the_top():
+    """What the README documents as the Python API, and what tools that read result folders import
+    (``from desdemona import perception, metrics``), loads from ``desdemona`` whatever the folders."""
+    for name in desdemona.__all__:
+        assert getattr(desdemona, name) is not None, name
+    from desdemona import metrics, perception  # noqa: F401  (modules, not only names)
+
+    assert perception.THRESHOLDS is not None and callable(metrics.of_trajectory)

@@ -55,11 +55,16 @@ _EXPORTS = {
 }
 
 
+#: Modules of the public API by their short names: the felt figures and the vestibular model, which
+#: tools that read result folders use (``from desdemona import perception``).
+_MODULES = {"metrics": "desdemona.check.metrics", "perception": "desdemona.occupant.perception"}
+
+
 def __getattr__(name: str):
     import importlib
 
-    if name == "metrics":
-        return importlib.import_module("desdemona.check.metrics")
+    if name in _MODULES:
+        return importlib.import_module(_MODULES[name])
     if name not in _EXPORTS:
         raise AttributeError(f"module 'desdemona' has no attribute {name!r}")
     module, attribute = _EXPORTS[name] if isinstance(_EXPORTS[name], tuple) else (_EXPORTS[name], name)
@@ -69,7 +74,7 @@ def __getattr__(name: str):
 
 
 def __dir__():
-    return sorted([*globals(), *_EXPORTS, "metrics"])
+    return sorted([*globals(), *_EXPORTS, *_MODULES])
 
 
 __all__ = [
@@ -97,6 +102,7 @@ __all__ = [
     "load_params",
     "load_path",
     "metrics",
+    "perception",
     "optimize",
     "run_online",
     "thesis_toy_params",
