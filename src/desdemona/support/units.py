@@ -2,7 +2,8 @@
 the figures a person reads."""
 
 #: Standard gravity as the thesis takes it [m/s^2]: the machine's default ``gravity`` and the 1 g of
-#: the desired paths (:data:`desdemona.profiles.G`): a cabin at rest and level feels (0, 0, +GRAVITY) (thesis eq. A.19, B.5).
+#: the desired paths (:data:`desdemona.profiles.G`); a cabin at rest and level feels (0, 0, +GRAVITY)
+#: (thesis eq. A.19, B.5).
 GRAVITY = 9.81
 
 
