@@ -363,6 +363,7 @@ def run_plot(args) -> int:
     from desdemona.results import figures, report, view
 
     report.refuse_batch_folder(args.folder, "plot")
+    _say_live(args.folder)
     traj, summary = report.load(args.folder)
     try:
         drawn = figures.draw_result(traj, summary, args.folder)
@@ -379,8 +380,18 @@ def run_plot(args) -> int:
 def run_view(args) -> int:
     from desdemona.results import view
 
+    _say_live(args.folder)
     print(view.write(args.folder, args.out, args.overwrite))
     return 0
+
+
+def _say_live(folder) -> None:
+    """One line on stderr where ``folder`` is a session's log written as it went, not a whole result."""
+    from desdemona.results import folder as result_folder
+
+    note = result_folder.live_note(folder)
+    if note is not None:
+        print(f"desdemona: {note}", file=sys.stderr)
 
 
 def run_compare(args) -> int:
@@ -390,6 +401,8 @@ def run_compare(args) -> int:
         raise UserError("--lag-window must be positive")
     if args.out is not None:
         compare.check_out(_claim_out(args), args.overwrite)
+    for folder in args.folders:
+        _say_live(folder)
     entries = compare.load_results(args.folders, perception_models.get_model(args.perception), args.lag_window)
     print(compare.table(entries))
     if args.out is not None:

@@ -19,6 +19,7 @@ from desdemona.runs import session
 def run_serve(args) -> int:
     from desdemona.results import report
     from desdemona.service import protocol, serve, sessionlog
+    from desdemona.service.livetrajectory import LiveTrajectory
 
     model = _machine(args)
     out = _result_folder(args)
@@ -54,7 +55,10 @@ def run_serve(args) -> int:
 
     def ready(early):
         nonlocal log  # the log is begun once the service is ready
-        log = sessionlog.LiveLog(out, model.config.joint_names, report.RESULT_FORMAT)
+        log = sessionlog.LiveLog(out, model.config.joint_names, report.RESULT_FORMAT,
+                                 trajectory=LiveTrajectory(model, channels, every=round(0.1 / options.mpc.step)),
+                                 description={**report.run_description(resolved.path, model.config),
+                                              "parameters": model.params.to_dict()})
         say_ready(early)
 
     try:

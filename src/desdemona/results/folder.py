@@ -125,7 +125,10 @@ def read_table(file: str | Path) -> dict[str, np.ndarray]:
     file = Path(file)
     try:
         with open(file) as fh:
-            lines = fh.read().splitlines()
+            text = fh.read()
+        lines = text.splitlines()
+        if text and not text.endswith("\n"):  # a row being written (a session's log as it goes): not yet one
+            lines = lines[:-1]
         rows = [line for line in lines if line and not line.startswith("#")]
         if rows and rows[0].startswith("t,"):
             names, rows = rows[0].split(","), rows[1:]
@@ -185,3 +188,53 @@ def load(out_dir: str | Path) -> tuple[Trajectory, dict]:
     if absent:
         raise ReportError(f"{out}: not a complete result folder: its trajectory.csv has no column {absent[0]!r}")
     return trajectory_of(col, joints), summary
+
+
+LOCK_SUFFIX = ".desdemona-lock"
+
+
+def lock_path(out_dir: str | Path) -> Path:
+    """The lock of an output folder: the hidden sibling ``.<name>.desdemona-lock``."""
+    out = Path(os.path.abspath(out_dir))  # "." and ".." by their names
+    return out.parent / f".{out.name}{LOCK_SUFFIX}"
+
+
+def _lock_holder(lock: Path) -> tuple[int | None, str]:
+    try:
+        pid, _, command = lock.read_text().partition("\n")
+        return int(pid), command.strip()
+    except (OSError, ValueError):
+        return None, ""
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:  # it exists, but belongs to someone else
+        return True
+    return True
+
+
+def live_note(out_dir: str | Path) -> str | None:
+    """The line that says a result folder is a served session's log written as it went (its
+    summary.json ``"live"``), not the whole result: how far it reaches, and whether the session still
+    runs (its ``serve`` holds the folder's lock) or ended without closing (killed); None for a whole
+    result. The folder is read as it is, up to its last written cycle."""
+    out = Path(out_dir)
+    try:
+        live = json.loads((out / "summary.json").read_text()).get("live")
+    except (OSError, ValueError, AttributeError):
+        return None
+    if not live:
+        return None
+    try:
+        t = read_table(out / "trajectory.csv")["t"]
+        reach = f"t = {t[-1]:.3f} s" if len(t) else "its start (no host message answered)"
+    except (ReportError, KeyError):
+        reach = "its start (no cycle written)"
+    pid, _ = _lock_holder(lock_path(out))
+    if pid is not None and _alive(pid):
+        return f"{out}: session still running (process {pid}), written up to {reach}; read up to its last cycle"
+    return f"{out}: session ended without closing at {reach}; read up to its last cycle"

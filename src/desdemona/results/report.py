@@ -36,18 +36,10 @@ from desdemona.results import figures
 from desdemona.results.folder import (RESULT_FILES, RESULT_FORMAT, ReportError, check_out_folder,  # noqa: F401
                                       check_replaceable, empty_folder, foreign_names, is_result_folder, load,
                                       read_summary, read_table, refuse_batch_folder, trajectory_of)
+from desdemona.results.folder import LOCK_SUFFIX, _alive, _lock_holder, lock_path  # noqa: F401
 from desdemona.support import guard
 
 UNITS = "units: SI (s, rad, m, rad/s, m/s, rad/s^2, m/s^2, N*m, N, W)"
-
-
-LOCK_SUFFIX = ".desdemona-lock"
-
-
-def lock_path(out_dir: str | Path) -> Path:
-    """The lock of an output folder: the hidden sibling ``.<name>.desdemona-lock``."""
-    out = Path(os.path.abspath(out_dir))  # "." and ".." by their names
-    return out.parent / f".{out.name}{LOCK_SUFFIX}"
 
 
 @contextlib.contextmanager
@@ -93,24 +85,6 @@ def claim(out_dir: str | Path, command: str | None = None):
             yield lock
     finally:
         release()
-
-
-def _lock_holder(lock: Path) -> tuple[int | None, str]:
-    try:
-        pid, _, command = lock.read_text().partition("\n")
-        return int(pid), command.strip()
-    except (OSError, ValueError):
-        return None, ""
-
-
-def _alive(pid: int) -> bool:
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except OSError:  # it exists, but belongs to someone else
-        return True
-    return True
 
 
 def versions() -> dict[str, str]:

@@ -385,7 +385,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             session.record(k, compute=sent - began, age=np.nan if inbox.arrived is None else began - inbox.arrived,
                            latency=sent - inbox.arrived if answered else np.nan)
             if log is not None:
-                _log(log, session, link.newest, model.config)
+                _log(log, session, link.newest, model.config, inbox.newest)
             k += 1
             quiet = inbox.arrived is not None and clock() - inbox.arrived > (serving.quiet_end or np.inf)
             if ((stops and (session.status == "parked" or len(stops) > 1))
@@ -400,11 +400,14 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
                   reanchored=session.reanchored, breaks=session.breaks)
 
 
-def _log(log, session: _Session, state: protocol.MachineState | None, config) -> None:
-    """The cycle just recorded, into the session's log as it goes: commanded and measured beside."""
+def _log(log, session: _Session, state: protocol.MachineState | None, config, host) -> None:
+    """The cycle just recorded, into the session's log as it goes: commanded and measured beside, and
+    what the host's newest message asked for."""
     measured = None if state is None else (config.select(state.position), config.select(state.rate),
                                            state.applied_time)
-    log.cycle(session.rows[-1], session.starts[-1][:2], measured, session.events)
+    start = session.starts[-1]
+    log.cycle(session.rows[-1], (start.q, start.qd, session.u[-1]), measured, session.events,
+              None if host is None else host.values)
 
 
 def _send(sock: socket.socket, message, to, inbox: _Inbox) -> None:

@@ -84,14 +84,19 @@ class LiveLog:
     killed leaves them to its last cycle; ``summary.json`` marks the folder as a result of ours being
     written (``"live": true``), so that the session's end replaces it with the whole result."""
 
-    def __init__(self, out, names, result_format: str):
+    def __init__(self, out, names, result_format: str, trajectory: "LiveTrajectory | None" = None,
+                 description: dict | None = None):
         import json
         from pathlib import Path
 
         self.out = Path(out)
         self.out.mkdir(parents=True, exist_ok=True)
         (self.out / "summary.json").write_text(json.dumps({"format": result_format, "live": True,
-                                                           "written_by": "desdemona serve, as it goes"}))
+                                                           "written_by": "desdemona serve, as it goes",
+                                                           **(description or {})}))
+        self.trajectory = trajectory
+        if trajectory is not None:
+            trajectory.begin(self.out / "trajectory.csv")
         self.session = open(self.out / "session.csv", "w")  # noqa: SIM115 -- appended to cycle by cycle
         self.events = open(self.out / "events.csv", "w")  # noqa: SIM115
         joints = [f"{kind}_{name}_{q}" for kind in ("commanded", "measured") for q in ("position", "rate")
@@ -101,9 +106,11 @@ class LiveLog:
         self.events.write("t,what,detail\n")
         self.written = 0
 
-    def cycle(self, row: dict, commanded, measured, events) -> None:
-        """One cycle's ``row`` (as :class:`desdemona.service.serve` records it), ``commanded`` (q, qd)
-        and ``measured`` (q, qd, time on the setpoints' line) or None, and every event so far."""
+    def cycle(self, row: dict, commanded, measured, events, desired=None) -> None:
+        """One cycle's ``row`` (as :class:`desdemona.service.serve` records it), ``commanded`` (q, qd, and
+        the commanded acceleration qdd) and ``measured`` (q, qd, time on the setpoints' line) or None,
+        every event so far, and ``desired``: the values of the host's newest message (None before the
+        first), for the live trajectory.csv."""
         n = len(commanded[0])
         values = [*commanded[0], *commanded[1], *(measured[0] if measured else [np.nan] * n),
                   *(measured[1] if measured else [np.nan] * n)]
@@ -117,9 +124,13 @@ class LiveLog:
         self.written = len(events)
         self.session.flush()
         self.events.flush()
+        if self.trajectory is not None and desired is not None:
+            self.trajectory.add(row["t"], *commanded[:3], desired)
 
     def close(self) -> tuple[str, str]:
         """Closed; the text of session.csv and events.csv, to go into the whole result."""
+        if self.trajectory is not None:
+            self.trajectory.close()
         self.session.close()
         self.events.close()
         return (self.out / "session.csv").read_text(), (self.out / "events.csv").read_text()
