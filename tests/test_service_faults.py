@@ -19,6 +19,7 @@ from pathlib import Path
 import pytest
 
 from desdemona.machine.params import JOINT_NAMES
+from desdemona.results import folder, report, view
 from desdemona.service.checker import MADE_JERK_TOLERANCE, MADE_TOLERANCE
 
 pytestmark = [pytest.mark.realtime, pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")]
@@ -152,6 +153,12 @@ def test_serve_killed_at_speed_the_machine_stops_on_its_own(tmp_path):
     assert 0.0 < behind < QUEUE * STEP + 0.010 + 0.5
     assert abs(float(session[-1]["measured_yaw_rate"])) > 0.5
     assert json.loads((tmp_path / "session" / "summary.json").read_text())["live"]
+    # its result folder, read as plot, view and compare read it: to within a batch (0.1 s) of its last cycle
+    traj, _ = report.load(tmp_path / "session")
+    assert 0.0 <= float(session[-1]["t"]) - traj.t[-1] < 0.1 + 1e-9 and abs(traj.qd[-1, 0]) > 0.5
+    assert folder.live_note(tmp_path / "session").endswith(f"session ended without closing at t = {traj.t[-1]:.3f} "
+                                                          "s; read up to its last cycle")
+    assert "desdemona view" in view.page_of_folder(tmp_path / "session")
 
 
 def test_a_drive_fault_parks_the_service_until_a_reset(tmp_path):
