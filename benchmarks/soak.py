@@ -271,7 +271,7 @@ def _rows(file: Path) -> list[dict]:
         return list(csv.DictReader(fh))
 
 
-def parks(cycles: list[dict], config: str) -> list[dict]:
+def parks(cycles: list[dict], config: str, step: float = 1.0 / RATE) -> list[dict]:
     """Every park of the session (a run of ``parking`` cycles): whether it came to rest (``parked``)
     or the host came back first, how long it took and the time its limits allow, and why (a park
     that follows the machine's own stop, "the machine is braking", is judged by the stand-in's own
@@ -280,7 +280,7 @@ def parks(cycles: list[dict], config: str) -> list[dict]:
     from desdemona.machine.plan import stopping_time
 
     model = Model(config=config)
-    names, lim, h = model.config.joint_names, model.limits, 1.0 / RATE
+    names, lim, h = model.config.joint_names, model.limits, step
     status = [c["status"] for c in cycles]
     out, k = [], 0
     while k < len(status):

@@ -7,6 +7,7 @@ computer's stalls of the service do not stop the machine on their own before the
 makes (on two cores shared by many jobs, 50 Hz fell behind real time by more than half a second)."""
 
 import csv
+import importlib
 import json
 import os
 import signal
@@ -16,6 +17,7 @@ import sys
 import time
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from desdemona.machine.params import JOINT_NAMES
@@ -40,8 +42,11 @@ def _port() -> int:
 class Loop:
     """machine + serve + host replay of ``profile`` on dfs, in ``folder``."""
 
-    def __init__(self, folder: Path, profile: str = "dfs-catapult", machine=(), serve=(), config: str = "dfs"):
+    def __init__(self, folder: Path, profile: str = "dfs-catapult", machine=(), serve=(), config: str = "dfs",
+                 relay=None):
+        """relay: made with the service's port, what the host sends to instead (its ``port``)."""
         self.folder, self.machine_port, self.serve_port = folder, _port(), _port()
+        self.profile = profile
         folder.mkdir(parents=True, exist_ok=True)  # serve's --out needs its parent; the stand-in's makes it
         self.machine = subprocess.Popen(
             [*RUN, "machine", "--config", config, "--listen", f"{LOOPBACK}:{self.machine_port}",
@@ -56,8 +61,13 @@ class Loop:
         while "serving" not in said[-1] and said[-1] and len(said) < 50:  # after what it compiles, once
             said.append(self.serve.stderr.readline())
         assert "serving" in said[-1], said
-        self.host = subprocess.Popen([*RUN, "host", "replay", profile, "--to", f"{LOOPBACK}:{self.serve_port}"],
-                                     stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        self.relay = None if relay is None else relay(self.serve_port)
+        self.host = self.start_host()
+
+    def start_host(self) -> subprocess.Popen:
+        to = self.serve_port if self.relay is None else self.relay.port
+        return subprocess.Popen([*RUN, "host", "replay", self.profile, "--to", f"{LOOPBACK}:{to}"],
+                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
 
     def motion(self) -> list[dict]:
         """The rows of the stand-in's motion.csv so far (it appends them as it goes)."""
@@ -252,3 +262,138 @@ def test_a_servo_lag_of_30_ms_keeps_every_limit_and_the_felt_force(tmp_path, con
         assert service["tracking_use_max"] < 1.0  # the delay is known: compensated, never a fault
         rms[delay] = loop.summary("session")["metrics"]["rms_weighted"]
     assert abs(rms[0.03] - rms[0.0]) <= 0.1 * rms[0.0], rms
+
+
+def _session(folder: Path) -> list[dict]:
+    """The rows of the service's session.csv so far (appended as it goes)."""
+    try:
+        with open(folder / "session" / "session.csv", newline="") as f:
+            return [r for r in csv.DictReader(f) if r.get("measured_at") is not None]
+    except FileNotFoundError:
+        return []
+
+
+def _parked_in_time(session: list[dict], after: float, config: str = "dfs") -> float:
+    """The park that began at or after ``after`` [s]: the time from its first parking cycle to parked,
+    as a share of the stop the limits allow from the commanded rates and accelerations there (and the
+    two cycles of coming to rest, and the one that first says parked)."""
+    from desdemona import Model
+    from desdemona.machine.plan import stopping_time
+
+    model = Model(config=config)
+    names, lim = model.config.joint_names, model.limits
+    begin = next(i for i, r in enumerate(session) if float(r["t"]) >= after - 1e-9 and r["status"] == "parking")
+    end = next(i for i in range(begin, len(session)) if session[i]["status"] == "parked")
+    assert all(r["status"] == "parking" for r in session[begin:end])
+    qd, a = ([float(session[begin][f"commanded_{j}_{q}"]) for j in names] for q in ("rate", "acceleration"))
+    bound = max(stopping_time(np.array(qd), np.array(a), lim.acceleration, lim.jerk)) + 3 * STEP
+    return (float(session[end]["t"]) - float(session[begin]["t"])) / bound
+
+
+def test_operator_commands_pause_park_resume_estop_reset_act_and_are_logged(tmp_path):
+    """An operator's Commands into a running session, one after another: pause and park each park the
+    machine within the stop its limits allow and hold it until resume; an emergency stop (through the
+    service, passed on) is the machine's fastest stop and holds until reset; after each, motion again;
+    each is in the session's log with its time, and nothing moves between a stop and its release."""
+    loop = Loop(tmp_path, profile="roller-coaster")
+
+    def until(condition, what):
+        deadline = time.monotonic() + WAIT
+        while time.monotonic() < deadline:
+            session, motion = _session(tmp_path), loop.motion()
+            if session and motion and condition(session[-1], motion[-1]):
+                return
+            time.sleep(0.05)
+        loop.end()
+        pytest.fail(f"never: {what}")
+
+    def moving(s, m):
+        return s["status"] == "running" and abs(float(m["yaw_rate"])) > 0.3
+
+    for action in ("pause", "park"):
+        until(moving, f"the arm moving before {action}")
+        loop.command(action, loop.serve_port)
+        until(lambda s, m: s["status"] == "parked" and abs(float(m["yaw_rate"])) < 1e-3, f"parked after {action}")
+        time.sleep(0.4)
+        assert _session(tmp_path)[-1]["status"] == "parked"  # held until resumed
+        loop.command("resume", loop.serve_port)
+    until(moving, "the arm moving before the emergency stop")
+    loop.command("estop", loop.serve_port)
+    until(lambda s, m: m["status"] == "e-stop" and abs(float(m["yaw_rate"])) < 1e-3, "at rest in the e-stop")
+    time.sleep(0.4)
+    assert loop.motion()[-1]["status"] == "e-stop"  # held until reset
+    loop.command("reset", loop.serve_port)
+    until(moving, "the arm moving after the reset")
+    loop.end()
+    events = [e for e in loop.events("session") if e["what"].startswith("command")]
+    assert [e["what"] for e in events] == ["command pause", "command resume", "command park", "command resume",
+                                           "command emergency stop", "command reset"], events
+    t = [float(e["t"]) for e in events]
+    session = _session(tmp_path)
+    for stop, release in ((0, 1), (2, 3), (4, 5)):  # nothing follows the host from a stop to its release
+        held = [r for r in session if t[stop] <= float(r["t"]) < t[release]]
+        assert held and not any(r["status"] == "running" for r in held)
+        assert any(r["status"] == "running" for r in session if float(r["t"]) > t[release])
+    for stop in (0, 2):
+        assert _parked_in_time(session, t[stop]) <= 1.0
+    machine = loop.summary("machine")
+    estop = [s for s in machine["own_stops"] if s["why"] == "emergency stop (a Command)"]
+    assert len(estop) == 1 and estop[0]["at_rest"] - estop[0]["start"] <= estop[0]["shortest_stop_s"] + 0.02
+    assert machine["refused"].get("refused: e-stop", 0) > 0
+    _made_within_limits(machine)
+
+
+def test_a_lossy_network_a_restarted_host_and_an_outage_keep_every_limit(tmp_path, monkeypatch):
+    """The soak's fault phase in short (benchmarks/soak.py): the host's datagrams through its relay
+    (20 % lost, 5 % twice, 5 % held back behind the next, up to 30 ms late), the host killed and
+    started afresh, 2 s of silence: the service never fails, drops what it must and counts it, parks
+    within the stop the limits allow each time the host is lost and follows again when it is back;
+    the stand-in sees no limit exceeded."""
+    monkeypatch.syspath_prepend(str(Path(__file__).resolve().parents[1] / "benchmarks"))
+    soak = importlib.import_module("soak")
+    relays = []
+
+    def relay(port):
+        relays.append(soak.Relay(port, faults=True))
+        relays[-1].start()
+        return relays[-1]
+
+    loop = Loop(tmp_path, profile="roller-coaster", relay=relay)
+    try:
+        def running_for(seconds):
+            deadline, since = time.monotonic() + WAIT, None
+            while time.monotonic() < deadline:
+                session = _session(tmp_path)
+                running = bool(session) and session[-1]["status"] == "running"
+                since = (since or time.monotonic()) if running else None
+                if since is not None and time.monotonic() - since >= seconds:
+                    return
+                time.sleep(0.05)
+            loop.end()
+            pytest.fail(f"never followed the host for {seconds} s")
+
+        running_for(3.0)
+        loop.host.kill()  # the host process dies and is started afresh: its sequence begins again
+        loop.host.wait()
+        loop.host = loop.start_host()
+        running_for(2.0)
+        relays[0].silence(2.0)
+        time.sleep(2.5)
+        running_for(1.5)
+        loop.host.kill()
+        loop.serve.wait(timeout=WAIT)  # parked, the host quiet for a second: it ends by itself
+        out = loop.end()
+    finally:
+        relays[0].stop()
+    assert loop.serve.returncode == 0, out["serve"]
+    counts = relays[0].counts
+    assert counts["host restarts passed on"] == 1 and counts["outage"] > 0
+    assert min(counts["lost"], counts["duplicated"], counts["reordered"]) > 0, counts
+    service = loop.summary("session")["service"]
+    assert service["dropped"].get("out of order or repeated", 0) > 0, service["dropped"]
+    session = _session(tmp_path)
+    parks = [p for p in soak.parks(session, "dfs", STEP) if not p["reason"].startswith("the machine is")]
+    # the restart's gap, the outage (each may end with the host back before the machine is at rest), the end
+    assert len(parks) >= 3 and parks[-1]["rested"], parks
+    assert all(p["took_s"] <= p["bound_s"] + 1e-9 for p in parks if p["rested"]), parks
+    _made_within_limits(loop.summary("machine"))

@@ -78,8 +78,8 @@ def describe(summary: dict) -> str:
 
 class LiveLog:
     """The session's log written as it goes into its result folder ``out``: ``session.csv`` (every cycle:
-    the columns of :func:`session_table`, then the free joints' commanded positions and rates at the
-    cycle's start and the newest State's measured ones, with the time on the setpoints' time line they
+    the columns of :func:`session_table`, then the free joints' commanded positions, rates and
+    accelerations at the cycle's start and the newest State's measured positions and rates, with the time on the setpoints' time line they
     were measured at) and ``events.csv``, each row appended and flushed, so that a service that is
     killed leaves them to its last cycle; ``summary.json`` marks the folder as a result of ours being
     written (``"live": true``), so that the session's end replaces it with the whole result."""
@@ -99,8 +99,9 @@ class LiveLog:
             trajectory.begin(self.out / "trajectory.csv")
         self.session = open(self.out / "session.csv", "w")  # noqa: SIM115 -- appended to cycle by cycle
         self.events = open(self.out / "events.csv", "w")  # noqa: SIM115
-        joints = [f"{kind}_{name}_{q}" for kind in ("commanded", "measured") for q in ("position", "rate")
-                  for name in names]
+        joints = [f"{kind}_{name}_{q}" for kind, quantities in (("commanded", ("position", "rate", "acceleration")),
+                                                                ("measured", ("position", "rate")))
+                  for q in quantities for name in names]
         self.session.write(",".join(["t,status,command,message_age_s,latency_s,compute_time_s,reason,machine,"
                                      "tracking_use", *joints, "measured_at"]) + "\n")
         self.events.write("t,what,detail\n")
@@ -112,7 +113,7 @@ class LiveLog:
         every event so far, and ``desired``: the values of the host's newest message (None before the
         first), for the live trajectory.csv."""
         n = len(commanded[0])
-        values = [*commanded[0], *commanded[1], *(measured[0] if measured else [np.nan] * n),
+        values = [*commanded[0], *commanded[1], *commanded[2], *(measured[0] if measured else [np.nan] * n),
                   *(measured[1] if measured else [np.nan] * n)]
         self.session.write(f"{row['t']:.6g},{row['status']},{row['command']},{row['message_age_s']:.6g},"
                            f"{row['latency_s']:.6g},{row['compute_time_s']:.6g},\"{row['reason']}\","
