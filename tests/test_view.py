@@ -66,9 +66,30 @@ def make_result(folder: Path, duration: float = 4.0, rate: float = 50.0, classic
     return folder
 
 
+def add_session(folder: Path, delay: float = 0.03, rate: float = 50.0) -> Path:
+    """A served session's session.csv beside the result: each cycle's command (trajectory.csv's joints)
+    and the newest State's measured joints, measured ``delay`` late and a little off, as serve logs them."""
+    cols = report.read_table(folder / "trajectory.csv")
+    t = cols["t"][:: max(1, round(len(cols["t"]) / (cols["t"][-1] * rate)))]
+    names = ["t", "status", "command", "message_age_s", "latency_s", "compute_time_s", "reason", "machine",
+             "tracking_use"]
+    names += [f"commanded_{j}_{q}" for q in ("position", "rate", "acceleration") for j in JOINT_NAMES]
+    names += [f"measured_{j}_{q}" for q in ("position", "rate") for j in JOINT_NAMES] + ["measured_at"]
+    lines = [",".join(names)]
+    for k, tk in enumerate(t):
+        at = max(0.0, tk - delay)
+        command = [np.interp(tk, cols["t"], cols[f"{q}_{j}"]) for q in ("q", "qd", "qdd") for j in JOINT_NAMES]
+        measured = [np.interp(at, cols["t"], cols[f"{q}_{j}"]) + 2e-3 + 1e-3 * np.sin(7 * at)
+                    for q in ("q", "qd") for j in JOINT_NAMES]
+        cells = [f"{tk:.6g}", "running", "plan", "0.001", "0.002", "0.003", '""', "following", f"{0.2 + 0.1 * np.sin(tk):.6g}"]
+        lines.append(",".join(cells + [f"{v:.10g}" for v in command + measured] + [f"{at:.6g}"]))
+    (folder / view.SESSION_FILE).write_text("\n".join(lines) + "\n")
+    return folder
+
+
 @pytest.fixture(scope="module")
 def result(tmp_path_factory):
-    return make_result(tmp_path_factory.mktemp("view") / "run")
+    return add_session(make_result(tmp_path_factory.mktemp("view") / "run"))
 
 
 def _data(text: str) -> dict:
@@ -186,6 +207,33 @@ def test_pose_at_the_cursor_is_the_trajectory(loaded, result):
     t = 0.5 * (cols["t"][10] + cols["t"][11])
     pose = loaded.execute_script("return window.desdemonaView.seek(arguments[0])", t)
     assert pose["q"]["yaw"] == pytest.approx(0.5 * (cols["q_yaw"][10] + cols["q_yaw"][11]), abs=1e-9)
+
+
+def test_the_measured_machine_is_drawn_beside_the_commanded_one(loaded, result):
+    """A served session's measured machine: at the cursor, its drawn pose is the joints the log says
+    were measured there (and the chain of eq. A.7 from them); it can be hidden; the plots show the
+    tracking error."""
+    with open(result / view.SESSION_FILE) as fh:
+        header = fh.readline().strip().split(",")
+        rows = [line.strip().split(",") for line in fh]
+    assert loaded.execute_script("return window.desdemonaView.hasMeasured")
+    for k in (2, 40, len(rows) - 1):
+        row = dict(zip(header, rows[k]))
+        at = float(row["measured_at"])
+        loaded.execute_script("window.desdemonaView.seek(arguments[0])", at)
+        measured = loaded.execute_script("return window.desdemonaView.pose('measured')")
+        q = np.array([float(row[f"measured_{j}_position"]) for j in JOINT_NAMES])
+        assert measured["t"] == pytest.approx(at, abs=1e-12)
+        assert np.allclose([measured["q"][j] for j in JOINT_NAMES], q, rtol=0, atol=1e-6)
+        drawn = np.array(loaded.execute_script("return window.desdemonaView.cabinMatrix('measured')")).reshape(4, 4)
+        assert np.allclose(drawn, kinematics.cabin_pose(q), atol=1e-9)
+        commanded = loaded.execute_script("return window.desdemonaView.pose()")
+        assert not np.allclose([commanded["q"][j] for j in JOINT_NAMES], q, atol=1e-4)  # two machines, apart
+    assert loaded.execute_script("return window.desdemonaView.showMeasured(false)") is False
+    assert loaded.execute_script("return window.desdemonaView.showMeasured(true)") is True
+    titles = loaded.execute_script("return [...document.querySelectorAll('.u-title')].map((e) => e.textContent)")
+    assert "tracking error: the measured machine less the command" in titles
+    assert [e for e in loaded.get_log("browser") if e["level"] == "SEVERE"] == []
 
 
 def test_play_and_views(loaded):

@@ -8,8 +8,9 @@
   const G = D.geometry;
   const M = D.motion;
   const C = D.classical || null;
+  const MM = D.measured || null;  // a served session's measured machine
   const t0 = M.t[0], t1 = M.t[M.t.length - 1];
-  const state = { t: t0, playing: false, speed: 1, view: "orbit", classical: !!C, loop: true };
+  const state = { t: t0, playing: false, speed: 1, view: "orbit", classical: !!C, measured: !!MM, loop: true };
 
   // ---- time: linear interpolation between samples (exact at a sample time) ----
   function locate(ts, t) {
@@ -91,10 +92,13 @@
     a.position.set(...G.head_offset);
     return a;
   }
-  // One machine; ghost = the classical loop's, faded. Returns the six joint groups and the arrows.
+  // One machine; ghost = the classical loop's, faded ("measured": the measured machine's, ghosted in
+  // teal). Returns the six joint groups and the arrows.
   function machine(ghost) {
     const op = ghost ? 0.28 : 1;
-    const col = ghost
+    const col = ghost === "measured"
+      ? { arm: 0x5fa8a0, carriage: 0x5fa8a0, outer: 0x2a9d8f, inner: 0x2a9d8f, cabin: 0x8fd1c8, head: 0x8fd1c8 }
+      : ghost
       ? { arm: 0x8a8fa0, carriage: 0x8a8fa0, outer: 0x9b7fc9, inner: 0x9b7fc9, cabin: 0xb9a6e0, head: 0xb9a6e0 }
       : { arm: 0x6b7a8f, carriage: 0x39424e, outer: 0xd9822b, inner: 0x2b6cd9, cabin: 0xf2f2f2, head: 0xe0b48f };
     const root = new THREE.Group();
@@ -164,6 +168,7 @@
   scene.add(rod([0, 0, ground], [0, 0, armTop - armH - 0.05], 0.7, material(0x7f8c8d, 1)));
   const main = machine(false);
   const ghost = C ? machine(true) : null;
+  const shadow = MM ? machine("measured") : null;
 
   const UP = new THREE.Vector3(0, 1, 0), ARROW_PER_G = 1.0, INSIDE_SCALE = 0.25;  // 1 g = 1 m (0.25 m inside)
   function setArrow(a, f) {
@@ -236,6 +241,7 @@
     lastCabin.copy(here);
     main.occupant.visible = state.view !== "cabin";
     if (ghost) ghost.root.visible = state.classical && state.view !== "cabin";
+    if (shadow) shadow.root.visible = state.measured && state.view !== "cabin";
     renderer.render(scene, state.view === "cabin" ? inside : camera);
     rendering = false;
   }
@@ -247,11 +253,13 @@
   const slider = $("time");
   slider.min = t0; slider.max = t1;
   if (C) $("classical-box").hidden = false;
+  if (MM) $("measured-box").hidden = false;
   function legend() {
     $("legend").innerHTML =
       '<span class="swatch" style="background:#e4572e"></span>felt f' +
       `<span class="swatch" style="background:#1e9e47"></span>desired f (1 g = ${state.view === "cabin" ? INSIDE_SCALE : 1} m)` +
-      (C && state.view !== "cabin" ? '<span class="swatch" style="background:#9b59b6"></span>classical loop' : "");
+      (C && state.view !== "cabin" ? '<span class="swatch" style="background:#9b59b6"></span>classical loop' : "") +
+      (MM && state.view !== "cabin" ? '<span class="swatch" style="background:#2a9d8f"></span>measured machine' : "");
   }
   const units = (j) => (D.kinds[j] === "prismatic" ? "m" : "deg");
   function hud(p) {
@@ -356,6 +364,14 @@
       { scales: { x: { time: false }, y: { range: (u, lo, hi) => [0, Math.max(1.1, hi)] } } });
   }
 
+  if (MM) {
+    const series = [], cols = [];
+    D.free.forEach((j, i) => { series.push(solid(j + (D.kinds[j] === "prismatic" ? " [m]" : " [rad]"), JC[D.joints.indexOf(j)] || JC[i])); cols.push(MM.plots.error[j]); });
+    plot(plotsBox, "tracking error: the measured machine less the command", series, cols, 140);
+    plot(plotsBox, "use of the service's tracking tolerance (1 = a fault)", [solid("use", "#2a9d8f"), dashed("fault", "#d62728")],
+      [MM.plots.use, constant(1)], 120, { scales: { x: { time: false }, y: { range: (u, lo, hi) => [0, Math.max(1.1, hi)] } } });
+  }
+
   function sizePlots() {
     for (const p of plots) {
       const w = Math.max(160, p.el.parentElement.clientWidth / (p.parent.className === "grid2" ? 2 : 1) - 8);
@@ -377,6 +393,7 @@
     const p = poseOf(M, state.t);
     pose(main, p);
     if (ghost) pose(ghost, poseOf(C.motion, state.t));
+    if (shadow) pose(shadow, poseOf(MM.motion, state.t));
     slider.value = state.t;
     $("clock").textContent = `${state.t.toFixed(2)} / ${t1.toFixed(2)} s`;
     hud(p);
@@ -412,6 +429,7 @@
   $("speed").addEventListener("change", (e) => { state.speed = Number(e.target.value); });
   $("view").addEventListener("change", (e) => setView(e.target.value));
   $("classical").addEventListener("change", (e) => { state.classical = e.target.checked; show(); });
+  $("measured").addEventListener("change", (e) => { state.measured = e.target.checked; show(); });
   $("loop").addEventListener("change", (e) => { state.loop = e.target.checked; });
   window.addEventListener("keydown", (e) => {
     if (e.key === " " && e.target === document.body) { e.preventDefault(); state.playing ? pause() : play(); }
@@ -432,11 +450,15 @@
 
   // the hook for scripts and tests (see desdemona.view)
   window.desdemonaView = {
-    ready: true, webgl: !!renderer, start: t0, end: t1, samples: M.t.length, hasClassical: !!C,
+    ready: true, webgl: !!renderer, start: t0, end: t1, samples: M.t.length, hasClassical: !!C, hasMeasured: !!MM,
     seek: (t) => seek(t),
-    pose: (which) => { const p = poseOf(which === "classical" && C ? C.motion : M, state.t); return { t: p.t, q: p.q, f: p.f, f_d: p.f_d }; },
+    pose: (which) => {
+      const motion = which === "classical" && C ? C.motion : which === "measured" && MM ? MM.motion : M;
+      const p = poseOf(motion, state.t);
+      return { t: p.t, q: p.q, f: p.f, f_d: p.f_d };
+    },
     cabinMatrix: (which) => {
-      const g = (which === "classical" && ghost ? ghost : main).cabin;
+      const g = (which === "classical" && ghost ? ghost : which === "measured" && shadow ? shadow : main).cabin;
       scene.updateMatrixWorld(true);
       const e = g.matrixWorld.elements;  // column-major
       return [0, 1, 2, 3].flatMap((r) => [0, 1, 2, 3].map((c) => e[4 * c + r]));
@@ -450,5 +472,6 @@
     setSpeed: (x) => { state.speed = Math.min(4, Math.max(0.1, Number(x))); $("speed").value = String(x); return state.speed; },
     setView: setView,
     showClassical: (on) => { state.classical = !!on; $("classical").checked = !!on; show(); },
+    showMeasured: (on) => { state.measured = !!on; $("measured").checked = !!on; show(); return shadow ? shadow.root.visible : false; },
   };
 })();

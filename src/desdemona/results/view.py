@@ -10,7 +10,9 @@ with the occupant's head), sized from the result's machine parameters, with the 
 where the path gives only the modulus). Beside it, on one time cursor: S against S_d per channel (and M
 against M_d), the felt-direction error and the felt rotation against their thresholds
 (:mod:`desdemona.check.metrics`), and each free joint's use of its limits (1 = at a limit). An on-line result's
-classical loop (``classical.csv``) moves as a second, faded machine.
+classical loop (``classical.csv``) moves as a second, faded machine; a served session's measured machine
+(the joints its States reported, ``session.csv``) as a ghosted one beside the commanded, with the
+tracking error in the plots.
 
 three.js (the scene) and uPlot (the plots) are vendored under ``data/vendor`` with their licences and
 inlined, so the page makes no request. The joint positions are kept at the precision of
@@ -19,7 +21,8 @@ trajectory.csv; above :data:`MAX_FRAMES` samples the animation is thinned (the p
 The page exposes ``window.desdemonaView`` for scripts and tests: ``seek(t)``, ``pose()`` (``{t, q:
 {joint: value}}``, linear between samples, so exact at a sample time), ``cabinMatrix()`` (the drawn
 cabin's H_world_cabin, 16 numbers row by row), ``play()``, ``pause()``, ``setSpeed(x)``,
-``setView("orbit" | "cabin")``, ``showClassical(bool)``.
+``setView("orbit" | "cabin")``, ``showClassical(bool)``, ``showMeasured(bool)``; ``pose("measured")``
+and ``cabinMatrix("measured")`` give the measured machine's.
 """
 
 from __future__ import annotations
@@ -47,6 +50,7 @@ from desdemona.support import files
 
 VIEW_FILE = "view.html"
 CLASSICAL_FILE = "classical.csv"  # an on-line result's classical loop, columns as trajectory.csv
+SESSION_FILE = "session.csv"  # a served session's every cycle, the measured machine beside the command
 MAX_FRAMES = 12_000  # animation samples kept; beyond, every k-th (the plots keep all)
 PLOT_DIGITS = 6  # significant digits of plotted values (the joint positions keep full precision)
 LIMIT_KINDS = ("position", "velocity", "acceleration", "effort", "power")
@@ -191,11 +195,47 @@ def _plots(col: dict, summary: dict, joints, baseline: bool = False) -> dict:
     return out
 
 
-def scene_data(col: dict, summary: dict, classical: dict | None = None) -> dict:
+def measured_motion(session: dict, col: dict, summary: dict) -> dict | None:
+    """What the page needs of the measured machine of a served session (``session``: session.csv's
+    columns), on the result's time line (a whole result's starts at its judged span): each State's
+    joint positions at the time it was measured (``measured_at``; a held joint at its place in
+    ``col``), and at those times the tracking error of every free joint (measured less the command
+    there) and the use of the service's tracking tolerance (1 = a fault). None where the session has
+    no State (a machine that sends none)."""
+    joints = list(summary["configuration"]["free_joints"])
+    names = [f"measured_{j}_position" for j in joints]
+    if "measured_at" not in session or any(n not in session for n in names):
+        return None
+    at = session["measured_at"]
+    keep = np.isfinite(at)
+    keep[1:] &= np.diff(at) > 0  # a State logged at several cycles: once, at the time it was measured
+    if not keep.any():
+        return None
+    offset = float(((summary.get("service") or {}).get("judged_span_s") or [0.0])[0])
+    t = at[keep] - offset
+    inside = (t >= col["t"][0] - 1e-9) & (t <= col["t"][-1] + 1e-9)
+    if not inside.any():
+        return None
+    t = t[inside]
+    q, error = {}, {}
+    for j in JOINT_NAMES:
+        if j in joints:
+            q[j] = session[f"measured_{j}_position"][keep][inside]
+            commanded = np.interp(t, session["t"] - offset, session[f"commanded_{j}_position"])
+            error[j] = _Raw(_numbers(np.interp(col["t"], t, q[j] - commanded), PLOT_DIGITS))
+        else:
+            q[j] = np.interp(t, col["t"], col[f"q_{j}"])
+        q[j] = _Raw(_numbers(q[j]))
+    use = np.interp(col["t"], session["t"] - offset, np.nan_to_num(session["tracking_use"]))
+    return {"motion": {"t": _Raw(_numbers(t)), "q": q},
+            "plots": {"error": error, "use": _Raw(_numbers(use, PLOT_DIGITS))}}
+
+
+def scene_data(col: dict, summary: dict, classical: dict | None = None, measured: dict | None = None) -> dict:
     """The page's data: the machine's sizes, the motion to animate and the series to plot.
 
     col, classical : columns of trajectory.csv and of the classical loop's (:func:`desdemona.results.folder.read_table`);
-    summary : the result's summary.json."""
+    summary : the result's summary.json; measured : :func:`measured_motion` of a served session."""
     missing = [n for n in ["t", *(f"q_{j}" for j in JOINT_NAMES)] if n not in col]
     if missing:
         raise ViewError(f"trajectory.csv has no column {missing[0]!r}")
@@ -219,6 +259,8 @@ def scene_data(col: dict, summary: dict, classical: dict | None = None) -> dict:
         every = max(1, math.ceil(len(classical["t"]) / MAX_FRAMES))
         data["classical"] = {"motion": _motion(classical, every, desired=False),
                              "plots": _plots(classical, summary, joints, baseline=True)}
+    if measured is not None:
+        data["measured"] = measured
     return data
 
 
@@ -232,9 +274,9 @@ def _script(text: str) -> str:
     return re.sub(r"</(script)", r"<\\/\1", text, flags=re.IGNORECASE)
 
 
-def page(col: dict, summary: dict, classical: dict | None = None) -> str:
+def page(col: dict, summary: dict, classical: dict | None = None, measured: dict | None = None) -> str:
     """The self-contained HTML page of a result (see the module's notes)."""
-    data = scene_data(col, summary, classical)
+    data = scene_data(col, summary, classical, measured)
     three, uplot, uplot_css = (_asset(name) for name in _VENDOR)
     parts = {"GENERATOR": html.escape(f"desdemona view {__version__}"),  # first: it is the first in the head
              "TITLE": html.escape(f"desdemona: {data['title']}"), "STYLE": uplot_css,
@@ -248,16 +290,42 @@ def page(col: dict, summary: dict, classical: dict | None = None) -> str:
 
 def page_of_folder(folder: str | Path) -> str:
     """:func:`page` of a result folder (its trajectory.csv, summary.json and, where present,
-    classical.csv)."""
+    classical.csv and a served session's session.csv with the measured machine)."""
     folder = Path(folder)
     result_folder.refuse_batch_folder(folder, "view")
     try:
         summary = result_folder.read_summary(folder)
         col = result_folder.read_table(folder / "trajectory.csv")
         classical = result_folder.read_table(folder / CLASSICAL_FILE) if (folder / CLASSICAL_FILE).exists() else None
+        measured = None
+        if (folder / SESSION_FILE).exists() and len(col["t"]):
+            measured = measured_motion(_session_columns(folder / SESSION_FILE), col, summary)
     except ReportError as exc:
         raise ViewError(str(exc)) from None
-    return page(col, summary, classical)
+    return page(col, summary, classical, measured)
+
+
+def _session_columns(file: Path) -> dict[str, np.ndarray]:
+    """The numeric columns of a served session's session.csv (its text columns left out); the rows
+    whole (a row being written when the service was killed is not one yet)."""
+    import csv
+
+    try:
+        with open(file, newline="") as fh:
+            text = fh.read()
+    except OSError as exc:
+        raise ReportError(f"{file}: cannot be read: {exc.strerror or exc}") from None
+    lines = text.splitlines()[: None if text.endswith("\n") else -1]
+    rows = list(csv.reader(lines))
+    if len(rows) < 2:
+        return {}
+    out = {}
+    for i, name in enumerate(rows[0]):
+        try:
+            out[name] = np.array([float(r[i]) for r in rows[1:] if len(r) == len(rows[0])])
+        except ValueError:
+            continue  # a text column (status, command, reason, machine)
+    return out
 
 
 def is_page(path: str | Path) -> bool:
