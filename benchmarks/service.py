@@ -69,6 +69,20 @@ def _desdemona(*args) -> list[str]:
     return [sys.executable, "-m", "desdemona", *map(str, args)]
 
 
+def start_pair(config: str, folder: Path, listen: int, send: int, rate: float, idle: float, *serve_args):
+    """The stand-in (``folder/machine``, ending ``idle`` seconds after the last setpoint) and the service
+    (``folder/served``, no view) on 127.0.0.1, the host's messages to ``listen``, the setpoints to
+    ``send``; each one's output on its stdout (the service's stderr too)."""
+    machine = subprocess.Popen(_desdemona("machine", "--config", config, "--listen", f"127.0.0.1:{send}",
+                                          "--out", folder / "machine", "--idle", idle),
+                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    server = subprocess.Popen(_desdemona("serve", "--config", config, "--listen", f"127.0.0.1:{listen}",
+                                         "--send", f"127.0.0.1:{send}", "--rate", rate, "--out", folder / "served",
+                                         "--overwrite", "--no-view", *serve_args),
+                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    return machine, server
+
+
 def recording(modulus: bool, rate: float) -> Path:
     """The flight imported as ``desdemona import jsbsim`` writes it, at the host's rate (the samples
     the host sends): the reference ``online`` runs on and both are judged against."""
@@ -86,13 +100,7 @@ def serve_run(name: str) -> dict:
     folder = RESULTS / name
     folder.mkdir(parents=True, exist_ok=True)
     listen, send = _port(), _port()
-    machine = subprocess.Popen(_desdemona("machine", "--config", config, "--listen", f"127.0.0.1:{send}",
-                                          "--out", folder / "machine", "--idle", 3),
-                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    server = subprocess.Popen(_desdemona("serve", "--config", config, "--listen", f"127.0.0.1:{listen}",
-                                         "--send", f"127.0.0.1:{send}", "--rate", rate, "--out", folder / "served",
-                                         "--tail-step", tail, "--overwrite", "--quiet-end", 1.0, "--no-view"),
-                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    machine, server = start_pair(config, folder, listen, send, rate, 3, "--tail-step", tail, "--quiet-end", 1.0)
     server.stdout.readline()  # "serving ...": the controller is built (and compiled), the service listens
     host = [*(["--modulus"] if modulus else []),
             *(["--drop", DROP, "--outage", f"{OUTAGE[0]},{OUTAGE[1]}"] if lossy else [])]

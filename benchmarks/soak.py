@@ -47,6 +47,8 @@ from pathlib import Path
 
 import numpy as np
 import tables  # benchmarks/tables.py: the script's own folder is on the path
+import service as service_bench  # benchmarks/service.py: the stand-in and the service started as there
+from service import _port
 
 HERE = Path(__file__).resolve().parent
 RESULTS = HERE / "soak-results"
@@ -57,16 +59,6 @@ RATE = 50.0
 CONFIGS = {"dfs": True, "full": False}  # configuration: the host sends the modulus alone
 LOSS, DUPLICATE, REORDER, JITTER, OUTAGE = 0.20, 0.05, 0.05, 0.030, 2.0
 LOOPBACK = "127.0.0.1"
-
-
-def _port() -> int:
-    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
-        s.bind((LOOPBACK, 0))
-        return s.getsockname()[1]
-
-
-def _desdemona(*args) -> list[str]:
-    return [sys.executable, "-m", "desdemona", *map(str, args)]
 
 
 # ----------------------------------------------------------------------------------------------
@@ -212,15 +204,9 @@ def session(config: str, minutes: float, faults: bool) -> dict:
     modulus, seconds = CONFIGS[config], 60.0 * minutes
     folder = RESULTS / f"{config}-{'faults' if faults else 'steady'}"
     folder.mkdir(parents=True, exist_ok=True)
-    serve_port, machine_port = _port(), _port()
-    machine = subprocess.Popen(_desdemona("machine", "--config", config, "--listen", f"{LOOPBACK}:{machine_port}",
-                                          "--out", folder / "machine", "--idle", 5),
-                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    server = subprocess.Popen(_desdemona("serve", "--config", config, "--listen", f"{LOOPBACK}:{serve_port}",
-                                         "--send", f"{LOOPBACK}:{machine_port}", "--rate", RATE,
-                                         "--out", folder / "served", "--overwrite", "--quiet-end", 8, "--no-view"),
-                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    said = server.stderr.readline()  # "serving ...": built (and compiled), listening
+    serve_port = _port()
+    machine, server = service_bench.start_pair(config, folder, serve_port, _port(), RATE, 5, "--quiet-end", 8)
+    said = server.stdout.readline()  # "serving ...": built (and compiled), listening
     relay = Relay(serve_port, faults)
     relay.start()
     sample = min(60.0, seconds / 30.0)
@@ -245,7 +231,7 @@ def session(config: str, minutes: float, faults: bool) -> dict:
                 k += 1
             time.sleep(0.1)
         host.wait(timeout=120)
-        served_err = server.communicate(timeout=max(3600.0, 2 * seconds))[1]
+        served_out = server.communicate(timeout=max(3600.0, 2 * seconds))[0]
         machine_out = machine.communicate(timeout=600)[0]
     finally:
         for proc in (host, server, machine):
@@ -253,7 +239,7 @@ def session(config: str, minutes: float, faults: bool) -> dict:
                 proc.kill()
                 proc.wait()
         relay.stop()
-    (folder / "serve.txt").write_text(said + (served_err or ""))
+    (folder / "serve.txt").write_text(said + (served_out or ""))
     (folder / "machine.txt").write_text(machine_out or "")
     run = {"config": config, "faults": faults, "minutes": minutes, "rss": rss, "relay": relay.counts,
            "restarts_s": restarts, "served_rc": server.returncode, "machine_rc": machine.returncode,

@@ -49,7 +49,7 @@ def test_a_killed_sessions_folder_is_read_to_its_last_written_cycle(tmp_path, co
     assert summary["live"] and len(traj.t) == written
     assert traj.t[-1] == pytest.approx(rows[written - 1][0])
     # what the rows say is the physics of the commanded motion against what the host asked
-    t, q, qd, qdd, desired = rows[written - 1]
+    _, q, qd, qdd, desired = rows[written - 1]
     assert traj.S[-1] == pytest.approx(model.S(q, qd, qdd), rel=1e-8, abs=1e-9)
     assert traj.tau[-1] == pytest.approx(model.tau(q, qd, qdd), rel=1e-8, abs=1e-9)
     S_d, M_d = desired_of(desired, model.config.aligned)

@@ -36,7 +36,7 @@ from desdemona.results import figures
 from desdemona.results.folder import (RESULT_FILES, RESULT_FORMAT, ReportError, check_out_folder,  # noqa: F401
                                       check_replaceable, empty_folder, foreign_names, is_result_folder, load,
                                       read_summary, read_table, refuse_batch_folder, trajectory_of)
-from desdemona.results.folder import LOCK_SUFFIX, _alive, _lock_holder, lock_path  # noqa: F401
+from desdemona.results.folder import LOCK_SUFFIX, _alive, _lock_holder, lock_path
 from desdemona.support import guard
 
 UNITS = "units: SI (s, rad, m, rad/s, m/s, rad/s^2, m/s^2, N*m, N, W)"

@@ -401,12 +401,10 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
 
 
 def _log(log, session: _Session, state: protocol.MachineState | None, config, host) -> None:
-    """The cycle just recorded, into the session's log as it goes: commanded and measured beside, and
-    what the host's newest message asked for."""
+    """The cycle just recorded, into the log as it goes: commanded, measured, what the host asked."""
     measured = None if state is None else (config.select(state.position), config.select(state.rate),
                                            state.applied_time)
-    start = session.starts[-1]
-    log.cycle(session.rows[-1], (start.q, start.qd, session.u[-1]), measured, session.events,
+    log.cycle(session.rows[-1], (*session.starts[-1][:2], session.u[-1]), measured, session.events,
               None if host is None else host.values)
 
 

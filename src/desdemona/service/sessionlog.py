@@ -6,8 +6,12 @@ from __future__ import annotations
 
 import signal
 from collections import Counter
+from typing import TYPE_CHECKING
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from desdemona.service.livetrajectory import LiveTrajectory
 
 
 def session_table(served) -> str:
@@ -84,7 +88,7 @@ class LiveLog:
     killed leaves them to its last cycle; ``summary.json`` marks the folder as a result of ours being
     written (``"live": true``), so that the session's end replaces it with the whole result."""
 
-    def __init__(self, out, names, result_format: str, trajectory: "LiveTrajectory | None" = None,
+    def __init__(self, out, names, result_format: str, trajectory: LiveTrajectory | None = None,
                  description: dict | None = None):
         import json
         from pathlib import Path
