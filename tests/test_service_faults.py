@@ -43,10 +43,11 @@ class Loop:
     """machine + serve + host replay of ``profile`` on dfs, in ``folder``."""
 
     def __init__(self, folder: Path, profile: str = "dfs-catapult", machine=(), serve=(), config: str = "dfs",
-                 relay=None):
-        """relay: made with the service's port, what the host sends to instead (its ``port``)."""
+                 relay=None, host=()):
+        """relay: made with the service's port, what the host sends to instead (its ``port``); host:
+        more options of ``host replay``."""
         self.folder, self.machine_port, self.serve_port = folder, _port(), _port()
-        self.profile = profile
+        self.profile, self.host_options = profile, list(host)
         folder.mkdir(parents=True, exist_ok=True)  # serve's --out needs its parent; the stand-in's makes it
         self.machine = subprocess.Popen(
             [*RUN, "machine", "--config", config, "--listen", f"{LOOPBACK}:{self.machine_port}",
@@ -66,7 +67,7 @@ class Loop:
 
     def start_host(self) -> subprocess.Popen:
         to = self.serve_port if self.relay is None else self.relay.port
-        return subprocess.Popen([*RUN, "host", "replay", self.profile, "--to", f"{LOOPBACK}:{to}"],
+        return subprocess.Popen([*RUN, "host", "replay", self.profile, "--to", f"{LOOPBACK}:{to}", *self.host_options],
                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
 
     def motion(self) -> list[dict]:
@@ -331,7 +332,7 @@ def test_operator_commands_pause_park_resume_estop_reset_act_and_are_logged(tmp_
     time.sleep(0.4)
     assert loop.motion()[-1]["status"] == "e-stop"  # held until reset
     loop.command("reset", loop.serve_port)
-    until(moving, "the arm moving after the reset")
+    until(lambda s, m: s["status"] == "running" and m["status"] == "following", "following again after the reset")
     loop.end()
     events = [e for e in loop.events("session") if e["what"].startswith("command")]
     assert [e["what"] for e in events] == ["command pause", "command resume", "command park", "command resume",

@@ -118,16 +118,17 @@ def _has(value, keys) -> bool:
     return True
 
 
-def read_table(file: str | Path) -> dict[str, np.ndarray]:
+def read_table(file: str | Path, live: bool = False) -> dict[str, np.ndarray]:
     """The columns by name of a file written as trajectory.csv is (``classical.csv`` too; also by
     earlier versions, with the names in a comment); :class:`ReportError` naming the file if it cannot
-    be read or its rows do not match its names."""
+    be read or its rows do not match its names. ``live``: a file being written as a session goes,
+    whose last line without its end is a row not written yet (a killed service's), left out."""
     file = Path(file)
     try:
         with open(file) as fh:
             text = fh.read()
         lines = text.splitlines()
-        if text and not text.endswith("\n"):  # a row being written (a session's log as it goes): not yet one
+        if live and text and not text.endswith("\n"):  # a row being written: not yet one
             lines = lines[:-1]
         rows = [line for line in lines if line and not line.startswith("#")]
         if rows and rows[0].startswith("t,"):
@@ -181,7 +182,7 @@ def load(out_dir: str | Path) -> tuple[Trajectory, dict]:
     """Read a result folder back: its trajectory and summary."""
     out = Path(out_dir)
     summary = read_summary(out)
-    col = read_table(out / "trajectory.csv")
+    col = read_table(out / "trajectory.csv", live=bool(summary.get("live")))
     joints = summary["configuration"]["free_joints"]
     needed = ["t", "M", "M_d"] + [f"{k}_{j}" for k in ("q", "qd", "qdd", "tau", "power") for j in joints]
     absent = [n for n in needed if n not in col]
@@ -230,7 +231,7 @@ def live_note(out_dir: str | Path) -> str | None:
     if not live:
         return None
     try:
-        t = read_table(out / "trajectory.csv")["t"]
+        t = read_table(out / "trajectory.csv", live=True)["t"]
         reach = f"t = {t[-1]:.3f} s" if len(t) else "its start (no host message answered)"
     except (ReportError, KeyError):
         reach = "its start (no cycle written)"

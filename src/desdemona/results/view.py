@@ -295,7 +295,7 @@ def page_of_folder(folder: str | Path) -> str:
     result_folder.refuse_batch_folder(folder, "view")
     try:
         summary = result_folder.read_summary(folder)
-        col = result_folder.read_table(folder / "trajectory.csv")
+        col = result_folder.read_table(folder / "trajectory.csv", live=bool(summary.get("live")))
         classical = result_folder.read_table(folder / CLASSICAL_FILE) if (folder / CLASSICAL_FILE).exists() else None
         measured = None
         if (folder / SESSION_FILE).exists() and len(col["t"]):
