@@ -51,9 +51,15 @@ RATE_HZ = 25.0
 #: Snapshots kept for the console's thread (about ten seconds at 100 Hz): the oldest go first if it
 #: falls behind; the cycle never waits for it.
 KEPT = 1000
+#: How long the console's thread lets go between the steps of a frame [s]: a sleep lets go of the
+#: interpreter's lock, so that the service's cycle never waits for a whole frame (about a millisecond of
+#: model calls), only for one step.
+YIELD_S = 1e-4
 #: Characters of a made token (URL-safe base64: 32 bytes of randomness).
 TOKEN_BYTES = 32
 MIN_TOKEN = 16
+#: The limits whose use a frame shows, in the order of the 3D replay's.
+USE_KINDS = ("position", "velocity", "acceleration", "effort", "power")
 #: What the page may ask, as the protocol's Command actions.
 ACTIONS = protocol.ACTIONS
 
@@ -137,14 +143,24 @@ class Frames:
         self.vestibular = perception.thesis_model() if vestibular is None else vestibular
         self.filter = self.vestibular.discretize(h)
         self.x = None  # the canals' state
+        self.made: dict | None = None  # the newest frame (steps)
+        # the model's functions and the limits looked up once: a frame is a few calls, not a few lookups
+        self.S_of, self.tau_of = model.functions["S"], model.functions["tau"]
         lim = model.limits
-        self.limits = lim
+        self.bounds = {"velocity": lim.velocity, "acceleration": lim.acceleration, "effort": lim.effort,
+                       "power": lim.power}
+        bounded = np.isfinite(lim.position_max) & np.isfinite(lim.position_min)
+        with np.errstate(invalid="ignore"):  # an unbounded joint's position uses none of a limit
+            self.middle = np.where(bounded, 0.5 * (lim.position_max + lim.position_min), 0.0)
+            self.half = np.where(bounded, 0.5 * (lim.position_max - lim.position_min), np.inf)
+        self.names = model.config.joint_names
         self.thresholds = {"direction_deg": math.degrees(metrics.direction_threshold(self.vestibular.thresholds)),
                            "rotation_deg_s": [math.degrees(x) for x in self.vestibular.thresholds[:3]]}
 
-    def _S(self, snap: Snapshot) -> np.ndarray:
+    def S(self, snap: Snapshot) -> np.ndarray:
+        """(6,) S at the head at the cycle's start (eq. 3.2)."""
         q, qd, _ = snap.state
-        return np.asarray(self.model.S(q, qd, snap.command[0]), float).ravel()
+        return np.asarray(self.S_of(q, qd, snap.command[0]), float).ravel()
 
     @staticmethod
     def desired(snap: Snapshot) -> np.ndarray | None:
@@ -153,15 +169,18 @@ class Frames:
         if snap.host is None:
             return None
         values = np.asarray(snap.host.values, float).ravel()
-        return np.r_[np.zeros(5), values[0]] if len(values) == 1 else values
+        if len(values) == 1:
+            return np.array([0.0, 0.0, 0.0, 0.0, 0.0, values[0]])
+        return values
 
-    def felt_rotation(self, snaps: list[Snapshot]) -> np.ndarray:
-        """(3,) the canals' felt rotation [rad/s] after the cycles ``snaps`` (in order), from the
-        filter's state after the ones before."""
-        u = np.array([self._S(s) for s in snaps])
-        d = np.array([np.zeros(6) if (sd := self.desired(s)) is None else sd for s in snaps])
-        u[:, 3:] = 0.0  # the rotation only: the force channels see no difference (metrics.felt_rotation)
-        u[:, :3] -= d[:, :3]
+    def felt_rotation(self, S: np.ndarray, snaps: list[Snapshot]) -> np.ndarray:
+        """(3,) the canals' felt rotation [rad/s] after the cycles ``snaps`` (in order) whose S (K, 6) is
+        ``S``, from the filter's state after the ones before."""
+        u = np.zeros_like(S)  # the rotation only: the force channels see no difference (metrics.felt_rotation)
+        u[:, :3] = S[:, :3]
+        for k, snap in enumerate(snaps):
+            if snap.host is not None and len(snap.host.values) == 6:
+                u[k, :3] -= snap.host.values[:3]
         y, states = self.filter.simulate(u, self.x)
         self.x = states[-1]
         return y[-1, :3]
@@ -171,34 +190,44 @@ class Frames:
         which (position, velocity, acceleration, effort, power), as the 3D replay shows them."""
         q, qd, _ = snap.state
         qdd = snap.command[0]
-        lim = self.limits
-        tau = np.asarray(self.model.tau(q, qd, qdd), float).ravel()
-        uses = {"velocity": np.abs(qd) / lim.velocity, "acceleration": np.abs(qdd) / lim.acceleration,
-                "effort": np.abs(tau) / lim.effort, "power": np.abs(tau * qd) / lim.power}
-        span = lim.position_max - lim.position_min
-        with np.errstate(invalid="ignore", divide="ignore"):
-            middle = 0.5 * (lim.position_max + lim.position_min)
-            position = np.where(np.isfinite(span), np.abs(q - middle) / (0.5 * span), 0.0)
-        uses = {"position": np.nan_to_num(position), **uses}
-        kinds = list(uses)
-        table = np.vstack([uses[k] for k in kinds])
+        tau = np.asarray(self.tau_of(q, qd, qdd), float).ravel()
+        table = np.vstack([np.abs(q - self.middle) / self.half, np.abs(qd) / self.bounds["velocity"],
+                           np.abs(qdd) / self.bounds["acceleration"], np.abs(tau) / self.bounds["effort"],
+                           np.abs(tau * qd) / self.bounds["power"]])
         worst = np.argmax(table, axis=0)
-        names = self.model.config.joint_names
-        return {name: {"use": _number(table[worst[i], i]), "kind": kinds[worst[i]]} for i, name in enumerate(names)}
+        return {name: {"use": _number(table[worst[i], i]), "kind": USE_KINDS[worst[i]]}
+                for i, name in enumerate(self.names)}
 
     def frame(self, snaps: list[Snapshot]) -> dict:
         """The page's frame after the cycles ``snaps`` (at least one, in order): the newest in full."""
-        rotation = self.felt_rotation(snaps)
+        steps = self.steps(snaps)
+        for _ in steps:
+            pass
+        return self.made
+
+    def steps(self, snaps: list[Snapshot]):
+        """:meth:`frame` made a step at a time (one model call each), as a generator: the console's
+        thread lets the service's cycle run between steps, so that it never waits on the console for
+        longer than one; the frame is then in ``self.made``."""
+        S_all = []
+        for s in snaps:
+            S_all.append(self.S(s))
+            yield
+        S_all = np.array(S_all)
+        rotation = self.felt_rotation(S_all, snaps)
+        yield
+        use = self.use(snaps[-1])
+        yield
         snap = snaps[-1]
         config = self.model.config
-        S = self._S(snap)
+        S = S_all[-1]
         S_d = self.desired(snap)
         q = config.expand(snap.state[0])
         f_d = None if S_d is None else S_d[3:]
         direction = metrics.direction_error(S[3:], f_d)[0]
         row = snap.row
         machine = snap.machine
-        return {
+        self.made = {
             "t": snap.t, "status": row["status"], "command": row["command"], "reason": row["reason"],
             "paused": snap.paused,
             "q": dict(zip(JOINT_NAMES, _numbers(q))),
@@ -209,7 +238,7 @@ class Frames:
             "omega_d": None if S_d is None else _numbers(S_d[:3]), "f_d": None if f_d is None else _numbers(f_d),
             "direction_deg": _number(math.degrees(direction)),
             "rotation_deg_s": _numbers(np.degrees(np.abs(rotation))),
-            "use": self.use(snap),
+            "use": use,
             "latency_ms": _number(1e3 * row["latency_s"]), "compute_ms": _number(1e3 * row["compute_time_s"]),
             "age_ms": _number(1e3 * row["message_age_s"]),
             "host": None if snap.host is None else {"sequence": snap.host.sequence, "time": snap.host.time,
@@ -388,7 +417,9 @@ class Console:
             if not snaps:
                 continue
             try:
-                self.latest = self.frames.frame(snaps)
+                for _ in self.frames.steps(snaps):
+                    await asyncio.sleep(YIELD_S)  # the GIL let go: the service's cycle runs if it waits
+                self.latest = self.frames.made
             except Exception as exc:  # noqa: BLE001 -- the console must never take the session down
                 self.say(f"console: a frame could not be made: {exc}")
                 continue

@@ -377,10 +377,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             sent = clock()
             session.record(k, compute=sent - began, age=np.nan if inbox.arrived is None else began - inbox.arrived,
                            latency=sent - inbox.arrived if answered else np.nan)
-            if log is not None:
-                _log(log, session, link.newest, model.config)
-            if console is not None:
-                console.publish(session, inbox, link)
+            _log(log, console, session, inbox, link, model.config)
             k += 1
             quiet = inbox.arrived is not None and clock() - inbox.arrived > (serving.quiet_end or np.inf)
             if ((stops and (session.status == "parked" or len(stops) > 1))
@@ -395,11 +392,16 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
                   reanchored=session.reanchored, breaks=session.breaks)
 
 
-def _log(log, session: _Session, state: protocol.MachineState | None, config) -> None:
-    """The cycle just recorded, into the session's log as it goes: commanded and measured beside."""
-    measured = None if state is None else (config.select(state.position), config.select(state.rate),
-                                           state.applied_time)
-    log.cycle(session.rows[-1], session.starts[-1][:2], measured, session.events)
+def _log(log, console, session: _Session, inbox: _Inbox, link: MachineLink, config) -> None:
+    """The cycle just recorded, into the session's log as it goes (commanded and measured beside) and
+    handed to the console (each where given)."""
+    state = link.newest
+    if log is not None:
+        measured = None if state is None else (config.select(state.position), config.select(state.rate),
+                                               state.applied_time)
+        log.cycle(session.rows[-1], session.starts[-1][:2], measured, session.events)
+    if console is not None:
+        console.publish(session, inbox, link)
 
 
 def _send(sock: socket.socket, message, to, inbox: _Inbox) -> None:

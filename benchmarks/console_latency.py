@@ -1,0 +1,113 @@
+"""What the operator's console costs the service: the end-to-end latency of served sessions with and
+without ``--console``, with a client reading every frame.
+
+    python benchmarks/console_latency.py [--pairs 3] [--seconds 10] [--work FOLDER]
+
+Each session runs three processes as a user would (docs/guide/serve.md): the stand-in (``desdemona
+machine``), ``desdemona serve --config dfs`` at 50 Hz and ``desdemona host replay`` of the first
+``--seconds`` of ``dfs-catapult`` (100 Hz samples); with the console, a fourth process reads its
+stream as a page would (every frame, 25 a second). Sessions alternate, without then with, ``--pairs``
+times, so that the machine's load falls on both alike. Per session it prints the latency (host message
+received to setpoint sent) median and p99 from the session's summary.json and the frames the client
+read; at the end the median of each kind's p99 and their difference (the console's acceptance: under
+0.2 ms), with the load average before and after.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import socket
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+LOOPBACK = "127.0.0.1"
+RUN = [sys.executable, "-m", "desdemona"]
+# The page's stand-in: reads every frame until the stream closes, prints how many.
+CLIENT = """
+import sys
+from websockets.sync.client import connect
+frames = 0
+with connect(sys.argv[1], open_timeout=60) as ws:
+    for message in ws:
+        frames += 1
+print(frames)
+"""
+
+
+def _port(kind=socket.SOCK_DGRAM) -> int:
+    with socket.socket(socket.AF_INET, kind) as s:
+        s.bind((LOOPBACK, 0))
+        return s.getsockname()[1]
+
+
+def session(work: Path, name: str, profile: Path, console: bool) -> dict:
+    """One served session; its latency figures [ms] and the frames a client read (None without)."""
+    machine_port, serve_port, console_port = _port(), _port(), _port(socket.SOCK_STREAM)
+    stand_in = subprocess.Popen([*RUN, "machine", "--config", "dfs", "--listen", f"{LOOPBACK}:{machine_port}",
+                                 "--out", str(work / f"{name}-machine"), "--idle", "2", "--duration", "120"],
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    extra = ["--console", f"{LOOPBACK}:{console_port}"] if console else []
+    server = subprocess.Popen([*RUN, "serve", "--config", "dfs", "--listen", f"{LOOPBACK}:{serve_port}",
+                               "--send", f"{LOOPBACK}:{machine_port}", "--out", str(work / name), "--horizon", "1",
+                               "--quiet-end", "0.5", "--duration", "120", "--no-view", *extra],
+                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    client = None
+    try:
+        for _ in range(10):
+            line = server.stderr.readline()
+            if "serving" in line or not line:
+                break
+        if console:
+            client = subprocess.Popen([sys.executable, "-c", CLIENT, f"ws://{LOOPBACK}:{console_port}/stream"],
+                                      stdout=subprocess.PIPE, text=True)
+            time.sleep(1.0)
+        subprocess.run([*RUN, "host", "replay", str(profile), "--to", f"{LOOPBACK}:{serve_port}"],
+                       capture_output=True, timeout=120, check=True)
+        server.communicate(timeout=120)
+        frames = int(client.communicate(timeout=30)[0]) if client else None
+        stand_in.communicate(timeout=30)
+    finally:
+        for proc in (client, server, stand_in):
+            if proc is not None and proc.poll() is None:
+                proc.kill()
+    latency = json.loads((work / name / "summary.json").read_text())["service"]["latency_s"]
+    return {"median": 1e3 * latency["median"], "p99": 1e3 * latency["p99"], "frames": frames}
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--pairs", type=int, default=3)
+    parser.add_argument("--seconds", type=float, default=10.0)
+    parser.add_argument("--work", type=Path, default=None)
+    args = parser.parse_args(argv)
+    from desdemona import profiles
+
+    work = args.work or Path(tempfile.mkdtemp(prefix="console-latency-"))
+    work.mkdir(parents=True, exist_ok=True)
+    path = profiles.get_profile("dfs-catapult")
+    keep = path.t <= args.seconds
+    profile = work / "profile.csv"
+    profiles.write_csv(profile, profiles.DesiredPath("catapult", path.t[keep], None, modulus=path.M_d[keep]))
+    before = os.getloadavg()
+    p99 = {False: [], True: []}
+    for k in range(args.pairs):
+        for console in (False, True):
+            name = f"{'with' if console else 'without'}-{k}"
+            figures = session(work, name, profile, console)
+            p99[console].append(figures["p99"])
+            print(f"{name}: latency median {figures['median']:.2f} ms, p99 {figures['p99']:.2f} ms"
+                  + (f", {figures['frames']} frames read" if console else ""), flush=True)
+    without, with_ = statistics.median(p99[False]), statistics.median(p99[True])
+    print(f"p99 (median of {args.pairs}): without the console {without:.2f} ms, with it {with_:.2f} ms, "
+          f"difference {with_ - without:+.2f} ms; load average {before[0]:.1f} before, {os.getloadavg()[0]:.1f} after")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
