@@ -233,15 +233,17 @@ def _script(text: str) -> str:
 
 
 def fill(template: str, script: str, title: str, data: dict) -> str:
-    """The page ``template`` (under ``data/``) with the vendored three.js and uPlot, the machine's
-    drawing (``scene.js``), the page's own ``script`` and its ``data`` (JSON) inlined: a page that makes
-    no request but its own. Also the live console's (:mod:`desdemona.service.console`)."""
+    """The page of ``template`` (its style and markup, under ``data/``) in the shell ``page.html``, with
+    the vendored three.js and uPlot, the machine's drawing (``scene.js``), the page's own ``script``
+    and its ``data`` (JSON) inlined: a page that makes no request but its own. Also the live
+    console's (:mod:`desdemona.service.console`)."""
     three, uplot, uplot_css = (_asset(name) for name in _VENDOR)
     parts = {"GENERATOR": html.escape(f"desdemona view {__version__}"),  # first: it is the first in the head
              "TITLE": html.escape(title), "STYLE": uplot_css, "UPLOT": _script(uplot), "THREE": _script(three),
              "SCENE": _script(_asset("scene.js")), "DATA": _json(data).replace("<", "\\u003c"),
              "VIEW": _script(_asset(script))}
-    text = _asset(template)
+    css, body = _asset(template).split("<!-- markup -->\n", 1)
+    text = _asset("page.html").replace("@@CSS@@", css, 1).replace("@@BODY@@", body, 1)
     for key, value in parts.items():
         text = text.replace(f"@@{key}@@", value, 1)
     return text
