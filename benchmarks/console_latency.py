@@ -2,7 +2,7 @@
 without ``--console``, with a client reading every frame.
 
     python benchmarks/console_latency.py [--pairs 3] [--seconds 10] [--work FOLDER]
-    python benchmarks/console_latency.py --in-process [--blocks 6]
+    python benchmarks/console_latency.py --in-process [--blocks 40]
 
 Each session runs three processes as a user would (docs/guide/serve.md): the stand-in (``desdemona
 machine``), ``desdemona serve --config dfs`` at 50 Hz and ``desdemona host replay`` of the first
@@ -14,10 +14,11 @@ read; at the end the median of each kind's p99 and their difference (the console
 0.2 ms), with the load average before and after.
 
 ``--in-process`` isolates what the console's thread can cost the cycle's thread (they share the
-interpreter's lock) from the machine's load: one process runs a stand-in cycle at 50 Hz (waking at
-its time in a select, as serve does, then 2 ms of model calls, then handing the console its
-snapshot), in blocks of 250 cycles alternately without and with a console streaming to a client in
-another process, and compares the p99 of each cycle's end after its due time.
+interpreter's lock): one process runs a stand-in cycle at 50 Hz (waking at its time in a select, as
+serve does, then 2 ms of model calls, then handing the console its snapshot) beside a console
+streaming to a client in another process, in blocks of 50 cycles alternately with the console idle
+(no snapshot handed) and making frames, and compares the p99 of each cycle's end after its due time;
+it also times every step of the console's frames (the longest a cycle can wait on the console).
 """
 
 from __future__ import annotations
@@ -87,9 +88,10 @@ def session(work: Path, name: str, profile: Path, console: bool) -> dict:
     return {"median": 1e3 * latency["median"], "p99": 1e3 * latency["p99"], "frames": frames}
 
 
-def in_process(blocks: int, cycles: int = 250, h: float = 0.02) -> None:
-    """The cycle's lateness (its work's end after its due time) [ms], p50 and p99, without and with the
-    console, ``blocks`` blocks of ``cycles`` each alternately."""
+def in_process(blocks: int, cycles: int = 50, h: float = 0.02) -> None:
+    """The cycle's lateness (its work's end after its due time) [ms], p50 and p99, with the console
+    idle and with it making frames of the cycle's snapshots, alternately ``blocks`` blocks of
+    ``cycles``; and the longest step of the console's frames (the longest the cycle can wait on it)."""
     import selectors
     from collections import Counter
     from types import SimpleNamespace
@@ -105,46 +107,59 @@ def in_process(blocks: int, cycles: int = 250, h: float = 0.02) -> None:
     rng = np.random.default_rng(1)
     n = model.n
     late = {False: [], True: []}
+    steps = []
+    live = console.Console(model, h, (LOOPBACK, 0))
+    steps_of = live.frames.steps
+
+    def timed(snaps):  # each step of the console's frames timed, as the console's thread runs them
+        made = steps_of(snaps)
+        while True:
+            began = time.perf_counter()
+            try:
+                next(made)
+            except StopIteration:
+                return
+            finally:
+                steps.append(time.perf_counter() - began)
+            yield
+
+    live.frames.steps = timed
+    live.start()
+    client = subprocess.Popen([sys.executable, "-c", CLIENT, f"ws://{LOOPBACK}:{live.address[1]}/stream"],
+                              stdout=subprocess.PIPE, text=True)
+    time.sleep(1.0)
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as idle:
         idle.bind((LOOPBACK, 0))
         selector = selectors.DefaultSelector()
         selector.register(idle, selectors.EVENT_READ)
-        for b in range(blocks):
-            on = b % 2 == 1
-            live = console.Console(model, h, (LOOPBACK, 0)) if on else None
-            client = None
+        start = time.monotonic() + h
+        for k in range(blocks * cycles):
+            on = (k // cycles) % 2 == 1
+            due = start + k * h
+            while (wait := due - time.monotonic()) > 0:
+                selector.select(wait)
+            state = State(rng.uniform(-1, 1, n), rng.uniform(-1, 1, n), rng.uniform(-1, 1, n))
+            spent = time.monotonic()
+            while time.monotonic() - spent < 0.002:  # the controller's model calls
+                S(state[0], state[1], state[2])
+            late[on].append(time.monotonic() - due)
             if on:
-                live.start()
-                client = subprocess.Popen([sys.executable, "-c", CLIENT, f"ws://{LOOPBACK}:{live.address[1]}/stream"],
-                                          stdout=subprocess.PIPE, text=True)
-                time.sleep(1.0)
-            start = time.monotonic() + h
-            for k in range(cycles):
-                due = start + k * h
-                while (wait := due - time.monotonic()) > 0:
-                    selector.select(wait)
-                state = State(rng.uniform(-1, 1, n), rng.uniform(-1, 1, n), rng.uniform(-1, 1, n))
-                spent = time.monotonic()
-                while time.monotonic() - spent < 0.002:  # the controller's model calls
-                    S(state[0], state[1], state[2])
-                late[on].append(time.monotonic() - due)
-                if on:
-                    row = {"t": k * h, "status": "running", "command": "plan", "reason": "", "latency_s": 0.004,
-                           "compute_time_s": 0.002, "message_age_s": 0.001, "machine": "", "tracking_use": np.nan}
-                    live.publish(SimpleNamespace(rows=[row], starts=[state], command=(state[2], np.zeros(n)),
-                                                 paused=None),
-                                 SimpleNamespace(newest=protocol.Motion(k + 1, k * h, np.array([12.0])), t=[0.0],
-                                                 dropped=Counter()),
-                                 SimpleNamespace(newest=None, dropped=Counter()))
-            if on:
-                live.close("the block ended")
-                frames = client.communicate(timeout=30)[0].strip()
-                print(f"block {b}: the console sent {live.sent} frames, the client read {frames}", flush=True)
+                row = {"t": k * h, "status": "running", "command": "plan", "reason": "", "latency_s": 0.004,
+                       "compute_time_s": 0.002, "message_age_s": 0.001, "machine": "", "tracking_use": np.nan}
+                live.publish(SimpleNamespace(rows=[row], starts=[state], command=(state[2], np.zeros(n)), paused=None),
+                             SimpleNamespace(newest=protocol.Motion(k + 1, k * h, np.array([12.0])), t=[0.0],
+                                             dropped=Counter()),
+                             SimpleNamespace(newest=None, dropped=Counter()))
+    live.close("the measurement ended")
+    frames = client.communicate(timeout=30)[0].strip()
+    print(f"the console sent {live.sent} frames, the client read {frames}")
     for on in (False, True):
         x = 1e3 * np.array(late[on])
-        print(f"{'with' if on else 'without'} the console: the cycle's end after its due time median "
-              f"{np.median(x):.3f} ms, p99 {np.percentile(x, 99):.3f} ms ({len(x)} cycles)")
-    print(f"load average {os.getloadavg()[0]:.1f}")
+        print(f"{'making frames' if on else 'idle'}: the cycle's end after its due time median {np.median(x):.3f} ms, "
+              f"p99 {np.percentile(x, 99):.3f} ms ({len(x)} cycles)")
+    x = 1e3 * np.array(steps)
+    print(f"the console's steps: median {np.median(x):.3f} ms, p99 {np.percentile(x, 99):.3f} ms, "
+          f"longest {x.max():.3f} ms ({len(x)} steps); load average {os.getloadavg()[0]:.1f}")
 
 
 def main(argv=None) -> int:
@@ -153,7 +168,7 @@ def main(argv=None) -> int:
     parser.add_argument("--seconds", type=float, default=10.0)
     parser.add_argument("--work", type=Path, default=None)
     parser.add_argument("--in-process", action="store_true", dest="in_process")
-    parser.add_argument("--blocks", type=int, default=6)
+    parser.add_argument("--blocks", type=int, default=40)
     args = parser.parse_args(argv)
     if args.in_process:
         in_process(args.blocks)

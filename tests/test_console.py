@@ -194,7 +194,7 @@ def _until(condition, seconds: float, what: str, browser=None):
 def test_the_console_shows_the_session_and_parks_the_machine(browser, model, tmp_path):
     machine_port, serve_port, console_port = _free_port(), _free_port(), _free_port(socket.SOCK_STREAM)
     path = profiles.get_profile("dfs-catapult")
-    keep = path.t <= 5.0
+    keep = path.t <= 3.5
     short = tmp_path / "short.csv"
     profiles.write_csv(short, profiles.DesiredPath("short", path.t[keep], None, modulus=path.M_d[keep]))
     run = [sys.executable, "-m", "desdemona"]
