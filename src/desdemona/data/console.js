@@ -147,7 +147,9 @@
       }
       rows += `<tr><td>${j}</td><td align="right">${v(m.q[j])}</td><td align="right">${m.measured ? v(m.measured.q[j]) : "-"}</td><td>${use}</td></tr>`;
     }
-    return `<table>${rows}</table>`;
+    const when = m.measured && m.measured.applied_time !== null
+      ? `measured: where the machine was at t = ${m.measured.applied_time.toFixed(2)} s (its newest State)` : "measured: no State";
+    return `<table>${rows}</table><div>${when}</div>`;
   }
   function hostHtml(m) {
     if (!m.host) return "no host message yet";
