@@ -287,3 +287,24 @@ def test_the_console_shows_the_session_and_parks_the_machine(browser, model, tmp
             hosts.add(urlsplit(url).netloc)
     assert hosts == {f"{LOOPBACK}:{console_port}"}, hosts
 
+
+
+def test_serve_says_a_bad_console_in_one_line_and_exits_2(tmp_path, capsys):
+    """A token file others may read, a port in use: one line naming the option, exit 2, before the
+    session (nothing but the claimed folder's log is begun)."""
+    from desdemona.cli import main
+
+    token = tmp_path / "token"
+    token.write_text("a1b2c3d4e5f6a7b8c9d0e1f2a3b4c5d6\n")
+    token.chmod(0o644)
+    serving = ["serve", "--config", "dfs", "--listen", f"{LOOPBACK}:{_free_port()}", "--send",
+               f"{LOOPBACK}:{_free_port()}", "--duration", "1"]
+    assert main([*serving, "--out", str(tmp_path / "a"), "--console", "0.0.0.0:8765", "--console-token", str(token)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--console-token" in err and "chmod 600" in err, err
+    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as taken:
+        taken.bind((LOOPBACK, 0))
+        taken.listen()
+        assert main([*serving, "--out", str(tmp_path / "b"), "--console", f"{LOOPBACK}:{taken.getsockname()[1]}"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--console" in err and "in use" in err, err
