@@ -122,6 +122,26 @@ def test_the_use_of_a_limit_is_one_at_the_limit(model):
     assert use["cabin"]["kind"] in ("acceleration", "effort", "power") and use["cabin"]["use"] >= 0.5 - 1e-12
 
 
+def test_without_a_token_only_a_loopback_name_reaches_the_console(model):
+    """A site's name made to resolve to this computer (DNS rebinding) does not reach the page nor the
+    stream of a console without a token."""
+    from websockets.exceptions import InvalidStatus
+    from websockets.sync.client import connect
+
+    with console.Console(model, H, (LOOPBACK, 0)) as live:
+        port = live.address[1]
+        request = urllib.request.Request(f"http://{LOOPBACK}:{port}/", headers={"Host": f"evil.example:{port}"})
+        with pytest.raises(urllib.error.HTTPError, match="403"):
+            urllib.request.urlopen(request, timeout=5)
+        with socket.create_connection((LOOPBACK, port), timeout=5) as sock, pytest.raises(InvalidStatus, match="403"):
+            connect(f"ws://evil.example:{port}/stream", sock=sock, origin=f"http://evil.example:{port}",
+                    open_timeout=5).close()
+        for host in (f"{LOOPBACK}:{port}", f"localhost:{port}"):
+            request = urllib.request.Request(f"http://{LOOPBACK}:{port}/", headers={"Host": host})
+            with urllib.request.urlopen(request, timeout=5) as page:
+                assert page.status == 200
+
+
 def test_the_stream_needs_the_token_and_this_host_s_page_and_takes_only_known_commands(model):
     """With a token: the page and the stream are refused without it; a stream opened from another
     site's page is refused; a command is queued with who sent it; an unknown one is refused."""

@@ -16,8 +16,9 @@ session live and takes the operator's pause, park, resume, emergency stop and re
   (only this computer reaches it); bound to any other address it needs one, read from a file only its
   owner may read, or made at start and printed with the page's address; the page, its stream and so
   every operator command then need it (``?token=``). A stream opened from another site's page (its
-  Origin is not this host) is refused, so a web page elsewhere cannot command the machine through the
-  operator's browser.
+  Origin is not this host) is refused, and without a token a request that names another host than a
+  loopback one (a site's name made to resolve to this computer), so that a web page elsewhere cannot
+  command the machine through the operator's browser.
 - **The end.** :meth:`Console.close` sends the page why the session ended and closes the stream; the
   page says so and disables its buttons (as it does when the stream breaks).
 """
@@ -94,6 +95,15 @@ def is_loopback(host: str) -> bool:
     try:
         return ipaddress.ip_address(socket.gethostbyname(host)).is_loopback
     except (OSError, ValueError):
+        return False
+
+
+def _names_loopback(host: str) -> bool:
+    """Whether a request's Host names this computer's loopback as written (never looked up: a site's
+    name may be made to resolve to it)."""
+    try:
+        return host == "localhost" or ipaddress.ip_address(host).is_loopback
+    except ValueError:
         return False
 
 
@@ -363,11 +373,18 @@ class Console:
         from websockets.http11 import Response
 
         path = urlsplit(request.path).path
+        named = request.headers.get_all("Host")
+        netloc = named[0] if len(named) == 1 else ""  # none, or several: no host of ours
+        host = urlsplit("//" + netloc).hostname or ""
+        if self.token is None and not _names_loopback(host):
+            # a name of another site that resolved to this computer (DNS rebinding): not this page's
+            return connection.respond(403, "open the console by its loopback address, e.g. 127.0.0.1\n")
         if not self._allowed(request):
             return connection.respond(403, "the console needs its token: open the address it printed at start\n")
         if path == "/stream":
-            origin = request.headers.get("Origin")
-            if origin is not None and urlsplit(origin).netloc != request.headers.get("Host"):
+            origins = request.headers.get_all("Origin")
+            origin = origins[0] if len(origins) == 1 else (None if not origins else "")
+            if origin is not None and urlsplit(origin).netloc != netloc:
                 return connection.respond(403, "a stream for this host's own page only\n")
             return None  # the WebSocket handshake goes on
         if path != "/":
