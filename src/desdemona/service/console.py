@@ -59,6 +59,9 @@ YIELD_S = 1e-4
 #: Characters of a made token (URL-safe base64: 32 bytes of randomness).
 TOKEN_BYTES = 32
 MIN_TOKEN = 16
+#: What the page may load and reach: its own inlined code and style, and its host's stream, nothing else.
+POLICY = ("default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; img-src data:; "
+          "connect-src 'self'")
 #: The limits whose use a frame shows, in the order of the 3D replay's.
 USE_KINDS = ("position", "velocity", "acceleration", "effort", "power")
 #: What the page may ask, as the protocol's Command actions.
@@ -390,9 +393,7 @@ class Console:
         if path != "/":
             return connection.respond(404, "the console has one page: /\n")
         headers = Headers([("Content-Type", "text/html; charset=utf-8"), ("Cache-Control", "no-store"),
-                           ("Content-Security-Policy", "default-src 'none'; script-src 'unsafe-inline'; "
-                            "style-src 'unsafe-inline'; img-src data:; connect-src 'self'"),
-                           ("Content-Length", str(len(self.html)))])
+                           ("Content-Security-Policy", POLICY), ("Content-Length", str(len(self.html)))])
         return Response(200, "OK", headers, self.html)
 
     async def _client(self, websocket) -> None:
