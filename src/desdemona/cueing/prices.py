@@ -1,0 +1,378 @@
+"""The price of every limit: what the felt error would gain if a limit of the machine moved (thesis 3.2, 3.4, 4.2).
+
+The off-line problem keeps every limit of eq. 3.3-3.5 (discretised as eq. 4.2) as a hard constraint
+on its nodes and sub-step points. At an optimum each constraint that binds carries a multiplier: the
+rate at which the optimal cost J would change if its bound moved (the sensitivity theorem of
+nonlinear programming: dJ/db = -lambda for the bound b that is active, in CasADi's sign convention,
+lambda > 0 at an upper bound, < 0 at a lower one). A limit of the machine sets many bounds at once,
+one per node or sub-step point, some of them backed off by terms that depend on another limit (a
+position bound by A h^2 / 8, a rate bound by J h^2 / 8, :meth:`~desdemona.cueing.transcription.CueingProblem._bounds`),
+so its price sums the multipliers of every bound it sets, each times that bound's derivative.
+
+Definitions (per limit family and free joint):
+
+- the relaxation: the limit L raised by 10 %, L -> 1.1 L (a position range [lo, hi] widened by 10 % of
+  its half-range at both ends; torque and power: the constraint tau / tau_max <= 1 becomes <= 1.1);
+- ``cost_slope``: dJ/d(epsilon) at epsilon = 0 for L -> (1 + epsilon) L, from the multipliers;
+- the felt error E = sqrt(J): the optimiser's cost is the time mean of the weighted squared felt
+  error (eq. 3.6, 5.1; with a perception model of the perceived error, chapter 6; on ``dfs-yaw`` of the
+  modulus error, eq. 7.3) plus a small regularisation, so E is the weighted RMS the optimiser sees;
+- ``price``: the first-order fall of E when the limit is relaxed by 10 %,
+  ``price = -0.1 * cost_slope / (2 E)`` [the unit of the felt error: m/s^2 of weighted RMS]. Positive
+  where relaxing helps; zero where the limit never binds; it may be slightly negative for a limit
+  that also sets a back-off (a larger acceleration limit backs the positions off further);
+- where in time it binds: the spans of the grid whose bounds carry a multiplier of at least
+  :data:`BINDS` times the cost, each node or sub-step point standing for the half-steps around it,
+  each jerk (the control of an interval) for its interval.
+
+The held positions of the joints a configuration holds (``held_position``): the price of moving the
+held joint by 10 % of its half-travel (or 18 deg, a tenth of half a turn, where it has no travel),
+signed: positive where moving it up (to larger q) lowers the felt error. The held position is a
+constant of the model functions, not a bound: its derivative is that of the Lagrangian at the
+optimum (the envelope theorem), taken by a central difference of the problem's own stage and
+terminal functions rebuilt with the held position moved (:func:`held_slopes`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from desdemona.machine.configs import Configuration
+from desdemona.machine.params import JOINT_NAMES, MachineParams
+
+#: The families of limits, as summary.json names them (eq. 3.3-3.5, the jerk of the smooth plans).
+FAMILIES = ("position", "rate", "acceleration", "jerk", "torque", "power")
+HELD = "held_position"
+#: The relaxation a price is quoted for: 10 % of the limit.
+RELAXATION = 0.1
+#: A bound binds where its multiplier's share of the cost slope is at least this share of the cost J.
+BINDS = 1e-6
+#: The step of a held position's central difference, as a share of the move a price is quoted for.
+HELD_STEP = 1e-3
+
+
+@dataclass(frozen=True)
+class LimitPrice:
+    """One limit's price. family : one of :data:`FAMILIES` or ``held_position``; joint : its name;
+    limit : the limit [SI] (a position: its half-range; held: the held position); cost_slope :
+    dJ/d(epsilon); price : the felt error's first-order fall per 10 % [m/s^2]; spans : ((from, to), ...)
+    [s] where it binds."""
+
+    family: str
+    joint: str
+    limit: float
+    cost_slope: float
+    price: float
+    spans: tuple[tuple[float, float], ...] = ()
+
+    @property
+    def binds_s(self) -> float:
+        """How long it binds [s]."""
+        return float(sum(b - a for a, b in self.spans))
+
+    def to_dict(self) -> dict:
+        return {"price": self.price, "binds_s": self.binds_s, "binds_from_s": [a for a, _ in self.spans],
+                "binds_to_s": [b for _, b in self.spans], "limit": self.limit, "cost_slope": self.cost_slope}
+
+
+@dataclass(frozen=True)
+class LimitPrices:
+    """Every limit's price of one off-line optimum. cost : J; felt_error : sqrt(J); duration [s]."""
+
+    prices: tuple[LimitPrice, ...]
+    cost: float
+    felt_error: float
+    duration: float
+
+    def to_dict(self) -> dict:
+        """``{family: {joint: {"price", "binds_s", "binds_from_s", "binds_to_s", "limit", "cost_slope"}}}``,
+        the ``limit_prices`` of summary.json."""
+        out: dict = {}
+        for p in self.prices:
+            out.setdefault(p.family, {})[p.joint] = p.to_dict()
+        return out
+
+    def ranked(self) -> list[LimitPrice]:
+        """The prices from the dearest limit down."""
+        return sorted(self.prices, key=lambda p: -abs(p.price))
+
+    def table(self, rows: int = 8) -> list[str]:
+        """The dearest ``rows`` limits that bind, one line each, for the printed result."""
+        lines = []
+        for p in self.ranked()[:rows]:
+            if p.price == 0.0 and not p.spans:
+                break
+            share = p.binds_s / self.duration if self.duration > 0 else 0.0
+            if p.family == HELD:  # signed: moved up (to a larger position), or down where negative
+                lines.append(f"{p.family:>13} {p.joint:<13} {p.price:+9.4f} m/s^2 per 10 % moved up, held at {p.limit:g}")
+                continue
+            lines.append(f"{p.family:>13} {p.joint:<13} {p.price:+9.4f} m/s^2 per 10 %, binds "
+                         f"{p.binds_s:6.2f} s ({share:4.0%}) in {len(p.spans)} span{'s' * (len(p.spans) != 1)}")
+        return lines
+
+
+def limit_prices(problem, solution, held: bool = True) -> LimitPrices | None:
+    """Every limit's price (module docstring) at ``solution`` of ``problem`` (a
+    :class:`~desdemona.cueing.transcription.CueingProblem`), from its multipliers; None where the
+    solution has none. ``held``: also the held positions' (:func:`held_slopes`)."""
+    if solution.lam_x is None or solution.lam_g is None:
+        return None
+    terms = _variable_terms(problem, np.asarray(solution.lam_x)) + _constraint_terms(problem, np.asarray(solution.lam_g))
+    cost = float(solution.cost)
+    error = math.sqrt(max(cost, 0.0))
+    scale = RELAXATION / (2.0 * error) if error > 0 else 0.0
+    lim, names = problem.model.limits, problem.model.config.joint_names
+    values = {"position": 0.5 * (lim.position_max - lim.position_min), "rate": lim.velocity,
+              "acceleration": lim.acceleration, "jerk": lim.jerk, "torque": lim.effort, "power": lim.power}
+    prices, explicit = [], _cost_terms(problem, solution)
+    span = (float(problem.t_nodes[0]), float(problem.t_nodes[-1]))
+    for family in FAMILIES:
+        for j, name in enumerate(names):
+            if not np.isfinite(values[family][j]):
+                continue
+            parts = [t for t in terms if t[0] == family and t[1] == j]
+            c = np.concatenate([t[2] for t in parts]) if parts else np.zeros(0)
+            lo = np.concatenate([t[3] for t in parts]) if parts else np.zeros(0)
+            hi = np.concatenate([t[4] for t in parts]) if parts else np.zeros(0)
+            slope = float(np.sum(c)) + explicit.get((family, j), 0.0)
+            binding = np.abs(c) >= BINDS * max(cost, 1e-12)
+            prices.append(LimitPrice(family, name, float(values[family][j]), slope, -slope * scale,
+                                     _merged(lo[binding], hi[binding], *span)))
+    if held:
+        for joint, slope, move, position in held_slopes(problem, solution):
+            prices.append(LimitPrice(HELD, JOINT_NAMES[joint], position, slope, -slope * scale))
+    return LimitPrices(tuple(prices), cost, error, float(problem.t_nodes[-1] - problem.t_nodes[0]))
+
+
+def _cost_terms(problem, solution) -> dict:
+    """{(family, joint): dJ/d(epsilon)} of the cost's own dependence on the limits (the envelope
+    theorem's explicit part): the regularisation weighs each acceleration against its limit and each
+    jerk against its own (:meth:`~desdemona.cueing.formulation.Formulation._residuals`), so a term
+    c (u / L)^2 changes by -2 c per unit epsilon; the wall before the position limits
+    (:attr:`~desdemona.cueing.formulation.ProblemOptions.wall`) moves and widens with the range, by a
+    central difference of the Lagrangian (:func:`_lagrangian`)."""
+    lim, o, n = problem.model.limits, problem.options, problem.model.n
+    weights = problem.steps[:, None] / problem.path.duration
+    accelerations = solution.x[:-1, 2 * n:3 * n] if problem.smooth else solution.u
+    terms = {}
+    for j in range(n):
+        terms[("acceleration", j)] = -2.0 * o.regularisation * float(np.sum(weights[:, 0] * (accelerations[:, j] / lim.acceleration[j]) ** 2))
+        if problem.smooth:
+            terms[("jerk", j)] = -2.0 * problem.jerk_weight * float(np.sum(weights[:, 0] * (solution.u[:, j] / lim.jerk[j]) ** 2))
+    if o.wall > 0:
+        from desdemona.cueing.formulation import Formulation
+
+        for j in lim.bounded:
+            name = problem.model.config.joint_names[j]
+            values = [_lagrangian(Formulation(relaxed(problem.model, "position", name, sign * HELD_STEP), problem.path,
+                                              o), problem, solution) for sign in (1.0, -1.0)]
+            terms[("position", j)] = (values[0] - values[1]) / (2 * HELD_STEP)
+    return terms
+
+
+def _contribution(lam, d_lower, d_upper):
+    """-dJ/d(epsilon) share of each bound: the multiplier of the side that is active times its bound's
+    derivative (CasADi: lambda > 0 at the upper bound, < 0 at the lower)."""
+    return -(np.maximum(lam, 0.0) * d_upper + np.minimum(lam, 0.0) * d_lower)
+
+
+def _variable_terms(problem, lam_x) -> list:
+    """(family, joint, contributions, from, to) of the bounds on the variables: positions, rates,
+    accelerations at the nodes and the controls (jerks, or accelerations without jerk limits), each
+    with the back-offs other limits set; entries the start or end fixes (lbx = ubx) are no limits."""
+    n, N, nx, m = problem.model.n, problem.N, problem.nx, problem.m
+    nw, lim, steps = nx + problem.nu, problem.model.limits, problem.steps
+    h = problem.node_steps()
+    t = problem.t_nodes
+    node_lo, node_hi = t - 0.5 * np.r_[0.0, steps], t + 0.5 * np.r_[steps, 0.0]
+    free = problem.lbx != problem.ubx
+    nodes, intervals = np.arange(N + 1) * nw, np.arange(N) * nw + nx
+    terms = []
+
+    def add(family, j, index, d, lo, hi, back=None):
+        ones = np.ones(len(index))
+        lam = np.where(free[index], lam_x[index], 0.0)
+        terms.append((family, j, _contribution(lam, -d * ones, d * ones), lo, hi))
+        if back is not None:  # (family, the bound's derivative toward the inside)
+            terms.append((back[0], j, _contribution(lam, back[1], -back[1]), lo, hi))
+
+    half = 0.5 * (lim.position_max - lim.position_min)
+    for j in range(n):
+        if j in lim.bounded:  # position bounds, backed off by A (h / m)^2 / 8
+            add("position", j, nodes + j, half[j], node_lo, node_hi, ("acceleration", lim.acceleration[j] * (h / m) ** 2 / 8))
+        if problem.smooth:
+            add("rate", j, nodes + n + j, lim.velocity[j], node_lo, node_hi, ("jerk", lim.jerk[j] * h ** 2 / 8))
+            add("acceleration", j, nodes + 2 * n + j, lim.acceleration[j], node_lo, node_hi)
+            add("jerk", j, intervals + j, lim.jerk[j], t[:-1], t[1:])
+        else:
+            add("rate", j, nodes + n + j, lim.velocity[j], node_lo, node_hi)
+            add("acceleration", j, intervals + j, lim.acceleration[j], t[:-1], t[1:])
+    return terms
+
+
+def _constraint_terms(problem, lam_g) -> list:
+    """(family, joint, contributions, from, to) of the path constraints, stage by stage (the layout
+    of :meth:`~desdemona.cueing.transcription.CueingProblem._build_nlp`), and of the terminal node."""
+    n, N, nx, m = problem.model.n, problem.N, problem.nx, problem.m
+    lim, steps, t = problem.model.limits, problem.steps, problem.t_nodes
+    bounded = np.asarray(lim.bounded, dtype=int)
+    half = 0.5 * (lim.position_max - lim.position_min)
+    stride = nx + problem.n_path
+    starts = problem.n_initial + np.arange(N) * stride + nx  # each stage's first path row
+    h_node = problem.node_steps()
+    terms, offset = [], 0
+    for family in problem.families:
+        rows = family.expression.numel()
+        index = starts[:, None] + offset + np.arange(rows)[None, :]  # (N, rows)
+        lam = lam_g[index]
+        r = np.arange(rows)
+        if family.name == "position":  # inner sub-step points, backed off by A (h_k / m)^2 / 8
+            joints = bounded[r % len(bounded)]
+            at = t[:-1, None] + steps[:, None] * (1 + r // len(bounded))[None, :] / m
+            width = (steps / (2 * m))[:, None]
+            _bound_terms(terms, "position", joints, lam, half[joints], at - width, at + width,
+                         ("acceleration", lim.acceleration[joints] * (steps[:, None] / m) ** 2 / 8))
+        elif family.name == "stopping":  # where each bounded joint stops, from the interval's end
+            joints = bounded[r % len(bounded)]
+            lo, hi = np.broadcast_to((t[1:] - 0.5 * steps)[:, None], lam.shape), np.broadcast_to(
+                (t[1:] + 0.5 * np.r_[steps[1:], 0.0])[:, None], lam.shape)
+            _bound_terms(terms, "position", joints, lam, half[joints], lo, hi,
+                         ("acceleration", lim.acceleration[joints] * (h_node[1:, None] / m) ** 2 / 8))
+        elif family.name == "rate":  # the rate a joint settles at
+            joints = r % n
+            at = np.broadcast_to(t[1:, None], lam.shape)
+            _bound_terms(terms, "rate", joints, lam, lim.velocity[joints], at, at)
+        else:  # torque and power over their limits at the sub-step points: relaxed, the bound 1 -> 1 + epsilon
+            joints, points = r % n, r // n
+            at = t[:-1, None] + steps[:, None] * problem.fractions[points][None, :]
+            width = (steps / (2 * m))[:, None]
+            _bound_terms(terms, "torque" if family.name == "effort" else "power", joints, lam,
+                         np.ones(rows), at - width, at + width)
+        offset += rows
+    if problem.n_terminal:  # the last node's torques, then powers
+        end = problem.n_initial + N * stride
+        lam = lam_g[end:end + problem.n_terminal][None, :]
+        r = np.arange(problem.n_terminal)
+        at = np.full((1, problem.n_terminal), t[-1])
+        names = np.where(r < n, "torque", "power")
+        for family in ("torque", "power"):
+            keep = names == family
+            _bound_terms(terms, family, r[keep] % n, lam[:, keep], np.ones(keep.sum()), at[:, keep] - 0.5 * steps[-1] / m,
+                         at[:, keep])
+    return terms
+
+
+def _bound_terms(terms, family, joints, lam, d, lo, hi, back=None) -> None:
+    """Append (family, joint, ...) terms of rows (N, rows) bounded symmetrically, the bound moving by
+    ``d`` (rows,) per unit epsilon; ``back`` = (family, (N, rows) the back-off's derivative)."""
+    lo, hi = np.broadcast_to(lo, lam.shape), np.broadcast_to(hi, lam.shape)
+    shares = _contribution(lam, -np.broadcast_to(d, lam.shape), np.broadcast_to(d, lam.shape))
+    backs = None if back is None else _contribution(lam, np.broadcast_to(back[1], lam.shape),
+                                                    -np.broadcast_to(back[1], lam.shape))
+    for j in np.unique(joints):
+        cols = joints == j
+        terms.append((family, int(j), shares[:, cols].ravel(), lo[:, cols].ravel(), hi[:, cols].ravel()))
+        if backs is not None:
+            terms.append((back[0], int(j), backs[:, cols].ravel(), lo[:, cols].ravel(), hi[:, cols].ravel()))
+
+
+def _merged(lo, hi, start: float, end: float) -> tuple[tuple[float, float], ...]:
+    """The union of the spans [lo_i, hi_i] within [start, end], as sorted disjoint (from, to) pairs."""
+    if lo.size == 0:
+        return ()
+    order = np.argsort(lo)
+    spans: list[list[float]] = []
+    for a, b in zip(np.clip(lo[order], start, end), np.clip(hi[order], start, end)):
+        if spans and a <= spans[-1][1] + 1e-9:
+            spans[-1][1] = max(spans[-1][1], float(b))
+        else:
+            spans.append([float(a), float(b)])
+    return tuple((round(a, 9), round(b, 9)) for a, b in spans)
+
+
+def relaxed(model, family: str, joint: str, share: float):
+    """The model with one limit relaxed by ``share`` (0.01: 1 %) as :func:`limit_prices` quotes it: the
+    limit times 1 + share, a position range widened by ``share`` of its half-range at both ends, a
+    held position moved up by ``share`` / 10 % of its move (:func:`held_moves`). For the finite
+    differences that check the prices."""
+    from desdemona.machine.model import Model
+
+    params, config = model.params, model.config
+    index = JOINT_NAMES.index(joint)
+    if family == HELD:
+        move = dict(held_moves(config, params))[index]
+        fixed = list(config.fixed)
+        fixed[index] += share / RELAXATION * move
+        return Model(params, dataclasses.replace(config, fixed=tuple(fixed)))
+    limits = params.joints[index]
+    if family == "position":
+        lo, hi = limits.position
+        widen = share * 0.5 * (hi - lo)
+        changed = dataclasses.replace(limits, position=(lo - widen, hi + widen))
+    else:
+        field = {"rate": "velocity", "torque": "effort"}.get(family, family)
+        changed = dataclasses.replace(limits, **{field: getattr(limits, field) * (1.0 + share)})
+    joints = tuple(changed if i == index else j for i, j in enumerate(params.joints))
+    return Model(dataclasses.replace(params, joints=joints), config)
+
+
+# ----------------------------------------------------------------------------------------------
+# the held positions
+
+
+def held_moves(config: Configuration, params: MachineParams) -> list[tuple[int, float]]:
+    """(joint, move) of each held joint: 10 % of its half-travel, or a tenth of half a turn [rad]
+    where it has no travel."""
+    moves = []
+    for joint in sorted(config.held):
+        limits = params.joints[joint]
+        half = math.pi if limits.position is None else 0.5 * (limits.position[1] - limits.position[0])
+        moves.append((joint, RELAXATION * half))
+    return moves
+
+
+def held_slopes(problem, solution) -> list[tuple[int, float, float, float]]:
+    """(joint, dJ/d(epsilon), move, held position) of each held joint, epsilon the move over 10 % of it
+    (:func:`relaxed`): the derivative of the Lagrangian
+    f + lambda_g' g at the optimum (the variable bounds do not depend on a held position) with respect
+    to the held position, by a central difference of :data:`HELD_STEP` times its move."""
+    from desdemona.cueing.formulation import Formulation
+    from desdemona.machine.model import Model
+
+    config, params = problem.model.config, problem.model.params
+    out = []
+    for joint, move in held_moves(config, params):
+        step, values = HELD_STEP * move, []
+        for sign in (1.0, -1.0):
+            fixed = list(config.fixed)
+            fixed[joint] += sign * step
+            moved = Model(params, dataclasses.replace(config, fixed=tuple(fixed)))
+            values.append(_lagrangian(Formulation(moved, problem.path, problem.options), problem, solution))
+        out.append((joint, (values[0] - values[1]) / (2 * step) * move / RELAXATION, move, float(config.fixed[joint])))
+    return out
+
+
+def _lagrangian(formulation, problem, solution) -> float:
+    """f + lambda_g' g of ``formulation`` at ``solution`` of ``problem`` (the same layout): the stage
+    costs and path rows, the terminal node's, and the start's filter rows (gaps are linear in the
+    states and do not depend on the model)."""
+    x, u, N, nx = solution.x, solution.u, problem.N, problem.nx
+    data = problem.stage_data()
+    _, L, g = formulation.stage.map(N)(x[:-1].T, u.T, data)
+    lam, stride = np.asarray(solution.lam_g), nx + problem.n_path
+    rows = (problem.n_initial + np.arange(N)[:, None] * stride + nx + np.arange(problem.n_path)[None, :]).T
+    value = float(np.sum(np.asarray(L))) + float(np.sum(lam[rows] * np.asarray(g)))
+    if formulation.terminal is not None:
+        L_end, g_end = formulation.terminal(x[-1], problem.terminal_data())
+        end = problem.n_initial + N * stride
+        value += float(L_end) + float(lam[end:end + problem.n_terminal] @ np.asarray(g_end).ravel())
+    if problem.n_initial:
+        from desdemona.cueing.transcription import CueingProblem
+
+        residual = CueingProblem.initial_constraint(formulation)(x[0], u[0])
+        value += float(lam[nx:nx + problem.n_initial] @ np.asarray(residual).ravel())
+    return value
