@@ -41,8 +41,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from desdemona.cueing.formulation import WALL_WIDTH, Formulation
+from desdemona.cueing.transcription import CueingProblem
 from desdemona.machine.configs import Configuration
+from desdemona.machine.model import Model
 from desdemona.machine.params import JOINT_NAMES, MachineParams
+from desdemona.machine.plan import advance
 
 #: The families of limits, as summary.json names them (eq. 3.3-3.5, the jerk of the smooth plans).
 FAMILIES = ("position", "rate", "acceleration", "jerk", "torque", "power")
@@ -153,8 +157,8 @@ def _cost_terms(problem, solution) -> dict:
     theorem's explicit part): the regularisation weighs each acceleration against its limit and each
     jerk against its own (:meth:`~desdemona.cueing.formulation.Formulation._residuals`), so a term
     c (u / L)^2 changes by -2 c per unit epsilon; the wall before the position limits
-    (:attr:`~desdemona.cueing.formulation.ProblemOptions.wall`) moves and widens with the range, by a
-    central difference of the Lagrangian (:func:`_lagrangian`)."""
+    (:attr:`~desdemona.cueing.formulation.ProblemOptions.wall`) moves and widens with the range
+    (:func:`_wall_terms`)."""
     lim, o, n = problem.model.limits, problem.options, problem.model.n
     weights = problem.steps[:, None] / problem.path.duration
     accelerations = solution.x[:-1, 2 * n:3 * n] if problem.smooth else solution.u
@@ -163,14 +167,37 @@ def _cost_terms(problem, solution) -> dict:
         terms[("acceleration", j)] = -2.0 * o.regularisation * float(np.sum(weights[:, 0] * (accelerations[:, j] / lim.acceleration[j]) ** 2))
         if problem.smooth:
             terms[("jerk", j)] = -2.0 * problem.jerk_weight * float(np.sum(weights[:, 0] * (solution.u[:, j] / lim.jerk[j]) ** 2))
-    if o.wall > 0:
-        from desdemona.cueing.formulation import Formulation
+    terms.update(_wall_terms(problem, solution))
+    return terms
 
-        for j in lim.bounded:
-            name = problem.model.config.joint_names[j]
-            values = [_lagrangian(Formulation(relaxed(problem.model, "position", name, sign * HELD_STEP), problem.path,
-                                              o), problem, solution) for sign in (1.0, -1.0)]
-            terms[("position", j)] = (values[0] - values[1]) / (2 * HELD_STEP)
+
+def _wall_terms(problem, solution) -> dict:
+    """{("position", joint): dJ/d(epsilon)} of the wall before each bounded joint's ends
+    (:meth:`~desdemona.cueing.formulation.Formulation._wall`: ``wall (depth / width)^2`` at each sub-step
+    point, weighed by the trapezoid rule), the range widened by epsilon times its half at both ends:
+    the wall's start moves out by (half - width) epsilon and its width grows by width epsilon."""
+    o, lim, n = problem.options, problem.model.limits, problem.model.n
+    if not (o.wall > 0 and lim.bounded):
+        return {}
+    x, jerk = solution.x[:-1], solution.u if problem.smooth else None
+    a = x[:, 2 * n:3 * n] if problem.smooth else solution.u
+    s = problem.steps[:, None, None] * problem.fractions[None, :, None]  # (N, points, 1)
+    q, _ = advance(x[:, None, :n], x[:, None, n:2 * n], a[:, None, :], s, None if jerk is None else jerk[:, None, :])
+    points, m = len(problem.fractions), problem.m
+    trapezoid = np.full(points, 1.0 / m)
+    if points == m + 1:
+        trapezoid[0] = trapezoid[-1] = 0.5 / m
+    weights = trapezoid[None, :] * (problem.steps / problem.path.duration)[:, None]
+    if points != m + 1:  # the first point's weight (the stages' data)
+        weights[:, 0] *= problem.with_steps(np.zeros((0, problem.N)))[1]
+    terms = {}
+    for j in lim.bounded:
+        low, high = lim.position_min[j], lim.position_max[j]
+        half, width = 0.5 * (high - low), WALL_WIDTH * (high - low)
+        depth = np.maximum(0.0, q[:, :, j] - (high - width)) + np.maximum(0.0, (low + width) - q[:, :, j])
+        r = depth / width
+        moved = np.where(depth > 0, -(half - width) / width, 0.0) - r  # dr / d(epsilon)
+        terms[("position", j)] = float(np.sum(weights * 4.0 * o.wall ** 2 * r ** 3 * moved))
     return terms
 
 
@@ -299,8 +326,6 @@ def relaxed(model, family: str, joint: str, share: float):
     limit times 1 + share, a position range widened by ``share`` of its half-range at both ends, a
     held position moved up by ``share`` / 10 % of its move (:func:`held_moves`). For the finite
     differences that check the prices."""
-    from desdemona.machine.model import Model
-
     params, config = model.params, model.config
     index = JOINT_NAMES.index(joint)
     if family == HELD:
@@ -340,9 +365,6 @@ def held_slopes(problem, solution) -> list[tuple[int, float, float, float]]:
     (:func:`relaxed`): the derivative of the Lagrangian
     f + lambda_g' g at the optimum (the variable bounds do not depend on a held position) with respect
     to the held position, by a central difference of :data:`HELD_STEP` times its move."""
-    from desdemona.cueing.formulation import Formulation
-    from desdemona.machine.model import Model
-
     config, params = problem.model.config, problem.model.params
     out = []
     for joint, move in held_moves(config, params):
@@ -371,8 +393,6 @@ def _lagrangian(formulation, problem, solution) -> float:
         end = problem.n_initial + N * stride
         value += float(L_end) + float(lam[end:end + problem.n_terminal] @ np.asarray(g_end).ravel())
     if problem.n_initial:
-        from desdemona.cueing.transcription import CueingProblem
-
         residual = CueingProblem.initial_constraint(formulation)(x[0], u[0])
         value += float(lam[nx:nx + problem.n_initial] @ np.asarray(residual).ravel())
     return value
