@@ -84,13 +84,27 @@ class LimitPrice:
 
 
 @dataclass(frozen=True)
+class Ledger:
+    """Where the prices come from, entry by entry, for :func:`combined`: per (family, joint) the
+    contributions to dJ/d(epsilon) (arrays), their spans (from, to) [s] and whether each is a bound
+    that can bind (the cost's own dependence cannot); and the cost's share per stage (the stage costs
+    and the terminal's, and their mid-times) [s]."""
+
+    entries: dict
+    costs: np.ndarray
+    cost_times: np.ndarray
+
+
+@dataclass(frozen=True)
 class LimitPrices:
-    """Every limit's price of one off-line optimum. cost : J; felt_error : sqrt(J); duration [s]."""
+    """Every limit's price of one off-line optimum. cost : J; felt_error : sqrt(J); duration [s];
+    ledger : the entries behind them (:class:`Ledger`), None where combined."""
 
     prices: tuple[LimitPrice, ...]
     cost: float
     felt_error: float
     duration: float
+    ledger: Ledger | None = dataclasses.field(default=None, repr=False, compare=False)
 
     def to_dict(self) -> dict:
         """``{family: {joint: {"price", "binds_s", "binds_from_s", "binds_to_s", "limit", "cost_slope"}}}``,
@@ -126,34 +140,64 @@ def limit_prices(problem, solution, held: bool = True) -> LimitPrices | None:
     if solution.lam_x is None or solution.lam_g is None:
         return None
     terms = _variable_terms(problem, np.asarray(solution.lam_x)) + _constraint_terms(problem, np.asarray(solution.lam_g))
-    cost = float(solution.cost)
+    entries: dict = {}
+    for family, j, c, lo, hi in terms:
+        entries.setdefault((family, j), []).append((c, lo, hi, np.ones(c.size, bool)))
+    mid = problem.t_nodes[:-1] + 0.5 * problem.steps  # the cost's own parts, per stage
+    for (family, j), c in _cost_terms(problem, solution).items():
+        entries.setdefault((family, j), []).append((c, mid, mid, np.zeros(c.size, bool)))
+    data = (problem.stage_data(), None if problem.terminal is None else problem.terminal_data())
+    costs, _ = _lagrangian(problem, problem, solution, data)
+    if held:
+        for joint, slopes in held_slopes(problem, solution, data):
+            entries[(HELD, joint)] = [(slopes, np.r_[mid, problem.t_nodes[-1]], np.r_[mid, problem.t_nodes[-1]], np.zeros(slopes.size, bool))]
+    ledger = Ledger({key: tuple(np.concatenate(parts) for parts in zip(*rows)) for key, rows in entries.items()},
+                    costs, np.r_[mid, problem.t_nodes[-1]])
+    return _priced(problem.model, [(ledger, 0.0, math.inf, 1.0)], float(problem.t_nodes[0]), float(problem.t_nodes[-1]))
+
+
+def combined(model, pieces, start: float, end: float) -> LimitPrices | None:
+    """The prices of a plan stitched from the optima of windows (:mod:`desdemona.cueing.windows`):
+    ``pieces`` = (prices, offset [s], kept until [s, the window's own time], the window's duration) of
+    each. Each window's cost is a mean over its own duration, the whole's over ``end - start``: the
+    kept entries of each window weigh its duration's share. A window's prices see its own start fixed,
+    so a combined price leaves out how moving a limit changes where the later windows start."""
+    if any(p is None or p.ledger is None for p, *_ in pieces):
+        return None
+    return _priced(model, [(p.ledger, offset, kept, duration / (end - start)) for p, offset, kept, duration in pieces],
+                   start, end)
+
+
+def _priced(model, pieces, start: float, end: float) -> LimitPrices:
+    """The prices of the ledgers' kept entries: ``pieces`` = (ledger, offset, kept until, weight)."""
+    cost = float(sum(weight * np.sum(ledger.costs[ledger.cost_times <= kept + 1e-9]) for ledger, _, kept, weight in pieces))
     error = math.sqrt(max(cost, 0.0))
     scale = RELAXATION / (2.0 * error) if error > 0 else 0.0
-    lim, names = problem.model.limits, problem.model.config.joint_names
+    lim, names, params = model.limits, model.config.joint_names, model.params
     values = {"position": 0.5 * (lim.position_max - lim.position_min), "rate": lim.velocity,
               "acceleration": lim.acceleration, "jerk": lim.jerk, "torque": lim.effort, "power": lim.power}
-    prices, explicit = [], _cost_terms(problem, solution)
-    span = (float(problem.t_nodes[0]), float(problem.t_nodes[-1]))
-    for family in FAMILIES:
-        for j, name in enumerate(names):
-            if not np.isfinite(values[family][j]):
-                continue
-            parts = [t for t in terms if t[0] == family and t[1] == j]
-            c = np.concatenate([t[2] for t in parts]) if parts else np.zeros(0)
-            lo = np.concatenate([t[3] for t in parts]) if parts else np.zeros(0)
-            hi = np.concatenate([t[4] for t in parts]) if parts else np.zeros(0)
-            slope = float(np.sum(c)) + explicit.get((family, j), 0.0)
-            binding = np.abs(c) >= BINDS * max(cost, 1e-12)
-            prices.append(LimitPrice(family, name, float(values[family][j]), slope, -slope * scale,
-                                     _merged(lo[binding], hi[binding], *span)))
-    if held:
-        for joint, slope, move, position in held_slopes(problem, solution):
-            prices.append(LimitPrice(HELD, JOINT_NAMES[joint], position, slope, -slope * scale))
-    return LimitPrices(tuple(prices), cost, error, float(problem.t_nodes[-1] - problem.t_nodes[0]))
+    keys = [(family, j, name, float(values[family][j])) for family in FAMILIES for j, name in enumerate(names)
+            if np.isfinite(values[family][j])]
+    keys += [(HELD, joint, JOINT_NAMES[joint], float(model.config.fixed[joint])) for joint, _ in held_moves(model.config, params)
+             if (HELD, joint) in pieces[0][0].entries]
+    prices = []
+    for family, j, name, limit in keys:
+        slope, lows, highs = 0.0, [], []
+        for ledger, offset, kept, weight in pieces:
+            c, lo, hi, bound = ledger.entries.get((family, j), (np.zeros(0),) * 4)
+            keep = 0.5 * (lo + hi) <= kept + 1e-9
+            slope += weight * float(np.sum(c[keep]))
+            binding = keep & bound & (np.abs(c) >= BINDS * max(float(np.sum(ledger.costs)), 1e-12))
+            lows.append(lo[binding] + offset)
+            highs.append(hi[binding] + offset)
+        spans = () if family == HELD else _merged(np.concatenate(lows), np.concatenate(highs), start, end)
+        prices.append(LimitPrice(family, name, limit, slope, -slope * scale, spans))
+    ledger = pieces[0][0] if len(pieces) == 1 else None
+    return LimitPrices(tuple(prices), cost, error, end - start, ledger)
 
 
 def _cost_terms(problem, solution) -> dict:
-    """{(family, joint): dJ/d(epsilon)} of the cost's own dependence on the limits (the envelope
+    """{(family, joint): dJ/d(epsilon) per stage (N,)} of the cost's own dependence on the limits (the envelope
     theorem's explicit part): the regularisation weighs each acceleration against its limit and each
     jerk against its own (:meth:`~desdemona.cueing.formulation.Formulation._residuals`), so a term
     c (u / L)^2 changes by -2 c per unit epsilon; the wall before the position limits
@@ -164,15 +208,16 @@ def _cost_terms(problem, solution) -> dict:
     accelerations = solution.x[:-1, 2 * n:3 * n] if problem.smooth else solution.u
     terms = {}
     for j in range(n):
-        terms[("acceleration", j)] = -2.0 * o.regularisation * float(np.sum(weights[:, 0] * (accelerations[:, j] / lim.acceleration[j]) ** 2))
+        terms[("acceleration", j)] = -2.0 * o.regularisation * weights[:, 0] * (accelerations[:, j] / lim.acceleration[j]) ** 2
         if problem.smooth:
-            terms[("jerk", j)] = -2.0 * problem.jerk_weight * float(np.sum(weights[:, 0] * (solution.u[:, j] / lim.jerk[j]) ** 2))
-    terms.update(_wall_terms(problem, solution))
+            terms[("jerk", j)] = -2.0 * problem.jerk_weight * weights[:, 0] * (solution.u[:, j] / lim.jerk[j]) ** 2
+    for key, wall in _wall_terms(problem, solution).items():
+        terms[key] = terms.get(key, 0.0) + wall
     return terms
 
 
 def _wall_terms(problem, solution) -> dict:
-    """{("position", joint): dJ/d(epsilon)} of the wall before each bounded joint's ends
+    """{("position", joint): dJ/d(epsilon) per stage (N,)} of the wall before each bounded joint's ends
     (:meth:`~desdemona.cueing.formulation.Formulation._wall`: ``wall (depth / width)^2`` at each sub-step
     point, weighed by the trapezoid rule), the range widened by epsilon times its half at both ends:
     the wall's start moves out by (half - width) epsilon and its width grows by width epsilon."""
@@ -197,7 +242,7 @@ def _wall_terms(problem, solution) -> dict:
         depth = np.maximum(0.0, q[:, :, j] - (high - width)) + np.maximum(0.0, (low + width) - q[:, :, j])
         r = depth / width
         moved = np.where(depth > 0, -(half - width) / width, 0.0) - r  # dr / d(epsilon)
-        terms[("position", j)] = float(np.sum(weights * 4.0 * o.wall ** 2 * r ** 3 * moved))
+        terms[("position", j)] = np.sum(weights * 4.0 * o.wall ** 2 * r ** 3 * moved, axis=1)
     return terms
 
 
@@ -360,39 +405,40 @@ def held_moves(config: Configuration, params: MachineParams) -> list[tuple[int, 
     return moves
 
 
-def held_slopes(problem, solution) -> list[tuple[int, float, float, float]]:
-    """(joint, dJ/d(epsilon), move, held position) of each held joint, epsilon the move over 10 % of it
-    (:func:`relaxed`): the derivative of the Lagrangian f + lambda_g' g at the optimum (the variable
-    bounds do not depend on a held position) with respect to the held position, by a forward
-    difference of :data:`HELD_STEP` times its move (one model rebuilt per held joint: its truncation
-    error, the cost's curvature over that step, is a ten-thousandth of the one-sided 1 % move's)."""
+def held_slopes(problem, solution, data) -> list[tuple[int, np.ndarray]]:
+    """(joint, dJ/d(epsilon) per stage and the terminal node (N + 1,)) of each held joint, epsilon the
+    move over 10 % of it (:func:`relaxed`): the derivative of the Lagrangian f + lambda_g' g at the
+    optimum (the variable bounds do not depend on a held position) with respect to the held position,
+    by a forward difference of :data:`HELD_STEP` times its move (one model rebuilt per held joint:
+    its truncation error, the cost's curvature over that step, is a ten-thousandth of the one-sided
+    1 % move's). ``data``: the stages' and the terminal's (:func:`_lagrangian`)."""
     config, params = problem.model.config, problem.model.params
-    data = (problem.stage_data(), None if problem.terminal is None else problem.terminal_data())
-    base, out = _lagrangian(problem, problem, solution, data), []
+    base, out = np.sum(_lagrangian(problem, problem, solution, data), axis=0), []
     for joint, move in held_moves(config, params):
         step = HELD_STEP * move
         fixed = list(config.fixed)
         fixed[joint] += step
         moved = Formulation(Model(params, dataclasses.replace(config, fixed=tuple(fixed))), problem.path, problem.options)
-        slope = (_lagrangian(moved, problem, solution, data) - base) / step
-        out.append((joint, slope * move / RELAXATION, move, float(config.fixed[joint])))
+        slopes = (np.sum(_lagrangian(moved, problem, solution, data), axis=0) - base) / step
+        out.append((joint, slopes * move / RELAXATION))
     return out
 
 
-def _lagrangian(formulation, problem, solution, data) -> float:
-    """f + lambda_g' g of ``formulation`` at ``solution`` of ``problem`` (the same layout, its stages'
-    and terminal ``data``): the stage costs and path rows, the terminal node's, and the start's
-    filter rows (gaps are linear in the states and do not depend on the model)."""
+def _lagrangian(formulation, problem, solution, data) -> tuple[np.ndarray, np.ndarray]:
+    """The cost f and the multiplied rows lambda_g' g of ``formulation`` at ``solution`` of ``problem``
+    (the same layout, its stages' and terminal ``data``), per stage and the terminal node (N + 1,)
+    each: the stage costs and path rows, the terminal node's, and the start's filter rows with the
+    first stage (gaps are linear in the states and do not depend on the model)."""
     x, u, N, nx = solution.x, solution.u, problem.N, problem.nx
     _, L, g = formulation.stage.map(N)(x[:-1].T, u.T, data[0])
     lam, stride = np.asarray(solution.lam_g), nx + problem.n_path
     rows = (problem.n_initial + np.arange(N)[:, None] * stride + nx + np.arange(problem.n_path)[None, :]).T
-    value = float(np.sum(np.asarray(L))) + float(np.sum(lam[rows] * np.asarray(g)))
+    cost, multiplied = np.r_[np.asarray(L).ravel(), 0.0], np.r_[np.sum(lam[rows] * np.asarray(g), axis=0), 0.0]
     if formulation.terminal is not None:
         L_end, g_end = formulation.terminal(x[-1], data[1])
         end = problem.n_initial + N * stride
-        value += float(L_end) + float(lam[end:end + problem.n_terminal] @ np.asarray(g_end).ravel())
+        cost[-1], multiplied[-1] = float(L_end), float(lam[end:end + problem.n_terminal] @ np.asarray(g_end).ravel())
     if problem.n_initial:
         residual = CueingProblem.initial_constraint(formulation)(x[0], u[0])
-        value += float(lam[nx:nx + problem.n_initial] @ np.asarray(residual).ravel())
-    return value
+        multiplied[0] += float(lam[nx:nx + problem.n_initial] @ np.asarray(residual).ravel())
+    return cost, multiplied
