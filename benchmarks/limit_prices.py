@@ -11,7 +11,8 @@ same guess; the prices of :mod:`desdemona.cueing.prices` come from each solver's
 IPOPT optimum (its multipliers too, so that it stays in the same local optimum); the finite
 difference (J(share) - J) / share is set against the multipliers' dJ/d(epsilon), and the central one
 (J(1 %) - J(-1 %)) / 2 %, whose error is not the cost's curvature in the bound. Prints one markdown
-table (docs/benchmarks/limit-prices.md).
+table (docs/benchmarks/limit-prices.md). Last, the car lap solved in windows, its prices combined from
+the windows' (every relaxed run solves every window again).
 """
 
 from __future__ import annotations
@@ -23,11 +24,14 @@ import time
 
 from desdemona import Model, default_params, profiles
 from desdemona.cueing import prices
-from desdemona.cueing.offline import initial_guesses
+from desdemona.cueing.offline import OptimizeOptions, initial_guesses
 from desdemona.cueing.transcription import CueingProblem
+from desdemona.cueing.windows import optimize_windowed
 from desdemona.runs import session
 
 CASES = (("catapult", "yaw-track-cabin"), ("double-pulse", "yaw-track"))
+#: A path solved in windows: the car lap (35 s) in windows of 20 s (four; the machine needs 15 s of overlap).
+WINDOWED = ("car-lap", "yaw-track", 20.0)
 SHARES = (0.01, 0.05)
 
 
@@ -40,6 +44,30 @@ def solved(path, model, options, solver, guess=None):
     start = time.perf_counter()
     found = prices.limit_prices(problem, solution)
     return problem, solution, found, solve, time.perf_counter() - start
+
+
+def windowed(params, top: int) -> str:
+    """The rows of a path solved in windows (:func:`desdemona.cueing.windows.optimize_windowed`, IPOPT as
+    ``optimize`` chooses on two joints), each relaxed run solving every window again: the combined
+    prices (:func:`desdemona.cueing.prices.combined`) against the whole path's cost (the kept parts')."""
+    name, config, window = WINDOWED
+    model = Model(params, config)
+    resolved = session.offline(profiles.PROFILES[name](), model, session.Choices())
+    options = OptimizeOptions(dataclasses.replace(resolved.options, compile=False), starts=1)
+    start = time.perf_counter()
+    base = optimize_windowed(resolved.path, model, options, window)
+    seconds = time.perf_counter() - start
+    found = base.prices
+    for p in [p for p in found.ranked() if abs(p.price) >= 1e-3][:top]:
+        costs = {share: optimize_windowed(resolved.path, prices.relaxed(model, p.family, p.joint, share), options,
+                                          window).prices.cost for share in (*SHARES, -SHARES[0])}
+        cells = [f"{d:+.5g} | {d / p.cost_slope - 1:+.1%}" for d in ((costs[s] - found.cost) / s for s in SHARES)]
+        central = (costs[SHARES[0]] - costs[-SHARES[0]]) / (2 * SHARES[0])
+        binds = "held" if p.family == prices.HELD else f"{p.binds_s:.2f}"
+        print(f"| {name} ({base.timings['windows']} windows of {window:g} s) | {config} | {p.family} | {p.joint} | {binds} | "
+              f"{p.price:+.4f} | {p.cost_slope:+.5g} | - | {' | '.join(cells)} | {central / p.cost_slope - 1:+.1%} |")
+    return (f"{name} on {config} in windows of {window:g} s: J = {found.cost:.6g} (the kept parts', IPOPT, "
+            f"{seconds:.2f} s for every window), felt error sqrt(J) = {found.felt_error:.4g} m/s^2")
 
 
 def main() -> None:
@@ -80,6 +108,7 @@ def main() -> None:
             binds = "held" if p.family == prices.HELD else f"{p.binds_s:.2f}"
             print(f"| {name} | {config} | {p.family} | {p.joint} | {binds} | {p.price:+.4f} | {p.cost_slope:+.5g} | "
                   f"{fat_table[p.family][p.joint]['cost_slope']:+.5g} | {' | '.join(differences)} |")
+    notes.append(windowed(params, args.top))
     print()
     for note in notes:
         print(f"- {note}")

@@ -97,7 +97,7 @@ class Result:
     check : the independent fine-grid check (every limit <= 1 + 1e-6, RMS errors).
     starts : every start's report; timings : build, solve and wall times [s].
     prices : what each limit costs the felt error (:mod:`desdemona.cueing.prices`), from the chosen
-    solve's multipliers; None where there are none (the thesis' method, a windowed result).
+    solve's multipliers (a windowed result: combined from its windows'); None for the thesis' method.
     """
 
     path: DesiredPath

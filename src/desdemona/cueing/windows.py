@@ -8,7 +8,8 @@ exactly from that state (positions, rates and accelerations). So the part kept n
 a window ends, every window but the last ends stoppable (every state can still brake to rest within
 the position limits, the on-line end condition of chapter 7), and memory is bounded by the window,
 not the recording. The stitched plan is re-checked as a whole against every limit
-(:func:`desdemona.check.simulate.check`); a violation is an error, as for any result.
+(:func:`desdemona.check.simulate.check`); a violation is an error, as for any result. Its limit prices
+are the windows' over the parts they keep (:func:`desdemona.cueing.prices.combined`).
 
 Every window but the last poses, for every recording, the same problem with another path and another
 start: its fatrop solver is kept in the cache (``OptimizeOptions.stored``), so that only a machine's
