@@ -122,7 +122,7 @@ class LimitPrices:
         """The dearest ``rows`` limits that bind, one line each, for the printed result."""
         lines = []
         for p in self.ranked()[:rows]:
-            if p.price == 0.0 and not p.spans:
+            if abs(p.price) < 5e-5 and not p.spans:  # shown as 0 and binding nowhere: none further is dearer
                 break
             share = p.binds_s / self.duration if self.duration > 0 else 0.0
             if p.family == HELD:  # signed: moved up (to a larger position), or down where negative
