@@ -1,6 +1,6 @@
 """The price of every limit: what the felt error would gain if a limit of the machine moved (thesis 3.2, 3.4, 4.2).
 
-The off-line problem keeps every limit of eq. 3.3-3.5 (discretised as eq. 4.2) as a hard constraint
+The off-line problem keeps every limit of eq. 3.3-3.5 (the constraints of eq. 3.7, discretised as eq. 4.2) as a hard constraint
 on its nodes and sub-step points. At an optimum each constraint that binds carries a multiplier: the
 rate at which the optimal cost J would change if its bound moved (the sensitivity theorem of
 nonlinear programming: dJ/db = -lambda for the bound b that is active, in CasADi's sign convention,
