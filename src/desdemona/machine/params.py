@@ -234,6 +234,11 @@ _ELEMENTS = {"position": ("min", "max"), "head_offset": ("x", "y", "z"), "com": 
              "inertia": ("xx", "yy", "zz", "xy", "xz", "yz")}
 
 
+# Words for a limit that are not its key's, and the quantity they mean (for an unknown key's nearest).
+_MEANT = {"upper": "max", "lower": "min", "max": "max", "min": "min", "travel": "position", "rate": "velocity",
+          "speed": "velocity", "accel": "acceleration", "torque": "torque", "force": "force"}
+
+
 def number_keys() -> tuple[str, ...]:
     """Every single number of a parameter file as a dotted key, in each of its units: ``gravity_m_s2``,
     ``head_offset_m.x``, ``joints.track.position_m.max``, ``joints.yaw.velocity_deg_s``,
@@ -266,6 +271,8 @@ def _fragment(numbers: dict[str, float], merged: dict[str, Any]) -> dict[str, An
 
             prefix = ".".join(key.split(".")[:2]) + "."
             within = [k for k in known if k.startswith(prefix)] if prefix.split(".")[0] in ("joints", "bodies") else []
+            meant = _MEANT.get(key.split(".")[-1])  # a limit named in words: its key's quantity
+            within = [k for k in within if meant in k] if meant else within
             near = difflib.get_close_matches(key, within or known, n=3, cutoff=0.5 if not within else 0.0)
             raise ParameterError(f"{key}: unknown parameter; nearest: {', '.join(near) or 'none'} (keys are "
                                  "written as in a parameter file, with their unit: joints.track.position_m.max, "
