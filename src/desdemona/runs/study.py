@@ -328,7 +328,8 @@ def run_study(planned: list[tuple[Point, MachineParams]], choices: session.Choic
                        dask_address, told, ran)
     except guard.Interrupted as exc:
         done = sum(r is not None for r in ran)
-        written = write_table(out, table_rows(planned, out, todo, ran, "interrupted"))
+        with guard.deferred():  # the table of what is done, not cut by the signal's repeats
+            written = write_table(out, table_rows(planned, out, todo, ran, "interrupted"))
         exc.message = (f"interrupted ({exc.name}): stopped; {done} of the {len(todo)} points to solve were solved, "
                        f"{len(planned) - len(todo) + done} of {len(planned)} are in {written[0]}; the same command "
                        "again solves the others")
