@@ -19,7 +19,9 @@ overhead per point (``workers x wall - the points' own seconds``, over the point
 spends on anything but a point), the peak resident memory of the largest worker (local: of the
 waited-for children; Dask: each worker's own ``ru_maxrss``), and the load average before and after.
 And what the scheduler holds: one task per point, the pickled size of a task's arguments and of its
-result. The two tables must be the same but for the folders and times (checked).
+result. The two tables must be the same but for the folders and times (checked). OpenBLAS runs one thread per
+process (:func:`desdemona.support.allocator.one_blas_thread`), as the command line sets it for its
+workers and Dask's workers set it by default.
 """
 
 from __future__ import annotations
@@ -56,6 +58,11 @@ def main() -> int:
     parser.add_argument("--h-u", type=float, default=0.1, dest="h_u")
     args = parser.parse_args()
     from distributed import LocalCluster
+
+    from desdemona.support import allocator
+
+    allocator.one_blas_thread()  # as the command line does (and Dask's workers by default)
+    allocator.reuse_freed_memory()
 
     asked = study.Study(RECORDINGS, ("yaw-track",), sample=SAMPLE, points=args.points, seed=0)
     choices, options = session.Choices(h_u=args.h_u), OptimizeOptions(starts=1)

@@ -119,6 +119,14 @@ def test_a_small_study_writes_its_table_and_figures(small):
     assert cosine[2.0] > 1.5 * cosine[5.0]
     assert float(next(r for r in rows if r["recording"] == "cosine")["use_acceleration_track"]) > 0.99
     assert {"felt.png", "front.png", "binding.png"} <= {p.name for p in out.iterdir()}
+    try:
+        import pandas
+        import pyarrow  # noqa: F401
+    except ImportError:
+        assert not (out / "study.parquet").exists()
+    else:  # the same table, its numbers as numbers
+        frame = pandas.read_parquet(out / "study.parquet")
+        assert frame["rms"].tolist() == [float(r["rms"]) for r in rows] and list(frame.columns) == list(rows[0])
 
 
 def test_limit_prices_become_columns_where_a_result_has_them():

@@ -101,7 +101,7 @@ def draw_front(rows: list[dict], a: str, b: str, out: Path) -> Path | None:
     ax.set_ylabel(b)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
-    ax.set_title(f"Trade-off of {a} and {b} (smaller is better in both)")
+    ax.set_title(f"Trade-off front of {a}\nand {b} (both smaller-is-better)", fontsize=10)
     fig.tight_layout()
     fig.savefig(out / "front.png", dpi=100)
     return out / "front.png"
