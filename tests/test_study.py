@@ -74,6 +74,15 @@ def test_bad_input_is_one_line_and_exit_2_before_any_work(tmp_path, capsys, extr
     assert not out.exists()
 
 
+def test_a_study_whose_points_at_once_would_not_fit_in_memory_is_refused_with_its_estimate(tmp_path, capsys):
+    out = tmp_path / "s"
+    argv = ["study", "car-lap", "--config", "full", "--grid", f"{TRACK}=3,4", "--processes", "2000", "--out", str(out)]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert "GB of memory" in err and "fewer --processes (2000 points at once" in err and err.count("\n") == 1
+    assert not out.exists()
+
+
 def test_the_sample_is_a_seeded_latin_hypercube_within_its_bounds():
     asked = study.Study(("cosine",), ("yaw-track",), grid=((YAW_RATE, (100.0, 150.0)),),
                         sample=((TRACK, 3.0, 4.0), ("head_offset_m.z", -0.2, 0.2)), points=5, seed=3)

@@ -203,12 +203,15 @@ def check_folder(out_dir: str | Path) -> None:
 
 
 def check_size(todo: list[tuple[Point, MachineParams]], choices: session.Choices, options: OptimizeOptions,
-               processes: int, max_time: float | None = None) -> float:
+               processes: int, max_time: float | None = None, together: int | None = None) -> float:
     """The estimated seconds of the points ``todo`` on ``processes`` processes at once (each point's
     :func:`desdemona.cueing.sizing.estimate_time`, summed and shared). Raises
-    :class:`~desdemona.cueing.sizing.TooLarge` where ``processes`` points of a kind would not fit in
-    memory together, :class:`~desdemona.cueing.sizing.TooLong` where a point takes longer than its own
-    limit (no ``max_time``) or the whole study longer than ``max_time``, saying the estimate."""
+    :class:`~desdemona.cueing.sizing.TooLarge` where ``together`` points of a kind (default
+    ``processes``: local processes; 1 for a cluster's workers, each on its own) would not fit in this
+    computer's memory at once, :class:`~desdemona.cueing.sizing.TooLong` where a point takes longer
+    than its own limit (no ``max_time``) or the whole study longer than ``max_time``, saying the
+    estimate."""
+    together = processes if together is None else together
     seconds, kinds = 0.0, {}
     for point, params in todo:
         kind = (point.recording, point.config)
@@ -217,7 +220,11 @@ def check_size(todo: list[tuple[Point, MachineParams]], choices: session.Choices
                                      workers=1, starts=options.starts)
             problem, window = resolved.options, resolved.window
             part = resolved.path if window is None else _window_part(resolved.path, window)
-            sizing.check_fits(part, resolved.model.config, problem, max(1, processes), resolved.model.limits.smooth)
+            try:
+                sizing.check_fits(part, resolved.model.config, problem, max(1, together), resolved.model.limits.smooth)
+            except sizing.TooLarge as exc:
+                raise sizing.TooLarge(f"{str(exc).replace('--workers', '--processes')} ({together} points at once "
+                                      "on this computer)") from None
             estimate = (sizing.check_time if max_time is None else sizing.estimate_time)(
                 resolved.path, resolved.model.config, problem.h_u, problem.solver, options.starts, 1, window)
             kinds[kind] = estimate
@@ -280,7 +287,7 @@ def run_point(point: Point, params: MachineParams, choices: session.Choices, opt
         status, message = ("ok", "") if result.converged else ("not converged", result.solution.status)
     except LimitViolation as exc:
         status, message = "no safe trajectory", str(exc)
-    except (ValueError, RuntimeError) as exc:
+    except (ValueError, RuntimeError, OSError) as exc:
         status, message = "error", str(exc)
     return {"status": status, "message": message, "seconds": time.perf_counter() - start}
 
@@ -311,8 +318,8 @@ def run_study(planned: list[tuple[Point, MachineParams]], choices: session.Choic
         batch.reach_scheduler(dask_address)
     check_folder(out_dir)
     out = Path(out_dir)
-    todo = [(p, params) for p, params in planned if not is_done(out, p)]
-    seconds = check_size(todo, choices, options, processes, max_time) if todo else 0.0
+    todo = list({p.key: (p, params) for p, params in planned if not is_done(out, p)}.values())  # each once
+    seconds = check_size(todo, choices, options, processes, max_time, 1 if dask_address else None) if todo else 0.0
     if announce is not None:
         announce(len(planned) - len(todo), len(todo), seconds)
     (out / "points").mkdir(parents=True, exist_ok=True)
