@@ -171,7 +171,10 @@ def plan(study: Study, choices: session.Choices, options: OptimizeOptions, param
             get_configuration(name)
         except ValueError as exc:
             raise StudyError(str(exc)) from None
-    identity = {r: recording_identity(r) for r in dict.fromkeys(study.recordings) if profiles.load(r)}
+    identity = {}
+    for recording in dict.fromkeys(study.recordings):
+        profiles.load(recording)  # read and checked (ProfileError naming the file)
+        identity[recording] = recording_identity(recording)
     out = []
     for values in study.values():
         params = load_params(params_file, base, values)
