@@ -6,8 +6,8 @@
 - :func:`draw_front`: ``front.png``, two chosen figures of the table against each other and their
   trade-off front (the points no other point beats in both, both taken smaller-is-better), one per
   recording and configuration;
-- :func:`draw_binding`: ``binding.png``, which limit binds most: each limit's mean price over the
-  points where the results carry prices (``price_*`` columns), else the share of points that use it
+- :func:`draw_binding`: ``binding.png``, which limit binds most: each limit's mean price (its size: a
+  held position's is signed) over the points where the results carry prices (``price_*`` columns), else the share of points that use it
   to :data:`desdemona.runs.study.BINDS` or more (``use_*`` columns).
 
 The rows are dictionaries of the table's columns (numbers as floats, missing ones None); only the
@@ -113,8 +113,8 @@ def binding(rows: list[dict], binds: float) -> tuple[str, dict[str, float]]:
     solved = [row for row in rows if row.get("status") in SOLVED]
     names = sorted({k for row in solved for k in row if k.startswith("price_")})
     if any(row.get(k) is not None for row in solved for k in names):
-        values = {k[6:]: float(np.nanmean(_numbers(solved, k))) for k in names}
-        what = "mean price over the points: felt error per 10 % of the limit"
+        values = {k[6:]: float(np.nanmean(np.abs(_numbers(solved, k)))) for k in names}  # a held position's is signed
+        what = "mean |price| over the points: felt error per 10 % of the limit"
     else:
         names = sorted({k for row in solved for k in row if k.startswith("use_")})
         values = {k[4:]: float(np.mean(np.nan_to_num(_numbers(solved, k)) >= binds)) for k in names}
