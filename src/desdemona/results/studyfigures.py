@@ -131,7 +131,7 @@ def draw_binding(rows: list[dict], binds: float, out: Path, shown: int = 15) -> 
     fig = _figure(figsize=(6.4, 0.9 + 0.32 * len(values)))
     ax = fig.add_subplot(1, 1, 1)
     ax.barh(list(values)[::-1], list(values.values())[::-1])
-    ax.set_xlabel(what)
+    ax.set_xlabel(what, fontsize=9)
     ax.set_title("Which limit binds most")
     ax.grid(alpha=0.3, axis="x")
     fig.tight_layout()
