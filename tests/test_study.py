@@ -62,7 +62,8 @@ def test_a_key_or_value_the_machine_refuses_is_named(numbers, words):
     (["--grid", f"{TRACK}=3,x"], "numbers separated by commas"),
     (["--sample", f"{TRACK}=4:3", "--points", "4"], "LOW must be less than HIGH"),
     (["--sample", f"{TRACK}=3:4"], "needs --points"),
-    (["--grid", f"{TRACK}=3,4", "--max-time", "5"], "about 11 s estimated on 2 processes"),
+    (["--grid", f"{TRACK}=3,4", "--max-time", "5"],
+     "estimated on 2 processes (each point's estimate, summed), above --max-time 5 s"),
     (["--grid", f"{TRACK}=3,4", "--front", "rms,trackk"], "is not a column"),
     (["--config", "nope"], "unknown configuration"),
 ])
