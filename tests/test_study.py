@@ -20,7 +20,8 @@ from desdemona.machine.params import ParameterError, load_params, number_keys
 from desdemona.results import studyfigures
 from desdemona.runs import study
 
-TRACK, YAW_RATE, ACCELERATION = "joints.track.position_m.max", "joints.yaw.velocity_deg_s", "joints.track.acceleration_m_s2"
+TRACK, YAW_RATE = "joints.track.position_m.max", "joints.yaw.velocity_deg_s"
+ACCELERATION = "joints.track.acceleration_m_s2"
 SHORT = ["--config", "yaw-track", "--h-u", "0.1", "--starts", "1"]
 # what differs between two runs of the same points: where and how long
 RUN_COLUMNS = ("folder", "solve_s")

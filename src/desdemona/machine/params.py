@@ -254,7 +254,8 @@ def number_keys() -> tuple[str, ...]:
         keys += [f"joints.{name}.{leaf}" for quantity, kinds in _JOINT_QUANTITIES.items() if kinds[col]
                  for leaf in leaves(quantity, kinds[col])]
     for name in BODY_NAMES:
-        keys += [f"bodies.{name}.{leaf}" for quantity, kind in _BODY_QUANTITIES.items() for leaf in leaves(quantity, kind)]
+        keys += [f"bodies.{name}.{leaf}" for quantity, kind in _BODY_QUANTITIES.items()
+                 for leaf in leaves(quantity, kind)]
     return tuple(keys)
 
 

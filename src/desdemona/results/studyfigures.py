@@ -7,8 +7,9 @@
   trade-off front (the points no other point beats in both, both taken smaller-is-better), one per
   recording and configuration;
 - :func:`draw_binding`: ``binding.png``, which limit binds most: each limit's mean price (its size: a
-  held position's is signed) over the points where the results carry prices (``price_*`` columns), else the share of points that use it
-  to :data:`desdemona.runs.study.BINDS` or more (``use_*`` columns).
+  held position's is signed) over the points where the results carry prices (``price_*`` columns),
+  else the share of points that use it to :data:`desdemona.runs.study.BINDS` or more (``use_*``
+  columns).
 
 The rows are dictionaries of the table's columns (numbers as floats, missing ones None); only the
 points solved (status "ok" or "not converged") are drawn.

@@ -78,7 +78,8 @@ class Study:
         where nothing varies)."""
         keys = self.keys
         if len(set(keys)) != len(keys):
-            raise StudyError(f"a parameter is varied twice: {', '.join(sorted({k for k in keys if keys.count(k) > 1}))}")
+            twice = sorted({k for k in keys if keys.count(k) > 1})
+            raise StudyError(f"a parameter is varied twice: {', '.join(twice)}")
         grid = list(itertools.product(*[values for _, values in self.grid]))
         sampled = [()]
         if self.sample:
