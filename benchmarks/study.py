@@ -67,7 +67,7 @@ def main() -> int:
     asked = study.Study(RECORDINGS, ("yaw-track",), sample=SAMPLE, points=args.points, seed=0)
     choices, options = session.Choices(h_u=args.h_u), OptimizeOptions(starts=1)
     planned = study.plan(asked, choices, options)
-    task = len(pickle.dumps((planned[0][0], planned[0][1], choices, options, "/tmp/x/study")))
+    task = len(pickle.dumps((planned[0][0], planned[0][1], choices, options, "OUT")))
     result = len(pickle.dumps({"status": "ok", "message": "", "seconds": 1.0}))
     results = {}
     with tempfile.TemporaryDirectory(prefix="study-bench-") as work:
