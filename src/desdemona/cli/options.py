@@ -201,7 +201,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     _add_serve_parser(sub)
     _add_machine_parser(sub)
-    _add_host_parser(sub)
+    serviceoptions.add_key_options(_add_host_parser(sub))
 
     prof = sub.add_parser("profiles", help="list the built-in desired paths, or write one to CSV",
                           description="List the built-in desired paths with a one-line description; with a "
@@ -525,7 +525,7 @@ def _add_machine_parser(sub) -> None:
     serviceoptions.add_command_parser(sub)
 
 
-def _add_host_parser(sub) -> None:
+def _add_host_parser(sub):
     host = sub.add_parser(
         "host", help="a simulator host on this computer: send a vehicle's motion to 'serve' in real time",
         description="Send a vehicle's motion to 'desdemona serve' (UDP, docs/protocol.md) in real time, as a "
@@ -553,6 +553,7 @@ def _add_host_parser(sub) -> None:
     _add_host_options(flight)
     flight.set_defaults(run=serving.run_host_jsbsim)
     _add_bridge_parsers(kinds)
+    return kinds
 
 
 def _add_bridge_parsers(kinds) -> None:

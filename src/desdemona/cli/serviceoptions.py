@@ -5,9 +5,19 @@ from __future__ import annotations
 
 from desdemona.cli import serving
 
+KEY_HELP = ("a file holding the shared key (64 hex digits: openssl rand -hex 32 > FILE; chmod 600 FILE): "
+            "every datagram is signed with it, and only datagrams signed with it are taken (docs/protocol.md)")
+
+
+def add_key_options(kinds) -> None:
+    """``--key FILE`` on every host (the subcommands ``kinds`` of ``desdemona host``)."""
+    for parser in kinds.choices.values():
+        parser.add_argument("--key", default=None, metavar="FILE", help=KEY_HELP)
+
 
 def add_serve_arguments(serve) -> None:
-    """The service's options about the machine it drives and the operator it obeys."""
+    """The service's options about the machine it drives, the operator it obeys and its key."""
+    serve.add_argument("--key", default=None, metavar="FILE", help=KEY_HELP)
     serve.add_argument("--operator", default="127.0.0.1", metavar="HOST",
                        help="the host whose Commands (pause, park, resume, estop, reset) it takes (default: "
                             "127.0.0.1)")
@@ -45,6 +55,7 @@ def add_machine_arguments(machine) -> None:
     machine.add_argument("--operator", default="127.0.0.1", metavar="HOST",
                          help="the host whose Commands it takes (default: 127.0.0.1)")
     machine.add_argument("--seed", type=int, default=0, help="seed of the measurement noise (default: 0)")
+    machine.add_argument("--key", default=None, metavar="FILE", help=KEY_HELP)
     machine.add_argument("--state-outage", default=None, metavar="START,LENGTH", dest="state_outage",
                          help="send no State for LENGTH seconds from START seconds after the first setpoint "
                               "(a test of the service's loss of them)")
@@ -62,4 +73,5 @@ def add_command_parser(sub) -> None:
                          help="the operator's action: pause, park, resume, estop or reset")
     command.add_argument("--to", required=True, metavar="HOST:PORT",
                          help="the service's --listen or the machine's --listen address")
+    command.add_argument("--key", default=None, metavar="FILE", help=KEY_HELP)
     command.set_defaults(run=serving.run_command)
