@@ -191,3 +191,51 @@ def test_a_key_file_is_refused_with_one_line_when_malformed_or_readable_by_other
         assert main(argv) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and "--key" in err and "Traceback" not in err
+
+
+def test_the_machine_with_a_key_takes_signed_setpoints_only(tmp_path):
+    """The stand-in for the motion system (``desdemona machine --key``): setpoints and commands
+    unsigned, forged or replayed are dropped and counted, never checked or followed."""
+    from desdemona.machine.model import Model
+    from desdemona.service import machine
+    from desdemona.service.machinelog import Files
+
+    model = Model(config="yaw-track-cabin")
+    cfg, zero = model.config, np.zeros(model.n)
+
+    def setpoint(k):
+        return protocol.Setpoint(k, 0.01 * k, "starting", "park", None, 0.01 * (k - 1), 0.01, cfg.expand(zero),
+                                 cfg.expand(zero, "zero"), cfg.expand(zero, "zero"), cfg.expand(zero, "zero"))
+
+    report = machine.Report(out=tmp_path)
+    files = Files(tmp_path)
+    stand_in = machine._StandIn(model, machine.MachineOptions(key=KEY), None, report, files)
+    service = signing.Outgoing(KEY)
+    signed = [service.pack(setpoint(k)) for k in (1, 2, 3)]
+    datagrams = [signed[0], protocol.pack(setpoint(2)), signing.Outgoing(bytes(32)).pack(setpoint(2)), signed[1],
+                 signed[1], protocol.pack(protocol.Command(1, 0.0, "emergency stop")), signed[2]]
+    for k, data in enumerate(datagrams):
+        stand_in.datagram(data, ("127.0.0.1", 40001), 0.005 * k)
+    files.close()
+    assert report.received == 3 and report.dropped == {"unsigned": 2, "forged": 1, "replayed": 1}
+    assert stand_in.drive.status != "e-stop" and set(report.drop_samples) == set(report.dropped)
+
+
+def test_the_services_link_to_the_machine_with_a_key_takes_signed_states_only():
+    from desdemona.machine.model import Model
+    from desdemona.service.measured import MachineLink
+
+    model = Model(config="dfs")
+    link = MachineLink(model, 0.02, HOST, lost_after=0.5, key=KEY)
+    six = np.zeros(6)
+
+    def state(k):
+        return protocol.MachineState(k, 0.01 * k, "ready", "none", None, None, 0.0, six, six)
+
+    machine, restarted = signing.Outgoing(KEY), signing.Outgoing(KEY)
+    first = machine.pack(state(1))
+    takes = [link.take(data, HOST, 0.0) for data in (
+        first, protocol.pack(state(2)), signing.Outgoing(bytes(32)).pack(state(2)), first, machine.pack(state(2)),
+        restarted.pack(state(1)), machine.pack(state(3)))]
+    assert takes == ["", "unsigned", "forged", "replayed", "", "", "sender"]
+    assert link.received == 3 and link.newest.sequence == 1 and link.session == restarted.session
