@@ -187,10 +187,15 @@ def test_a_key_file_is_refused_with_one_line_when_malformed_or_readable_by_other
     with pytest.raises(ValueError, match=f"chmod 600 {good}"):
         signing.load_key(good)
     for argv in (["command", "estop", "--to", "127.0.0.1:9", "--key", str(good)],
-                 ["host", "replay", "dfs-catapult", "--to", "127.0.0.1:9", "--key", str(short)]):
+                 ["host", "replay", "dfs-catapult", "--to", "127.0.0.1:9", "--key", str(short)],
+                 ["machine", "--config", "dfs", "--listen", "127.0.0.1:9", "--out", str(tmp_path / "m"), "--key",
+                  str(good)],
+                 ["serve", "--config", "dfs", "--listen", "127.0.0.1:9", "--send", "127.0.0.1:9", "--out",
+                  str(tmp_path / "s"), "--key", str(short)]):
         assert main(argv) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and "--key" in err and "Traceback" not in err
+    assert not (tmp_path / "m").exists() and not (tmp_path / "s").exists()  # nothing written
 
 
 def test_the_machine_with_a_key_takes_signed_setpoints_only(tmp_path):
