@@ -25,8 +25,11 @@ from desdemona.service import protocol
 from desdemona.service.drops import Drops
 from desdemona.service.signing import Incoming, Outgoing
 
-#: Replaced sessions remembered (their late datagrams are stale, never a restart)
+#: Replaced sessions remembered (their late datagrams are never taken as a restart)
 RETIRED = 64
+#: The least time [s] between the last message of one session and the first of the next, on the
+#: session's clock (two datagrams read at the same clock reading stay in order)
+GAP = 1e-6
 
 
 class Inbox:
@@ -108,7 +111,7 @@ class Inbox:
             if why:
                 return self.drops(*why)
             if self.newest is not None:  # a new host, or the host restarted: its times continue the old
-                self.shift = self.t[-1] + (arrived - self.arrived) - message.time
+                self.shift = self.t[-1] + max(arrived - self.arrived, GAP) - message.time
                 self.retired[self.host] = None
                 while len(self.retired) > RETIRED:
                     del self.retired[next(iter(self.retired))]
