@@ -7,7 +7,7 @@ it are read, each newer than the last of its session. Whatever the key, motion i
 at a time, the **host**: the sender (address, port and session) of the first valid Motion. Another
 sender's Motion is dropped while the host is alive (a valid message within ``lost_after`` seconds);
 once the host is lost, the next valid Motion from anyone makes its sender the host. A host that
-restarts says so by a new session in its header (``docs/protocol.md``, section 7): from the host's
+restarts says so by a new session in its header (``docs/protocol.md``, section 2): from the host's
 address and port (or, with a key, from anywhere: the signature vouches for it) it is taken at once,
 its sequence counted afresh and its times continuing from where the old session left off. A sequence
 number or time at or below the last taken of the same session is stale, however long the host was

@@ -6,7 +6,7 @@ word ``DSDM`` (0x4D445344 read as a little-endian uint32), the protocol version 
 message (uint8), the flags (uint8: which trailers follow the message), the sender's sequence number
 (uint32) and the sender's time [s] (float64).
 
-Two trailers may follow a message, in this order (``docs/protocol.md``, section 7):
+Two trailers may follow a message, in this order (``docs/protocol.md``, section 2):
 
 - the **session** block (flag :data:`FLAG_SESSION`): a uint32 the sender draws at random when it starts,
   so that a receiver tells a restarted sender (a new session) from a stale datagram (an old sequence
@@ -102,7 +102,7 @@ MAX_FORECAST = 10_000
 MAX_JOINT_VALUE = 1e6
 
 
-#: Why a receiver drops a datagram: a fixed, small set (docs/protocol.md, section 8), so that counts
+#: Why a receiver drops a datagram: a fixed, small set (docs/protocol.md, section 7), so that counts
 #: keyed by it stay few whatever comes; the offending value goes into a sample, never into the key.
 REASONS = {
     "truncated": "shorter than its header, message or trailers",

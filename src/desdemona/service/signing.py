@@ -1,5 +1,5 @@
 """Who may speak to the machine: the shared key, the session and signature a sender puts on each of
-its datagrams, and a receiver's judgement of them (``docs/protocol.md``, section 7).
+its datagrams, and a receiver's judgement of them (``docs/protocol.md``, sections 2 and 7).
 
 - A **key** (:func:`load_key`) is 32 bytes written as 64 hex digits in a file only its owner may read,
   as ``openssl rand -hex 32 > FILE; chmod 600 FILE`` makes it.
