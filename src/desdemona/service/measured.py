@@ -50,7 +50,11 @@ class Tracking:
 class MachineLink:
     """The States of the motion system at ``address`` (the service's ``--send``), for ``model`` at the
     session's step ``h`` [s]: :meth:`take` a datagram; :meth:`tracking` of the newest State against the
-    commanded motion; ``lost_after`` [s] without a State (once they came) is a loss."""
+    commanded motion; ``lost_after`` [s] without a State (once they came) is a loss. With ``key`` only
+    signed States are taken; a new session of the motion system is its restart (its sequence counted
+    afresh, the old session's States never taken again); drops are counted by reason
+    (:class:`~desdemona.service.drops.Drops`, ``on_drop(line)`` at most once a second per reason of
+    ``clock``)."""
 
     def __init__(self, model, h: float, address: tuple[str, int], lost_after: float, key: bytes | None = None,
                  on_drop=None, clock=None):
