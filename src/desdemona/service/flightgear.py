@@ -82,7 +82,8 @@ def run(listen: tuple[str, int], to: tuple[str, int], modulus: bool = False, wai
         duration: float | None = None, say=None,
         key: bytes | None = None) -> dict:
     """Read FlightGear's native FDM packets on ``listen`` (host, port) and forward the checked motion
-    to ``serve`` at ``to`` until ``duration`` [s] or Ctrl-C (:func:`.bridge.run`: ``wait``, the result); ``key``: the shared key its messages are signed with."""
+    to ``serve`` at ``to`` until ``duration`` [s] or Ctrl-C (:func:`.bridge.run`: ``wait``, the result);
+    ``key``: the shared key its messages are signed with."""
     decode = decoder()
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sock:
         sock.bind(listen)

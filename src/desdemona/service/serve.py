@@ -231,7 +231,8 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
     is called once the service listens, with the number of host datagrams that came before (counted as
     dropped); ``on_drop(line)`` when datagrams are dropped, at most once a second per reason.
     ``inbound``: the host's socket (:func:`listening`), bound before the controller is built, so that
-    a port in use is said at once and what a host sends meanwhile is counted; None: bound to ``serving.listen``. ``log``, if given, a :class:`~desdemona.service.sessionlog.LiveLog` that gets
+    a port in use is said at once and what a host sends meanwhile is counted; None: bound to
+    ``serving.listen``. ``log``, if given, a :class:`~desdemona.service.sessionlog.LiveLog` that gets
     every cycle as it ends."""
     mpc = options.mpc
     predictors.check(options.predictor, True, options.reference is not None, options.forecast is not None)

@@ -88,8 +88,9 @@ def run(xplane: tuple[str, int], listen: tuple[str, int], to: tuple[str, int], r
         key: bytes | None = None) -> dict:
     """Subscribe to :data:`DATAREFS` at ``rate`` answers a second from the X-Plane at ``xplane`` (host,
     port), receiving on ``listen``, and forward the checked motion to ``serve`` at ``to`` until
-    ``duration`` [s] or Ctrl-C (:func:`.bridge.run`: ``wait``, the result); ``key``: the shared key its messages are signed with. The subscriptions are sent
-    again while nothing comes (X-Plane started after the bridge) and cancelled at the end."""
+    ``duration`` [s] or Ctrl-C (:func:`.bridge.run`: ``wait``, the result); ``key``: the shared key
+    its messages are signed with. The subscriptions are sent again while nothing comes (X-Plane
+    started after the bridge) and cancelled at the end."""
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sock:
         sock.bind(listen)
 
