@@ -84,7 +84,8 @@ def main(argv=None) -> int:
         print(f"| {name} | {sizes[0]} / {sizes[1]} | {1e6 * plain[0]:.1f} / {1e6 * signed[0]:.1f} | "
               f"{1e6 * plain[1]:.1f} / {1e6 * signed[1]:.1f} | {added:.1f} | "
               f"{1e6 * forged(message, args.n, args.repeats):.1f} |")
-    print(f"\nPython {sys.version.split()[0]}, load average {os.getloadavg()[0]:.2f}; measured {time.strftime('%Y-%m-%d')}.")
+    print(f"\nPython {sys.version.split()[0]}, load average {os.getloadavg()[0]:.2f}; measured "
+          f"{time.strftime('%Y-%m-%d')}.")
     return 0
 
 

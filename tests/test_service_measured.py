@@ -35,7 +35,8 @@ def test_bad_and_hostile_states_are_dropped_and_counted_never_taken(model):
     old_version = bytearray(good)
     struct.pack_into("<H", old_version, 4, 1)
     bad = [(good, ("10.0.0.9", 5501), "sender"), (good[:-3], MACHINE, "length"), (bytes(nan), MACHINE, "not finite"),
-           (bytes(old_version), MACHINE, "version"), (protocol.pack(protocol.Command(1, 0.0, "reset")), MACHINE, "kind")]
+           (bytes(old_version), MACHINE, "version"),
+           (protocol.pack(protocol.Command(1, 0.0, "reset")), MACHINE, "kind")]
     for data, sender, reason in bad:
         assert link.take(data, sender, 1.0) == reason
     assert link.newest is None and link.received == 0 and sum(link.dropped.values()) == len(bad)
