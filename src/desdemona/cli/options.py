@@ -7,7 +7,7 @@ import argparse
 import difflib
 
 from desdemona._version import __version__
-from desdemona.cli import bridges, commands, serviceoptions, serving
+from desdemona.cli import bridges, commands, serviceoptions, serving, studying
 from desdemona.cli.exits import EXIT_CODES, SEE_EXIT_CODES
 from desdemona.control import predictors
 from desdemona.machine.configs import CONFIGURATIONS
@@ -109,6 +109,7 @@ def build_parser() -> argparse.ArgumentParser:
     _add_time_option(batch, "each job")
     _add_view_option(batch)
     batch.set_defaults(run=commands.run_batch)
+    studying.add_parser(sub, _add_start_options, _add_session_options, _add_time_option)
 
     online = sub.add_parser(
         "online", epilog=SEE_EXIT_CODES, help="run the on-line MPC in closed loop on a desired path",
