@@ -56,6 +56,12 @@ def add_serve_arguments(serve) -> None:
                             "127.0.0.1)")
     serve.add_argument("--state-lost", type=float, default=0.5, metavar="SECONDS", dest="state_lost",
                        help="park when the machine's States, once they came, stop for this long (default: 0.5)")
+    serve.add_argument("--console", default=None, metavar="HOST:PORT",
+                       help="serve the operator's console (a live page with pause, park, resume, emergency stop) "
+                            "at http://HOST:PORT/, e.g. 127.0.0.1:8765; any address but loopback needs a token")
+    serve.add_argument("--console-token", default=None, metavar="FILE", dest="console_token",
+                       help="the console's token, in a file only you may read (default: none on loopback, "
+                            "else a new one, printed at start)")
 
 
 def add_machine_arguments(machine) -> None:

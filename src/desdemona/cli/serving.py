@@ -12,6 +12,7 @@ import numpy as np
 
 from desdemona import profiles
 from desdemona.cli.commands import _inputs, _machine, _result_folder
+from desdemona.cli.console import ending, live_console
 from desdemona.cli.exits import EXIT_USAGE, UserError
 from desdemona.runs import session
 
@@ -41,6 +42,7 @@ def run_serve(args) -> int:
                             horizon=args.horizon, reach=args.reach, predictor=args.predictor, reference=reference,
                             tail_step=args.tail_step)
     options = resolved.options
+    console = live_console(args, model, options.mpc.step)  # bound before the session: a port in use said at once
 
     def say_ready(early):
         before = (f"; {early} host datagram{'s' if early != 1 else ''} came before it was ready (dropped: start "
@@ -59,11 +61,14 @@ def run_serve(args) -> int:
         log = sessionlog.LiveLog(out, model.config.joint_names, report.RESULT_FORMAT)
         say_ready(early)
 
+    served = None
     try:
         served = serve.serve(model, options, serving, ready=ready, on_drop=dropping, inbound=inbound,
-                             log=_Later(lambda: log))
+                             log=_Later(lambda: log), console=console)
     finally:
         logged = None if log is None else log.close()
+        if console is not None:
+            console.close(ending(served))
     if not np.any(served.columns["status"] == "running"):
         dropped = sum(served.dropped.values())
         print(f"desdemona: the session never followed the host: no valid motion came to {args.listen} "

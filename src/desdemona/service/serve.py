@@ -58,17 +58,8 @@ from desdemona.service.measured import (
 )
 from desdemona.service.sessionlog import describe, events_table, session_table, summary
 
-__all__ = [
-    "ServeOptions",
-    "Served",
-    "default_channels",
-    "describe",
-    "events_table",
-    "result",
-    "serve",
-    "session_table",
-    "summary",
-]
+__all__ = ["ServeOptions", "Served", "default_channels", "describe", "events_table", "result", "serve",
+           "session_table", "summary"]
 from desdemona.support import guard
 from desdemona.support.symbolic import call
 
@@ -223,7 +214,7 @@ def _discard_queued(sock: socket.socket) -> int:
 
 
 def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=time.monotonic, ready=None,
-          on_drop=None, inbound: socket.socket | None = None, log=None) -> Served:
+          on_drop=None, inbound: socket.socket | None = None, log=None, console=None) -> Served:
     """Run a session (see the module's docstring) until ``serving.duration``, ``serving.quiet_end`` or
     a stop signal; returns what it did. The controller's options are ``options.mpc`` (a plan every
     step: the session's step is the cycle); its predictor ``options.predictor``
@@ -233,7 +224,8 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
     ``inbound``: the host's socket (:func:`listening`), bound before the controller is built, so that
     a port in use is said at once and what a host sends meanwhile is counted; None: bound to
     ``serving.listen``. ``log``, if given, a :class:`~desdemona.service.sessionlog.LiveLog` that gets
-    every cycle as it ends."""
+    every cycle as it ends; ``console``, a :class:`~desdemona.service.console.Console` handed each cycle
+    as it ends, whose operators' commands are taken as Command datagrams are."""
     mpc = options.mpc
     predictors.check(options.predictor, True, options.reference is not None, options.forecast is not None)
     if mpc.replan_steps != 1:
@@ -263,8 +255,9 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             # stopping, the cycles keep their times; else each starts as a new host message comes
             inbox.wait(start + k * h, np.inf) if stops else inbox.wait(closes, opens)
             began = clock()
-            for _, action in inbox.commands:  # logged at the cycle that acts on it, as every event
-                session.operator(action, k * h)
+            commands = inbox.commands + (console.commands() if console is not None else [])
+            for _, action, *who in commands:  # logged at the cycle that acts on it, as every event
+                session.operator(action, k * h, *who)
                 if action in ("emergency stop", "reset"):  # the motion system's own: passed on
                     _send(outbound, protocol.Command(len(session.events), began - start, action), serving.send, inbox)
             inbox.commands = []
@@ -287,8 +280,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             sent = clock()
             session.record(k, compute=sent - began, age=np.nan if inbox.arrived is None else began - inbox.arrived,
                            latency=sent - inbox.arrived if answered else np.nan)
-            if log is not None:
-                _log(log, session, link.newest, model.config)
+            _log(log, console, session, inbox, link, model.config)
             k += 1
             quiet = inbox.arrived is not None and clock() - inbox.arrived > (serving.quiet_end or np.inf)
             if ((stops and (session.status == "parked" or len(stops) > 1))
@@ -304,11 +296,16 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
                   reanchored=session.reanchored, breaks=session.breaks)
 
 
-def _log(log, session: _Session, state: protocol.MachineState | None, config) -> None:
-    """The cycle just recorded, into the session's log as it goes: commanded and measured beside."""
-    measured = None if state is None else (config.select(state.position), config.select(state.rate),
-                                           state.applied_time)
-    log.cycle(session.rows[-1], session.starts[-1][:2], measured, session.events)
+def _log(log, console, session: _Session, inbox: _Inbox, link: MachineLink, config) -> None:
+    """The cycle just recorded, into the session's log as it goes (commanded and measured beside) and
+    handed to the console (each where given)."""
+    state = link.newest
+    if log is not None:
+        measured = None if state is None else (config.select(state.position), config.select(state.rate),
+                                               state.applied_time)
+        log.cycle(session.rows[-1], session.starts[-1][:2], measured, session.events)
+    if console is not None:
+        console.publish(session, inbox, link)
 
 
 def _send(sock: socket.socket, message, to, inbox: Inbox) -> None:
@@ -354,10 +351,10 @@ class _Session:
     def event(self, t: float, what: str, detail: str = "") -> None:
         self.events.append((t, what, detail))
 
-    def operator(self, action: str, t: float) -> None:
+    def operator(self, action: str, t: float, who: str = "") -> None:
         """An operator's Command: pause, park (the same, the controller then plans afresh), resume,
-        emergency stop (parked until a reset), reset."""
-        self.event(t, f"command {action}")
+        emergency stop (parked until a reset), reset; ``who`` sent it (the console's client)."""
+        self.event(t, f"command {action}", who)
         if action in ("pause", "park", "emergency stop"):
             self.paused = action
             if action == "park":
