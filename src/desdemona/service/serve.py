@@ -291,12 +291,11 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
     return Served(loop=session.loop(), columns=session.columns(), received_t=np.asarray(inbox.t) + offset,
                   received=np.asarray(inbox.values).reshape(len(inbox.t), channels),
                   dropped=inbox.dropped + link.dropped, drop_samples={**link.drops.sample(), **inbox.drops.sample()},
-                  stopped_by=stops[0] if stops else None,
-                  deadline=controller.deadline, offset=offset, events=session.events, states=link.received,
-                  reanchored=session.reanchored, breaks=session.breaks)
+                  stopped_by=stops[0] if stops else None, deadline=controller.deadline, offset=offset,
+                  events=session.events, states=link.received, reanchored=session.reanchored, breaks=session.breaks)
 
 
-def _log(log, console, session: _Session, inbox: _Inbox, link: MachineLink, config) -> None:
+def _log(log, console, session: _Session, inbox: Inbox, link: MachineLink, config) -> None:
     """The cycle just recorded, into the session's log as it goes (commanded and measured beside) and
     handed to the console (each where given)."""
     state = link.newest
