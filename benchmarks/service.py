@@ -3,6 +3,7 @@
     python benchmarks/service.py                      # every run below, the table into docs/benchmarks/real-time-service.md
     python benchmarks/service.py --runs dfs-50        # one run
     python benchmarks/service.py --table-only         # re-read the folders, rewrite the table
+    python benchmarks/service.py --runs dfs-50 --key  # the same run, every datagram signed (``--key``)
 
 Each run starts three processes, as a user would (docs/guide/serve.md): the motion
 system's stand-in (``desdemona machine``), the service (``desdemona serve``, the ``hold`` predictor,
@@ -23,7 +24,9 @@ any limit, position to jerk, or of continuity), the felt-force RMS of the served
 ``desdemona online`` with the same predictor on the imported recording of the same flight at the
 host's rate (``desdemona import jsbsim --rate``), both judged against that recording, and how long parking took once the host had
 ended, against the time the limits allow. The lossy run adds when it parked and when it resumed.
-The machine's load average is recorded before and after.
+The machine's load average is recorded before and after. With ``--key`` the three processes share
+a key (made once, ``service-results/key``) and sign every datagram; such a run is written to
+``NAME-key`` and is its own row of the table.
 """
 
 from __future__ import annotations
@@ -32,6 +35,7 @@ import argparse
 import csv
 import json
 import os
+import secrets
 import socket
 import subprocess
 import sys
@@ -69,16 +73,17 @@ def _desdemona(*args) -> list[str]:
     return [sys.executable, "-m", "desdemona", *map(str, args)]
 
 
-def start_pair(config: str, folder: Path, listen: int, send: int, rate: float, idle: float, *serve_args):
+def start_pair(config: str, folder: Path, listen: int, send: int, rate: float, idle: float, *serve_args, both=()):
     """The stand-in (``folder/machine``, ending ``idle`` seconds after the last setpoint) and the service
-    (``folder/served``, no view) on 127.0.0.1, the host's messages to ``listen``, the setpoints to
-    ``send``; each one's output on its stdout (the service's stderr too)."""
+    (``folder/served``, no view, ``serve_args``) on 127.0.0.1, the host's messages to ``listen``, the
+    setpoints to ``send``, ``both`` given to each (a key); each one's output on its stdout (the
+    service's stderr too)."""
     machine = subprocess.Popen(_desdemona("machine", "--config", config, "--listen", f"127.0.0.1:{send}",
-                                          "--out", folder / "machine", "--idle", idle),
+                                          "--out", folder / "machine", "--idle", idle, *both),
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     server = subprocess.Popen(_desdemona("serve", "--config", config, "--listen", f"127.0.0.1:{listen}",
                                          "--send", f"127.0.0.1:{send}", "--rate", rate, "--out", folder / "served",
-                                         "--overwrite", "--no-view", *serve_args),
+                                         "--overwrite", "--no-view", *serve_args, *both),
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     return machine, server
 
@@ -94,18 +99,30 @@ def recording(modulus: bool, rate: float) -> Path:
     return out
 
 
-def serve_run(name: str) -> dict:
-    """One run of the three processes; returns what the table needs."""
+def key_file() -> Path:
+    """The runs' shared key, made once (as ``openssl rand -hex 32`` makes one), readable by its owner only."""
+    path = RESULTS / "key"
+    if not path.exists():
+        RESULTS.mkdir(parents=True, exist_ok=True)
+        path.touch(mode=0o600)
+        path.write_text(secrets.token_hex(32) + "\n")
+    return path
+
+
+def serve_run(name: str, signed: bool = False) -> dict:
+    """One run of the three processes (``signed``: sharing a key); returns what the table needs."""
     config, rate, modulus, lossy, tail = RUNS[name]
-    folder = RESULTS / name
+    folder = RESULTS / (f"{name}-key" if signed else name)
     folder.mkdir(parents=True, exist_ok=True)
     listen, send = _port(), _port()
-    machine, server = start_pair(config, folder, listen, send, rate, 3, "--tail-step", tail, "--quiet-end", 1.0)
+    key = ["--key", key_file()] if signed else []
+    machine, server = start_pair(config, folder, listen, send, rate, 3, "--tail-step", tail, "--quiet-end", 1.0,
+                                 both=key)
     server.stdout.readline()  # "serving ...": the controller is built (and compiled), the service listens
     host = [*(["--modulus"] if modulus else []),
             *(["--drop", DROP, "--outage", f"{OUTAGE[0]},{OUTAGE[1]}"] if lossy else [])]
     subprocess.run(_desdemona("host", "jsbsim", SCRIPT, "--to", f"127.0.0.1:{listen}", "--start", START,
-                              "--end", STOP, "--rate", rate, *host), check=True)
+                              "--end", STOP, "--rate", rate, *host, *key), check=True)
     served_out, _ = server.communicate(timeout=120)
     try:
         machine_out, _ = machine.communicate(timeout=30)
@@ -118,7 +135,7 @@ def serve_run(name: str) -> dict:
     subprocess.run(_desdemona("online", recording(modulus, rate), "--config", config, "--predictor", "hold",
                               "--step", 1.0 / rate, "--tail-step", tail, "--initial", "home", "--out", online, "--overwrite",
                               "--no-view"), check=True, capture_output=True)
-    return {"name": name, "served_rc": server.returncode, "machine_rc": machine.returncode}
+    return {"name": folder.name, "served_rc": server.returncode, "machine_rc": machine.returncode}
 
 
 def _felt_force_rms(folder: Path, recording: Path, modulus: bool, offset: float = 0.0) -> float:
@@ -143,17 +160,17 @@ def _cycles(folder: Path) -> list[dict]:
         return list(csv.DictReader(fh))
 
 
-def measure(name: str) -> dict:
+def measure(name: str, signed: bool = False) -> dict:
     """The table's row of a run, from its folders."""
     config, rate, modulus, lossy, tail = RUNS[name]
-    folder = RESULTS / name
+    folder = RESULTS / (f"{name}-key" if signed else name)
     served = json.loads((folder / "served" / "summary.json").read_text())
     service = served["service"]
     stand_in = json.loads((folder / "machine" / "summary.json").read_text())
     cycles = _cycles(folder / "served")
     running = [float(c["t"]) for c in cycles if c["status"] == "running"]
     reference = recording(modulus, rate)
-    row = {"run": name, "config": config, "rate": rate, "tail": tail, "latency_ms": {k: 1e3 * v for k, v in service["latency_s"].items()},
+    row = {"run": name + (", signed" if signed else ""), "config": config, "rate": rate, "tail": tail, "latency_ms": {k: 1e3 * v for k, v in service["latency_s"].items()},
            "over_deadline": service["compute_over_deadline"], "cycles": service["cycles"],
            "dropped": sum(service["dropped"].values()), "violations": stand_in.get("violations", stand_in.get("counts")),
            "passed": stand_in["passed"], "received": service["received"],
@@ -217,14 +234,16 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--runs", nargs="+", choices=tuple(RUNS), default=list(RUNS))
     parser.add_argument("--table-only", action="store_true")
+    parser.add_argument("--key", action="store_true", help="sign every datagram with a shared key")
     args = parser.parse_args(argv)
     loads = RESULTS / "load.json"  # the machine's load while the runs ran, kept for --table-only
     if not args.table_only:
         before = os.getloadavg()[0]
         for name in args.runs:
-            print(serve_run(name), flush=True)
+            print(serve_run(name, args.key), flush=True)
         loads.write_text(json.dumps([before, os.getloadavg()[0]]))
-    rows = [measure(name) for name in RUNS if (RESULTS / name / "served" / "summary.json").exists()]
+    rows = [measure(name, signed) for name in RUNS for signed in (False, True)
+            if (RESULTS / (f"{name}-key" if signed else name) / "served" / "summary.json").exists()]
     text = table(rows, tuple(json.loads(loads.read_text())))
     print(text)
     tables.replace_between(BEGIN, END, text, "Real-time service", DOCS)

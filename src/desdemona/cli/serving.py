@@ -23,13 +23,15 @@ def run_serve(args) -> int:
     from desdemona.service.livetrajectory import LiveTrajectory
 
     model = _machine(args)
+    key = key_of(args)  # before the folder: a key refused leaves nothing behind
     out = _result_folder(args)
     channels = args.channels or serve.default_channels(model.config)
     try:
         listen, send = protocol.address(args.listen, "--listen"), protocol.address(args.send, "--send")
         serving = serve.ServeOptions(listen=listen, send=send,
                                      channels=channels, timeout=args.timeout, duration=args.duration,
-                                     quiet_end=args.quiet_end, operator=args.operator, state_lost=args.state_lost)
+                                     quiet_end=args.quiet_end, operator=args.operator, state_lost=args.state_lost,
+                                     key=key)
     except ValueError as exc:
         raise UserError(str(exc)) from None
     try:  # bound before the controller is built (seconds): a port in use is said at once
@@ -50,8 +52,8 @@ def run_serve(args) -> int:
               f"{args.listen}, setpoints to {args.send}; Ctrl-C parks the machine and ends the session{before}",
               file=sys.stderr, flush=True)
 
-    def dropping(reason):
-        print(f"desdemona: dropping datagrams: {reason}", file=sys.stderr, flush=True)
+    def dropping(line):  # at most one a second per reason (service.drops)
+        print(f"desdemona: dropping datagrams: {line}", file=sys.stderr, flush=True)
 
     log = None
 
@@ -96,6 +98,7 @@ def run_machine(args) -> int:
     from desdemona.service import machine, protocol, servo
 
     model = _machine(args)
+    key = key_of(args)
     try:
         listen = protocol.address(args.listen, "--listen")
         options = machine.MachineOptions(
@@ -103,7 +106,8 @@ def run_machine(args) -> int:
             bandwidth_hz=servo.BANDWIDTH_HZ if args.bandwidth is None else args.bandwidth,
             noise=servo.NOISE if args.noise is None else tuple(args.noise), state_rate=args.state_rate,
             timeout=args.timeout, late=args.late, fault=None if args.fault is None else machine.parse_fault(args.fault),
-            operator=args.operator, seed=args.seed, state_outage=_pair(args.state_outage, "--state-outage"))
+            operator=args.operator, seed=args.seed, state_outage=_pair(args.state_outage, "--state-outage"),
+            key=key)
         report = machine.run(model, listen, args.out, idle=args.idle, duration=args.duration, options=options)
     except ValueError as exc:
         raise UserError(str(exc)) from None
@@ -133,8 +137,9 @@ def _pair(text: str | None, option: str) -> tuple[float, float] | None:
 
 
 def run_command(args) -> int:
-    from desdemona.service import protocol
+    from desdemona.service import protocol, signing
 
+    outgoing = signing.Outgoing(key_of(args))
     try:
         to = protocol.address(args.to, "--to")
     except ValueError as exc:
@@ -144,7 +149,7 @@ def run_command(args) -> int:
     message = protocol.Command(int(time.time() * 1e3) & 0xFFFFFFFF, time.time(), action)
     try:
         with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sock:
-            sock.sendto(protocol.pack(message), to)
+            sock.sendto(outgoing.pack(message), to)
     except OSError as exc:
         raise UserError(f"--to {args.to}: {exc.strerror or exc}") from None
     print(f"sent {action} to {args.to}")
@@ -160,7 +165,20 @@ def _host_options(args) -> dict:
     except ValueError as exc:
         raise UserError(str(exc)) from None
     return {"to": to, "speed": args.speed, "forecast": args.forecast, "modulus": args.modulus, "drop": args.drop,
-            "outage": outage, "seed": args.seed}
+            "outage": outage, "seed": args.seed, "key": key_of(args)}
+
+
+def key_of(args) -> bytes | None:
+    """The shared key of ``--key FILE`` (None without one); :class:`UserError` (one line, exit 2) where
+    the file cannot be used: missing, not 64 hex digits, or readable by others than its owner."""
+    from desdemona.service import signing
+
+    if args.key is None:
+        return None
+    try:
+        return signing.load_key(args.key)
+    except ValueError as exc:
+        raise UserError(str(exc)) from None
 
 
 def _say_sent(counts: dict, to: str) -> None:

@@ -18,7 +18,8 @@ end-to-end latency is the compute time), else at the window's end with what it h
   rest within every limit (``parking``), then held (``parked``); when valid messages return, the
   controller plans afresh from where it stands (``running``).
 - **Bad datagrams** (not this protocol, NaN, absurd values, the wrong channels, out of order or
-  repeated): dropped and counted by reason, never used.
+  repeated, from another sender than the host, unsigned, forged or replayed with a key): dropped and
+  counted by one of the protocol's fixed reasons, never used (:mod:`desdemona.service.inbox`).
 - **Stop**: SIGINT or SIGTERM parks the machine and then ends the session; a second one ends it at
   once after one braking command.
 
@@ -31,7 +32,6 @@ end-to-end latency is the compute time), else at the window's end with what it h
 from __future__ import annotations
 
 import math
-import selectors
 import socket
 import time
 from collections import Counter
@@ -49,6 +49,7 @@ from desdemona.machine.params import JOINT_NAMES
 from desdemona.machine.plan import Plan, State, stopping_jerk
 from desdemona.profiles import DesiredPath, ProfileError
 from desdemona.service import protocol
+from desdemona.service.inbox import Inbox
 from desdemona.service.measured import (
     BAND,
     STOPPED_ON_ITS_OWN,
@@ -97,6 +98,7 @@ class ServeOptions:
     history: float = 10.0
     operator: str = "127.0.0.1"
     state_lost: float = 0.5
+    key: bytes | None = field(default=None, repr=False)
 
     def __post_init__(self):
         if self.channels not in (None, 1, 6):
@@ -121,6 +123,7 @@ class Served:
     received_t: np.ndarray
     received: np.ndarray
     dropped: Counter = field(default_factory=Counter)
+    drop_samples: dict = field(default_factory=dict)  # reason -> the first datagrams' details
     stopped_by: int | None = None
     deadline: float = 0.0
     offset: float = 0.0  # the session's time [s] of the host's time 0
@@ -160,106 +163,6 @@ class Served:
         return model.config.cue_path(_host_path(t, values, "received from the host")), loop
 
 
-class _Inbox:
-    """The host's datagrams: read without blocking, checked, the newest valid message kept; the motion
-    received so far for the predictor and the log, on the host's clock. A host that starts again
-    (its sequence and time from the beginning) after it has been silent for ``restart_after`` seconds
-    is taken as the same host back: its times continue from where it left off. ``on_drop(reason)`` is
-    told of each new reason to drop a datagram. ``machine`` = (the sending socket, its
-    :class:`MachineLink`): the States that come back to it; Commands are taken from the host
-    ``operator`` only; ``early``: datagrams dropped before the session began."""
-
-    def __init__(self, sock: socket.socket, channels: int, clock, restart_after: float = np.inf, on_drop=None,
-                 machine: tuple[socket.socket, MachineLink] | None = None, operator: str = "127.0.0.1",
-                 early: int = 0):
-        self.sock, self.channels, self.clock = sock, channels, clock
-        self.restart_after, self.on_drop = restart_after, on_drop
-        self.shift = 0.0  # added to a returning host's times
-        self.selector = selectors.DefaultSelector()
-        self.selector.register(sock, selectors.EVENT_READ)
-        self.machine, self.operator = machine, operator
-        if machine is not None:
-            machine[0].setblocking(False)
-            self.selector.register(machine[0], selectors.EVENT_READ)
-        self.commands: list[tuple[float, str]] = []  # (arrived, action) not yet acted on
-        self.last_command: dict = {}
-        self.dropped: Counter = Counter({"came before the service was ready": early} if early else {})
-        self.newest: protocol.Motion | None = None
-        self.arrived = None  # clock time the newest message arrived
-        self.fresh = False  # a message came since the last cycle took one
-        self.t, self.values, self.arrivals = [], [], []
-
-    def wait(self, until: float, opens: float) -> None:
-        """Read what comes until ``until`` (clock), returning early once a new message has come and the
-        cycle's window has opened (``opens``)."""
-        while True:
-            self.drain()
-            now = self.clock()
-            if now >= until or (self.fresh and now >= opens):
-                return
-            self.selector.select((min(opens, until) if self.fresh else until) - now)
-
-    def drain(self) -> None:
-        if self.machine is not None:
-            sock, link = self.machine
-            for data, sender in _datagrams(sock, self.dropped):
-                reason = link.take(data, sender, self.clock())
-                if reason and link.dropped[reason] == 1 and self.on_drop is not None:
-                    self.on_drop(reason)
-        for data, sender in _datagrams(self.sock, self.dropped):
-            self._take(data, self.clock(), sender)
-
-    def _take(self, data: bytes, arrived: float, sender=("", 0)) -> None:
-        try:
-            message = protocol.unpack(data)
-        except protocol.ProtocolError as exc:
-            return self._drop(str(exc).split(":")[0])
-        if isinstance(message, protocol.Command):
-            if sender[0] != self.operator:
-                return self._drop("command from an unexpected address")
-            if message.sequence <= self.last_command.get(sender, -1):
-                return self._drop("command out of order or repeated")
-            self.last_command[sender] = message.sequence
-            self.commands.append((arrived, message.action))
-            return None
-        if not isinstance(message, protocol.Motion):
-            return self._drop("not a motion message")
-        if message.channels != self.channels:
-            return self._drop(f"{message.channels} channels, the session takes {self.channels} (--channels)")
-        if self.newest is not None and (message.sequence <= self.newest.sequence
-                                        or message.time + self.shift <= self.t[-1]):
-            if arrived - self.arrived <= self.restart_after:
-                return self._drop("out of order or repeated")
-            self.shift = self.t[-1] + (arrived - self.arrived) - message.time  # the host is back, restarted
-        self.newest, self.arrived, self.fresh = message, arrived, True
-        self.t.append(message.time + self.shift)
-        self.values.append(message.values)
-        self.arrivals.append(arrived)
-
-    def _drop(self, reason: str) -> None:
-        self.dropped[reason] += 1
-        if self.dropped[reason] == 1 and self.on_drop is not None:
-            self.on_drop(reason)
-
-    def recent(self, seconds: float) -> tuple[np.ndarray, np.ndarray]:
-        """(t, values) of the motion of the last ``seconds`` (host time)."""
-        start = len(self.t)
-        while start > 0 and self.t[start - 1] > self.t[-1] - seconds:
-            start -= 1
-        return np.asarray(self.t[start:]), np.asarray(self.values[start:])
-
-
-def _datagrams(sock: socket.socket, dropped: Counter):
-    """The datagrams waiting on a non-blocking ``sock``: (data, sender) each."""
-    while True:
-        try:
-            yield sock.recvfrom(65536)
-        except (BlockingIOError, InterruptedError):
-            return
-        except OSError:  # e.g. an ICMP error for an earlier send: not a message
-            dropped["socket error"] += 1
-
-
 class _Preview:
     """The session's predictor over what the host has sent (``forecast``: the host's own block)."""
 
@@ -267,7 +170,7 @@ class _Preview:
         self.name, self.model, self.horizon, self.history = name, model, horizon, history
         self.predict = None if name == "forecast" else predictor(name, reference)
 
-    def __call__(self, inbox: _Inbox):
+    def __call__(self, inbox: Inbox):
         message = inbox.newest
         if self.name == "forecast":
             if message.forecast is None:
@@ -317,9 +220,9 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
     step: the session's step is the cycle); its predictor ``options.predictor``
     (one that may run live, :data:`desdemona.control.predictors.PREDICTORS`). ``ready(early)``, if given,
     is called once the service listens, with the number of host datagrams that came before (counted as
-    dropped); ``on_drop(reason)`` the first time a datagram is dropped for a reason. ``inbound``: the
-    host's socket (:func:`listening`), bound before the controller is built, so that a port in use is
-    said at once and what a host sends meanwhile is counted, not lost unseen; None: bound here to
+    dropped); ``on_drop(line)`` when datagrams are dropped, at most once a second per reason.
+    ``inbound``: the host's socket (:func:`listening`), bound before the controller is built, so that
+    a port in use is said at once and what a host sends meanwhile is counted; None: bound to
     ``serving.listen``. ``log``, if given, a :class:`~desdemona.service.sessionlog.LiveLog` that gets
     every cycle as it ends; ``console``, a :class:`~desdemona.service.console.Console` handed each cycle
     as it ends, whose operators' commands are taken as Command datagrams are."""
@@ -341,9 +244,9 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
         early = _discard_queued(inbound)
         if ready is not None:
             ready(early)
-        link = MachineLink(model, h, serving.send, serving.state_lost)
-        inbox = _Inbox(inbound, channels, clock, serving.timeout * h, on_drop, machine=(outbound, link),
-                       operator=serving.operator, early=early)
+        link = MachineLink(model, h, serving.send, serving.state_lost, key=serving.key, on_drop=on_drop, clock=clock)
+        inbox = Inbox(inbound, channels, clock, serving.timeout * h, on_drop, machine=(outbound, link),
+                      operator=serving.operator, early=early, key=serving.key)
         session = _Session(model, controller, h, guard_use)
         start = clock()
         k = 0
@@ -387,12 +290,12 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
     offset = inbox.arrivals[0] - start - inbox.t[0] if inbox.t else 0.0
     return Served(loop=session.loop(), columns=session.columns(), received_t=np.asarray(inbox.t) + offset,
                   received=np.asarray(inbox.values).reshape(len(inbox.t), channels),
-                  dropped=inbox.dropped + link.dropped, stopped_by=stops[0] if stops else None,
-                  deadline=controller.deadline, offset=offset, events=session.events, states=link.received,
-                  reanchored=session.reanchored, breaks=session.breaks)
+                  dropped=inbox.dropped + link.dropped, drop_samples={**link.drops.sample(), **inbox.drops.sample()},
+                  stopped_by=stops[0] if stops else None, deadline=controller.deadline, offset=offset,
+                  events=session.events, states=link.received, reanchored=session.reanchored, breaks=session.breaks)
 
 
-def _log(log, console, session: _Session, inbox: _Inbox, link: MachineLink, config) -> None:
+def _log(log, console, session: _Session, inbox: Inbox, link: MachineLink, config) -> None:
     """The cycle just recorded, into the session's log as it goes (commanded and measured beside, what
     the host asked) and handed to the console (each where given)."""
     state = link.newest
@@ -405,11 +308,11 @@ def _log(log, console, session: _Session, inbox: _Inbox, link: MachineLink, conf
         console.publish(session, inbox, link)
 
 
-def _send(sock: socket.socket, message, to, inbox: _Inbox) -> None:
+def _send(sock: socket.socket, message, to, inbox: Inbox) -> None:
     try:
-        sock.sendto(protocol.pack(message), to)
+        sock.sendto(inbox.outgoing.pack(message), to)
     except OSError as exc:  # the machine's port: nothing to do but count it
-        inbox.dropped[f"{type(message).__name__.lower()} not sent: {exc.strerror or exc}"] += 1
+        inbox.drops("socket", f"{type(message).__name__.lower()} not sent: {exc.strerror or exc}")
 
 
 class _Session:
