@@ -106,7 +106,7 @@ class Relay(threading.Thread):
         self.queue: list = []  # (due, order, datagram)
         self.order = 0
         self.last = None  # (sequence in, time out) of the last motion passed on
-        self.shift = 0.0
+        self.shift, self.session = 0.0, None  # added to the times; the stream's session
         self.quiet_until = 0.0
         self.counts = {"received": 0, "sent": 0, "lost": 0, "duplicated": 0, "reordered": 0, "outage": 0,
                        "flights joined": 0, "host restarts passed on": 0}
@@ -162,22 +162,27 @@ class Relay(threading.Thread):
         self.order += 1
 
     def _joined(self, data: bytes) -> bytes:
+        """The datagram as the service gets it: a flight of the same host process (its sequence running
+        on, its times and its sender's session starting afresh) moved to continue the stream, under
+        the stream's session; a new host process (its sequence starting over) passed on as it is."""
         try:
-            message = self.protocol.unpack(data)
+            frame = self.protocol.read(data)
         except self.protocol.ProtocolError:
             return data
+        message = frame.message
         if not isinstance(message, self.protocol.Motion):
             return data
-        if self.last is not None and message.sequence < self.last[0]:
-            self.shift = 0.0  # a new host process: passed on as it comes
-            self.counts["host restarts passed on"] += 1
-        elif self.last is not None and message.time + self.shift <= self.last[1]:
+        if self.last is None or message.sequence < self.last[0]:
+            if self.last is not None:
+                self.counts["host restarts passed on"] += 1
+            self.shift, self.session = 0.0, frame.session  # a new host process: passed on as it comes
+        elif message.time + self.shift <= self.last[1]:
             self.shift = self.last[1] + 1.0 / RATE - message.time  # the next flight of the same host
             self.counts["flights joined"] += 1
         self.last = (message.sequence, message.time + self.shift)
-        if self.shift == 0.0:
+        if self.shift == 0.0 and frame.session == self.session:
             return data
-        return self.protocol.pack(dataclasses.replace(message, time=message.time + self.shift))
+        return self.protocol.pack(dataclasses.replace(message, time=message.time + self.shift), self.session)
 
 
 # ----------------------------------------------------------------------------------------------
