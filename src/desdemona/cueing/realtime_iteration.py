@@ -61,7 +61,7 @@ class RealTimeIteration:
         x_next, _, g_stage = prob.stage(x, u, d)
         self.splits = not (ca.depends_on(dr, values) or ca.depends_on(ca.vertcat(x_next, g_stage), values))
         M = dgrad.map(N, "serial")(XU[:nx, :], XU[nx:, :], data)
-        prepared = ca.Function("qp_prepared", [w, p], [H, gradient, A, g, M])
+        prepared = ca.Function("qp_dgradient", [w, p], [M])
         qp_data, prepared_data = self._evaluated([graph, prepared], compile)
         self._stage_data, self._N, self._head, self._nw = d.numel(), N, prob.n_head, nw
         options = {"error_on_fail": False, "print_time": False}
@@ -109,9 +109,8 @@ class RealTimeIteration:
         # the gradient's structural zeros (the end state's) are not among the data's nonzeros
         self._gradient_rows = np.asarray(data.sparsity_out(1).row(), dtype=int)
         self._data_buffer, self._eval_data = bound(data, {0: self._w, 1: self._p}, dict(enumerate(self._out)))
-        self._blocks = np.zeros(self.prepared_data.nnz_out(4))
-        self._prepared_buffer, self._eval_prepared = bound(self.prepared_data, {0: self._w, 1: self._p},
-                                                           {**dict(enumerate(self._out)), 4: self._blocks})
+        self._blocks = np.zeros(self.prepared_data.nnz_out(0))
+        self._prepared_buffer, self._eval_prepared = bound(self.prepared_data, {0: self._w, 1: self._p}, {0: self._blocks})
 
     def _qp_buffer(self):
         """A new buffer of the QP's arrays for each solve (0.05-0.09 ms): HPIPM's plugin depends on
@@ -143,6 +142,7 @@ class RealTimeIteration:
         if not self.splits:
             return
         self._w[:], self._p[:] = w, p
+        self._eval_data()
         self._eval_prepared()
         self._qp_in["g"][self._gradient_rows] = self._out[1]
         self._bounds(bounds)

@@ -48,14 +48,14 @@ from desdemona.machine.model import Model
 from desdemona.machine.params import JOINT_NAMES
 from desdemona.machine.plan import Plan, State, stopping_jerk
 from desdemona.profiles import DesiredPath, ProfileError
-from desdemona.service import protocol
+from desdemona.service import pacing, protocol
 from desdemona.service.measured import (
     BAND,
     STOPPED_ON_ITS_OWN,
     MachineLink,
     commanded_at,
 )
-from desdemona.service.sessionlog import describe, events_table, session_table, summary
+from desdemona.service.sessionlog import TIMED, describe, events_table, session_table, summary
 
 __all__ = [
     "ServeOptions",
@@ -181,7 +181,7 @@ class _Inbox:
     def __init__(self, sock: socket.socket, channels: int, clock, restart_after: float = np.inf, on_drop=None,
                  machine: tuple[socket.socket, MachineLink] | None = None, operator: str = "127.0.0.1",
                  early: int = 0):
-        self.sock, self.channels, self.clock = sock, channels, clock
+        self.sock, self.channels, self.clock = pacing.stamped(sock), channels, clock
         self.restart_after, self.on_drop = restart_after, on_drop
         self.shift = 0.0  # added to a returning host's times
         self.selector = selectors.DefaultSelector()
@@ -204,19 +204,21 @@ class _Inbox:
         while True:
             self.drain()
             now = self.clock()
-            if now >= until or (self.fresh and now >= opens):
+            # a stale message is answered as the window opens unless the host's next is due in it (pacing)
+            begins = opens if self.fresh and not pacing.newer_due(self.arrivals, opens, until) else until
+            if now >= min(begins, until):
                 return
-            self.selector.select((min(opens, until) if self.fresh else until) - now)
+            self.selector.select(min(begins, until) - now)
 
     def drain(self) -> None:
         if self.machine is not None:
             sock, link = self.machine
-            for data, sender in _datagrams(sock, self.dropped):
+            for data, sender, _ in pacing.datagrams(sock, self.dropped):
                 reason = link.take(data, sender, self.clock())
                 if reason and link.dropped[reason] == 1 and self.on_drop is not None:
                     self.on_drop(reason)
-        for data, sender in _datagrams(self.sock, self.dropped):
-            self._take(data, self.clock(), sender)
+        for data, sender, age in pacing.datagrams(self.sock, self.dropped):
+            self._take(data, self.clock() - age, sender)
 
     def _take(self, data: bytes, arrived: float, sender=("", 0)) -> None:
         try:
@@ -256,17 +258,6 @@ class _Inbox:
         while start > 0 and self.t[start - 1] > self.t[-1] - seconds:
             start -= 1
         return np.asarray(self.t[start:]), np.asarray(self.values[start:])
-
-
-def _datagrams(sock: socket.socket, dropped: Counter):
-    """The datagrams waiting on a non-blocking ``sock``: (data, sender) each."""
-    while True:
-        try:
-            yield sock.recvfrom(65536)
-        except (BlockingIOError, InterruptedError):
-            return
-        except OSError:  # e.g. an ICMP error for an earlier send: not a message
-            dropped["socket error"] += 1
 
 
 class _Preview:
@@ -359,7 +350,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             opens, closes = start + (k - 0.5) * h, start + (k + 0.5) * h
             # stopping, the cycles keep their times; else each starts as a new host message comes
             inbox.wait(start + k * h, np.inf) if stops else inbox.wait(closes, opens)
-            began = clock()
+            began, cpu, session.timings = clock(), time.thread_time(), None
             for _, action in inbox.commands:  # logged at the cycle that acts on it, as every event
                 session.operator(action, k * h)
                 if action in ("emergency stop", "reset"):  # the motion system's own: passed on
@@ -372,18 +363,22 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             elif machine or session.paused:
                 session.park(reason=machine or f"operator: {session.paused}")
             elif alive:
-                session.run(preview(inbox), inbox.newest.sequence)
+                session.run(*pacing.timed(preview, inbox), inbox.newest.sequence)
             elif inbox.newest is None:
                 session.hold("starting")
             else:
                 session.park()
             answered = inbox.fresh and alive and not (stops or machine or session.paused)
             inbox.fresh = inbox.fresh and not answered
+            sending = clock()
             setpoint = session.setpoint(k, began - start, inbox.newest.sequence if answered else None)
             _send(outbound, setpoint, serving.send, inbox)
             sent = clock()
             session.record(k, compute=sent - began, age=np.nan if inbox.arrived is None else began - inbox.arrived,
                            latency=sent - inbox.arrived if answered else np.nan)
+            session.rows[-1].update(pacing.phases(session.timings, sent - sending, cpu))
+            if session.timings is not None:  # off the hot path: the next cycle's QP, from where this command leaves it
+                session.rows[-1]["prepare_s"] = pacing.timed(controller.prepare, session.state)[1]
             if log is not None:
                 _log(log, session, link.newest, model.config)
             k += 1
@@ -437,8 +432,9 @@ class _Session:
         self.machine_status = ""
         self.told: set[str] = set()
         self.breaks: list[int] = []
+        self.timings, self.guarded = None, 0.0  # this cycle's phases where it planned [s]; the service's check's
 
-    def run(self, preview, sequence: int) -> None:
+    def run(self, preview, preview_time: float, sequence: int) -> None:
         if self.was_parked:  # the machine was moved by the watchdog: plan afresh from here
             self.controller.forget()
             self.was_parked, self.settle = False, None
@@ -446,6 +442,7 @@ class _Session:
         self.command = (command.sequence[0], command.jerks[0])
         self.status, self.source, self.reason = "running", SOURCE_NAMES[command.source], command.reason
         self._guard()
+        self.timings = {**self.controller.timings, "service_preview": preview_time, "guard": self.guarded}
 
     def event(self, t: float, what: str, detail: str = "") -> None:
         self.events.append((t, what, detail))
@@ -555,7 +552,9 @@ class _Session:
         """The service's own check of the cycle's command over the cycle (every limit, position to
         jerk); a command that fails it is a fault (the controller's own check should never let one
         through), reported as such in the setpoint and the log."""
+        began = time.perf_counter()
         use = self._use()
+        self.guarded = time.perf_counter() - began
         if use > 1.0 + TOLERANCE:
             self.status, self.reason = "fault", f"limit use {use:.4f} over the cycle"
 
@@ -586,7 +585,7 @@ class _Session:
 
     def columns(self) -> dict[str, np.ndarray]:
         return {key: np.array([r[key] for r in self.rows])
-                for key in ("message_age_s", "latency_s", "command", "status", "tracking_use", "machine")}
+                for key in (*TIMED, "message_age_s", "latency_s", "command", "status", "tracking_use", "machine")}
 
 
 def result(served: Served, model: Model, options: OnlineOptions) -> OnlineResult:
