@@ -52,17 +52,22 @@ class RealTimeIteration:
         gradient = ca.vertcat(ca.vec(g_blocks), ca.MX.zeros(nx))
         g, A = prob.derivatives["jac_g"](w, p)
         graph = ca.Function("qp_data", [w, p], [H, gradient, A, g])
-        # The preparation's data (:meth:`prepare`): the same, and per stage the gradient's derivative
-        # in the stage's data, 2 J^T dr/dd. The residuals are affine in the desired values and the
-        # constraints do not see them, so the gradient for another preview is exact from it.
+        # The preparation's data (:meth:`prepare`): per stage the gradient's derivative in the desired
+        # values v, 2 J^T dr/dv, and the piece of the residuals the preview is on, (dr/dv, r - dr/dv v).
+        # The residuals are affine in v on each piece (the felt rotation's band is a dead zone in
+        # it) and the constraints do not see v: on the same piece, H and A are the prepared ones and
+        # the gradient for another preview is exact from its derivative.
         values = d[prob.n_head:]  # the desired values; the head (lengths, weights) is the stage's own
         dr = ca.jacobian(r, values)
-        dgrad = ca.Function("stage_dgrad", [x, u, d], [ca.densify(2.0 * J.T @ dr)])
         x_next, _, g_stage = prob.stage(x, u, d)
-        self.splits = not (ca.depends_on(dr, values) or ca.depends_on(ca.vertcat(x_next, g_stage), values))
+        self.splits = ca.jacobian(dr, values).is_zero() and not ca.depends_on(ca.vertcat(x_next, g_stage), values)
+        dgrad = ca.Function("stage_dgrad", [x, u, d], [ca.densify(2.0 * J.T @ dr)])
+        piece = ca.Function("stage_piece", [x, u, d], [ca.vertcat(ca.vec(ca.densify(dr)), r - dr @ values)])
         M = dgrad.map(N, "serial")(XU[:nx, :], XU[nx:, :], data)
-        prepared = ca.Function("qp_dgradient", [w, p], [M])
-        qp_data, prepared_data = self._evaluated([graph, prepared], compile)
+        pieces = piece.map(N, "serial")(XU[:nx, :], XU[nx:, :], data)
+        qp_data, prepared_data, piece_data = self._evaluated(
+            [graph, ca.Function("qp_dgradient", [w, p], [M]), ca.Function("qp_piece", [w, p], [ca.vec(pieces)])], compile)
+        self.piece_data = piece_data
         self._stage_data, self._N, self._head, self._nw = d.numel(), N, prob.n_head, nw
         options = {"error_on_fail": False, "print_time": False}
         if qp_solver == "hpipm":
@@ -82,7 +87,8 @@ class RealTimeIteration:
         self.data, self.qp, self.prepared_data = qp_data, qp, prepared_data
         self._buffers()
         self.timings = {"qp_data": 0.0, "qp": 0.0}  # the last solve's [s]: the QP's data and the QP solver
-        self._ready = None  # what prepare() left for feedback(): (p it linearised at, the stages' gradient blocks)
+        self._ready = None  # what prepare() left for feedback(): (p it linearised at, the gradient's blocks, the pieces)
+        self.refreshed = 0  # fed previews whose QP data was evaluated afresh (feedback)
 
     @staticmethod
     def _evaluated(graphs: list[ca.Function], compile: bool | None) -> list[ca.Function]:
@@ -109,8 +115,9 @@ class RealTimeIteration:
         # the gradient's structural zeros (the end state's) are not among the data's nonzeros
         self._gradient_rows = np.asarray(data.sparsity_out(1).row(), dtype=int)
         self._data_buffer, self._eval_data = bound(data, {0: self._w, 1: self._p}, dict(enumerate(self._out)))
-        self._blocks = np.zeros(self.prepared_data.nnz_out(0))
+        self._blocks, self._piece = np.zeros(self.prepared_data.nnz_out(0)), np.zeros(self.piece_data.nnz_out(0))
         self._prepared_buffer, self._eval_prepared = bound(self.prepared_data, {0: self._w, 1: self._p}, {0: self._blocks})
+        self._piece_buffer, self._eval_piece = bound(self.piece_data, {0: self._w, 1: self._p}, {0: self._piece})
 
     def _qp_buffer(self):
         """A new buffer of the QP's arrays for each solve (0.05-0.09 ms): HPIPM's plugin depends on
@@ -135,28 +142,39 @@ class RealTimeIteration:
     def prepare(self, w, p, bounds: Bounds) -> None:
         """The preparation phase of the real-time iteration (Diehl, Bock and Schloeder, 2005): the QP
         linearised at ``w`` within ``bounds``, everything but what the desired path changes, before the
-        preview is known. ``p`` is any parameter with the stages' own data (their lengths and weights;
-        the desired values do not matter): :meth:`feedback` then takes the cycle's preview. Where the
-        split is not exact (:attr:`splits` False: residuals not affine in the desired values, or
-        constraints that depend on them) nothing is prepared and :meth:`feedback` is not to be used."""
-        if not self.splits:
-            return
+        preview is known, for the preview of ``p`` (the last one: what the next is most like; its
+        head, the stages' lengths and weights, is every preview's). :meth:`feedback` then takes the
+        cycle's preview."""
         self._w[:], self._p[:] = w, p
         self._eval_data()
-        self._eval_prepared()
         self._qp_in["g"][self._gradient_rows] = self._out[1]
         self._bounds(bounds)
-        blocks = self._blocks.reshape(self._N, self._stage_data - self._head, self._nw)
-        self._ready = (self._p.copy(), blocks.copy())
+        blocks = piece = None
+        if self.splits:
+            self._eval_prepared()
+            self._eval_piece()
+            blocks, piece = self._blocks.reshape(self._N, self._stage_data - self._head, self._nw).copy(), self._piece.copy()
+        self._ready = (self._p.copy(), blocks, piece)
 
     def feedback(self, p, share: float = 1.0) -> tuple[np.ndarray, bool]:
         """The feedback phase: the step of the QP :meth:`prepare` built, for the parameter ``p``; as
-        ``self(w, p, bounds, share)`` would give from the same point, to round-off."""
+        ``self(w, p, bounds, share)`` would give from the same point, to round-off. Where ``p``'s
+        preview puts a residual on another piece (across the felt rotation's band), or the residuals
+        are not piecewise affine in it (:attr:`splits` False), the QP's data is evaluated afresh at the
+        prepared point (:attr:`refreshed` counts them): the same step, with less prepared."""
         start = time.perf_counter()
-        p_lin, blocks = self._ready
-        change = (np.asarray(p, dtype=float) - p_lin).reshape(self._N, self._stage_data)[:, self._head:]
-        self._qp_in["g"][: self._N * self._nw] += np.einsum("kdi,kd->ki", blocks, change).ravel()
+        p_lin, blocks, piece = self._ready
         self._ready = None
+        self._p[:] = p
+        if blocks is not None:
+            self._eval_piece()
+            if np.allclose(self._piece, piece, rtol=1e-12, atol=1e-12):
+                change = (self._p - p_lin).reshape(self._N, self._stage_data)[:, self._head:]
+                self._qp_in["g"][: self._N * self._nw] += np.einsum("kdi,kd->ki", blocks, change).ravel()
+                return self._solve(share, start)
+        self.refreshed += 1
+        self._eval_data()
+        self._qp_in["g"][self._gradient_rows] = self._out[1]
         return self._solve(share, start)
 
     @property

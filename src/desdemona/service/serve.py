@@ -11,7 +11,8 @@ command exactly: the setpoints are a continuous jerk-limited motion, cycle after
 
 Timing: cycle k belongs to the machine's time k h. It starts when a new host message arrives within
 half a cycle of that time (so a host that sends at the session's rate is answered at once: the
-end-to-end latency is the compute time), else at the window's end with what it has.
+end-to-end latency is the compute time), else at the window's end with what it has; one stale before
+the window opened waits for the host's next where it is due in time (:mod:`desdemona.service.pacing`).
 
 - **Starting**: until the first host message the machine stands still at home (status ``starting``).
 - **Watchdog**: without a valid host message for ``timeout`` cycles the machine is parked: braked to
