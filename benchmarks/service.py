@@ -166,7 +166,7 @@ def measure(name: str) -> dict:
     reference = recording(modulus, host_rate)
     row = {"run": name, "config": config, "rate": rate, "tail": tail, "host_rate": host_rate,
            "latency_ms": {k: 1e3 * v for k, v in service["latency_s"].items()},
-           "phases_ms": {key: _spread_ms(service, key) for key in PHASES},
+           "phases_ms": _phases_ms(cycles),
            "load": json.loads((folder / "load.json").read_text()) if (folder / "load.json").exists() else None,
            "over_deadline": service["compute_over_deadline"], "cycles": service["cycles"],
            "dropped": sum(service["dropped"].values()), "violations": stand_in.get("violations", stand_in.get("counts")),
@@ -178,10 +178,18 @@ def measure(name: str) -> dict:
     return row
 
 
-def _spread_ms(service: dict, key: str) -> dict | None:
-    """Median and p99 [ms] of a timed figure of the service's summary (None where it was not logged)."""
-    spread = service["message_age_s"] if key == "message_age" else (service.get("phases_s") or {}).get(key)
-    return None if spread is None else {k: 1e3 * v for k, v in spread.items()}
+def _phases_ms(cycles: list[dict]) -> dict:
+    """Median and p99 [ms] of the message's wait and of each phase over the cycles that answered a
+    host message (None where the log has no such column)."""
+    answered = [c for c in cycles if c["status"] == "running" and c["latency_s"] not in ("", "nan")]
+    spreads = {}
+    for key in PHASES:
+        column = f"{key}_s"
+        values = np.array([float(c[column]) for c in answered if column in c], dtype=float)
+        values = values[np.isfinite(values)]
+        spreads[key] = None if len(values) == 0 else {"median": 1e3 * float(np.median(values)),
+                                                      "p99": 1e3 * float(np.percentile(values, 99))}
+    return spreads
 
 
 def _parking(cycles: list[dict], folder: Path, rate: float, model: Model, outage_at: float | None,
@@ -236,8 +244,9 @@ def table(rows: list[dict], load: tuple) -> str:
 
 def _phases_table(rows: list[dict]) -> list[str]:
     """Where each run's cycles spend their time: median / p99 [ms] of the message's wait (arrival to the
-    cycle's start) and of each phase (desdemona.service.pacing), the thread's processor time over the
-    compute, and the load average over the minute the run ended in."""
+    cycle's start) and of each phase (desdemona.service.pacing) over the cycles that answered a host
+    message, the thread's processor time over the compute, and the load average over the minute the
+    run ended in."""
     head = ("| run | wait | preview | QP data | QP | check | send | prepared after the send | compute CPU | "
             "load (1 min) |")
     lines = ["Per cycle, median / p99 [ms]:", "", head, "|" + " --- |" * (head.count("|") - 1)]
