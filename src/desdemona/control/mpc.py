@@ -37,24 +37,10 @@ from desdemona.cueing.formulation import ProblemOptions
 from desdemona.cueing.realtime_iteration import RealTimeIteration
 from desdemona.cueing.transcription import CueingProblem
 from desdemona.machine.model import Model
-from desdemona.machine.plan import (
-    REST_RATE,
-    Plan,
-    State,
-    advance,
-    braking_jerk,
-    homing_rate,
-    settled_rate,
-    stopping_extent,
-)
+from desdemona.machine.plan import (REST_RATE, Plan, State, advance, braking_jerk, homing_rate, settled_rate,
+                                    stopping_extent)
 from desdemona.occupant.perception import THRESHOLDS, VestibularModel
-from desdemona.profiles import (
-    ALIGNED_WEIGHTS,
-    DesiredPath,
-    above_g,
-    at_least_g,
-    vertical_force,
-)
+from desdemona.profiles import ALIGNED_WEIGHTS, DesiredPath, above_g, at_least_g, vertical_force
 from desdemona.support.symbolic import call
 
 #: How long [s] a fallback follows the last plan before it brakes, at most; the next plan then starts from a

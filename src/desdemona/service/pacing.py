@@ -109,3 +109,12 @@ def phases(timings: dict | None, send: float, cpu: float) -> dict:
         row.update(preview_s=timings["service_preview"] + timings["preview"], qp_data_s=timings["qp_data"],
                    qp_s=timings["qp"], check_s=timings["check"] + timings["guard"])
     return {**row, "send_s": send, "compute_cpu_s": time.thread_time() - cpu}
+
+
+def close(row: dict, timings: dict | None, send: float, cpu: float, prepare, state) -> None:
+    """After a cycle's send: its ``row`` given its phases (:func:`phases`), and where it planned, the
+    next cycle's QP prepared from ``state``, where the command leaves the machine (``prepare(state)``,
+    :meth:`desdemona.control.mpc.MPC.prepare`), off the hot path, its time the row's ``prepare_s``."""
+    row.update(phases(timings, send, cpu))
+    if timings is not None:
+        row["prepare_s"] = timed(prepare, state)[1]

@@ -371,15 +371,12 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
                 session.park()
             answered = inbox.fresh and alive and not (stops or machine or session.paused)
             inbox.fresh = inbox.fresh and not answered
-            sending = clock()
-            setpoint = session.setpoint(k, began - start, inbox.newest.sequence if answered else None)
+            sending, setpoint = clock(), session.setpoint(k, began - start, inbox.newest.sequence if answered else None)
             _send(outbound, setpoint, serving.send, inbox)
             sent = clock()
             session.record(k, compute=sent - began, age=np.nan if inbox.arrived is None else began - inbox.arrived,
                            latency=sent - inbox.arrived if answered else np.nan)
-            session.rows[-1].update(pacing.phases(session.timings, sent - sending, cpu))
-            if session.timings is not None:  # off the hot path: the next cycle's QP, from where this command leaves it
-                session.rows[-1]["prepare_s"] = pacing.timed(controller.prepare, session.state)[1]
+            pacing.close(session.rows[-1], session.timings, sent - sending, cpu, controller.prepare, session.state)
             if log is not None:
                 _log(log, session, link.newest, model.config)
             k += 1
