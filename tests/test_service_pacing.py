@@ -49,14 +49,18 @@ def test_a_host_at_the_service_s_rate_just_before_the_window_is_answered_unless_
 
 def test_datagrams_are_timed_from_their_arrival_not_from_their_reading():
     """A datagram read 50 ms after it came is 50 ms old (the kernel's receive time), and the phases'
-    row has every phase's column."""
+    row has every phase's column. The kernel turns its receive stamps on a moment after the first
+    socket asks (until then a datagram is stamped as it is read, age 0): three tries."""
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as rx, socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as tx:
         rx.bind(("127.0.0.1", 0))
         pacing.stamped(rx).setblocking(False)
-        tx.sendto(b"motion", rx.getsockname())
-        time.sleep(0.05)
-        read = list(pacing.datagrams(rx, Counter()))
-    assert [data for data, _, _ in read] == [b"motion"]
-    assert 0.045 <= read[0][2] < 5.0
+        ages = []
+        for _ in range(3):
+            tx.sendto(b"motion", rx.getsockname())
+            time.sleep(0.05)
+            read = list(pacing.datagrams(rx, Counter()))
+            assert [data for data, _, _ in read] == [b"motion"]
+            ages.append(read[0][2])
+    assert max(ages) >= 0.045 and max(ages) < 5.0, ages
     row = pacing.phases(None, 1e-4, time.thread_time())
     assert set(row) == {f"{phase}_s" for phase in pacing.PHASES} | {"compute_cpu_s"} and np.isnan(row["qp_s"])
