@@ -3,6 +3,7 @@
     python benchmarks/service.py                      # every run below, the table into docs/benchmarks/real-time-service.md
     python benchmarks/service.py --runs dfs-50        # one run
     python benchmarks/service.py --table-only         # re-read the folders, rewrite the table
+    python benchmarks/service.py --runs dfs-50 --key  # the same run, every datagram signed (``--key``)
     python benchmarks/service.py --runs full-50-host60 --seconds 20   # a short run
 
 Each run starts three processes, as a user would (docs/guide/serve.md): the motion
@@ -32,7 +33,9 @@ The machine's load average is recorded before and after, and per run over the mi
 A second table gives per run where a cycle's time goes (median and p99 of the message's wait from its
 arrival to the cycle's start, and of each phase the service logs, :mod:`desdemona.service.pacing`),
 with the thread's processor time over the compute: on a shared machine a p99 well above it is time
-the processor was taken away, not work.
+the processor was taken away, not work. With ``--key`` the three processes share
+a key (made once, ``service-results/key``) and sign every datagram; such a run is written to
+``NAME-key`` and is its own row of the table.
 """
 
 from __future__ import annotations
@@ -41,6 +44,7 @@ import argparse
 import csv
 import json
 import os
+import secrets
 import socket
 import subprocess
 import sys
@@ -97,24 +101,35 @@ def recording(modulus: bool, rate: float) -> Path:
     return out
 
 
-def serve_run(name: str) -> dict:
-    """One run of the three processes; returns what the table needs."""
+def key_file() -> Path:
+    """The runs' shared key, made once (as ``openssl rand -hex 32`` makes one), readable by its owner only."""
+    path = RESULTS / "key"
+    if not path.exists():
+        RESULTS.mkdir(parents=True, exist_ok=True)
+        path.touch(mode=0o600)
+        path.write_text(secrets.token_hex(32) + "\n")
+    return path
+
+
+def serve_run(name: str, signed: bool = False) -> dict:
+    """One run of the three processes (``signed``: sharing a key); returns what the table needs."""
     config, rate, modulus, lossy, tail, host_rate = RUNS[name]
-    folder = RESULTS / name
+    folder = RESULTS / (f"{name}-key" if signed else name)
     folder.mkdir(parents=True, exist_ok=True)
     listen, send = _port(), _port()
+    key = ["--key", key_file()] if signed else []
     machine = subprocess.Popen(_desdemona("machine", "--config", config, "--listen", f"127.0.0.1:{send}",
-                                          "--out", folder / "machine", "--idle", 3),
+                                          "--out", folder / "machine", "--idle", 3, *key),
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     server = subprocess.Popen(_desdemona("serve", "--config", config, "--listen", f"127.0.0.1:{listen}",
                                          "--send", f"127.0.0.1:{send}", "--rate", rate, "--out", folder / "served",
-                                         "--tail-step", tail, "--overwrite", "--quiet-end", 1.0, "--no-view"),
+                                         "--tail-step", tail, "--overwrite", "--quiet-end", 1.0, "--no-view", *key),
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     server.stdout.readline()  # "serving ...": the controller is built (and compiled), the service listens
     host = [*(["--modulus"] if modulus else []),
             *(["--drop", DROP, "--outage", f"{OUTAGE[0]},{OUTAGE[1]}"] if lossy else [])]
     subprocess.run(_desdemona("host", "jsbsim", SCRIPT, "--to", f"127.0.0.1:{listen}", "--start", START,
-                              "--end", STOP, "--rate", host_rate, *host), check=True)
+                              "--end", STOP, "--rate", host_rate, *host, *key), check=True)
     load = os.getloadavg()[0]  # over the last minute: while the run ran
     served_out, _ = server.communicate(timeout=120)
     try:
@@ -129,7 +144,7 @@ def serve_run(name: str) -> dict:
     subprocess.run(_desdemona("online", recording(modulus, host_rate), "--config", config, "--predictor", "hold",
                               "--step", 1.0 / rate, "--tail-step", tail, "--initial", "home", "--out", online, "--overwrite",
                               "--no-view"), check=True, capture_output=True)
-    return {"name": name, "served_rc": server.returncode, "machine_rc": machine.returncode}
+    return {"name": folder.name, "served_rc": server.returncode, "machine_rc": machine.returncode}
 
 
 def _felt_force_rms(folder: Path, recording: Path, modulus: bool, offset: float = 0.0) -> float:
@@ -154,18 +169,18 @@ def _cycles(folder: Path) -> list[dict]:
         return list(csv.DictReader(fh))
 
 
-def measure(name: str) -> dict:
+def measure(name: str, signed: bool = False) -> dict:
     """The table's row of a run, from its folders."""
     config, rate, modulus, lossy, tail, host_rate = RUNS[name]
-    folder = RESULTS / name
+    folder = RESULTS / (f"{name}-key" if signed else name)
     served = json.loads((folder / "served" / "summary.json").read_text())
     service = served["service"]
     stand_in = json.loads((folder / "machine" / "summary.json").read_text())
     cycles = _cycles(folder / "served")
     running = [float(c["t"]) for c in cycles if c["status"] == "running"]
     reference = recording(modulus, host_rate)
-    row = {"run": name, "config": config, "rate": rate, "tail": tail, "host_rate": host_rate,
-           "latency_ms": {k: 1e3 * v for k, v in service["latency_s"].items()},
+    row = {"run": name + (", signed" if signed else ""), "config": config, "rate": rate, "tail": tail,
+           "host_rate": host_rate, "latency_ms": {k: 1e3 * v for k, v in service["latency_s"].items()},
            "phases_ms": _phases_ms(cycles),
            "load": json.loads((folder / "load.json").read_text()) if (folder / "load.json").exists() else None,
            "over_deadline": service["compute_over_deadline"], "cycles": service["cycles"],
@@ -263,6 +278,7 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--runs", nargs="+", choices=tuple(RUNS), default=list(RUNS))
     parser.add_argument("--table-only", action="store_true")
+    parser.add_argument("--key", action="store_true", help="sign every datagram with a shared key")
     parser.add_argument("--seconds", type=float, default=FLIGHT_END - START,
                         help="fly only the first SECONDS of the turn (default: all 55 s; the lossy run's outage "
                              "is at 30 s)")
@@ -273,9 +289,10 @@ def main(argv=None) -> int:
     if not args.table_only:
         before = os.getloadavg()[0]
         for name in args.runs:
-            print(serve_run(name), flush=True)
+            print(serve_run(name, args.key), flush=True)
         loads.write_text(json.dumps([before, os.getloadavg()[0]]))
-    rows = [measure(name) for name in RUNS if (RESULTS / name / "served" / "summary.json").exists()]
+    rows = [measure(name, signed) for name in RUNS for signed in (False, True)
+            if (RESULTS / (f"{name}-key" if signed else name) / "served" / "summary.json").exists()]
     text = table(rows, tuple(json.loads(loads.read_text())))
     print(text)
     tables.replace_between(BEGIN, END, text, "Real-time service", DOCS)

@@ -25,7 +25,10 @@ EXAMPLES = [
     protocol.MachineState(101, 2.01, "fault", "drive", 3, 42, 0.84, np.array([1.0099, -4.0, 0, 0.022, 0, -0.01]),
                           np.array([0.5, 0, 0, 0.1, 0, 0])),
     protocol.Command(5, 12.5, "emergency stop"),
+    protocol.Command(5, 12.5, "emergency stop"),
 ]
+#: How each example is framed: (session, key, timestamp); the last one signed as the document says.
+FRAMING = [(None, None, 0)] * 6 + [(0x12345678, bytes(range(32)), 37_657_440_000_000)]
 
 
 def document_examples() -> list[bytes]:
@@ -60,9 +63,24 @@ def same(a, b) -> bool:
 def test_every_example_of_the_document_is_what_pack_makes():
     found = document_examples()
     assert len(found) == len(EXAMPLES)
-    for message, data in zip(EXAMPLES, found):
-        assert protocol.pack(message) == data, type(message).__name__
-        assert same(protocol.unpack(data), message)
+    for message, (session, key, stamp), data in zip(EXAMPLES, FRAMING, found):
+        assert protocol.pack(message, session, key, stamp) == data, type(message).__name__
+        frame = protocol.read(data, key)
+        assert same(frame.message, message) and frame.session == session and (frame.timestamp or 0) == stamp
+
+
+def test_the_signed_example_s_timestamp_is_the_time_the_document_gives():
+    import calendar
+
+    from desdemona.service import signing
+
+    assert signing.timestamp(calendar.timegm((2026, 12, 7, 12, 0, 0))) == FRAMING[-1][2]
+
+
+def test_the_document_lists_the_drop_reasons_the_code_has():
+    text = DOCUMENT.read_text()
+    table = text[text.index("### Drop reasons"):text.index("## 8.")]
+    assert re.findall(r"^\| `([a-z ]+)` \|", table, re.M) == list(protocol.REASONS)
 
 
 def test_the_document_states_the_lengths_the_code_makes():

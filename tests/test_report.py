@@ -28,8 +28,16 @@ def test_optimize_writes_the_whole_folder(catapult_folder):
     assert summary["metrics"]["worst_use"]["effort"] <= 1 + 1e-6
     assert summary["configuration"]["free_joints"] == ["yaw", "track", "inner_gimbal"]
     assert summary["versions"]["casadi"] and summary["command"].startswith("desdemona")
-    for png in ("path.png", "joints.png", "limits.png"):
+    for png in ("path.png", "joints.png", "limits.png", "limit_prices.png"):
         assert (catapult_folder / png).read_bytes()[:4] == b"\x89PNG"
+    # every limit of every free joint priced (the yaw and the gimbal have no travel), the held ones too
+    prices = summary["limit_prices"]
+    assert set(prices["rate"]) == {"yaw", "track", "inner_gimbal"} and set(prices["position"]) == {"track"}
+    assert set(prices["held_position"]) == {"heave", "outer_gimbal", "cabin"}
+    for joints in prices.values():
+        for entry in joints.values():
+            assert isinstance(entry["price"], float) and entry["binds_s"] >= 0.0
+            assert len(entry["binds_from_s"]) == len(entry["binds_to_s"])
 
 
 def test_trajectory_files_agree(catapult_folder):
@@ -44,8 +52,10 @@ def test_trajectory_files_agree(catapult_folder):
 def test_plot_redraws_figures(catapult_folder, capsys):
     (catapult_folder / "path.png").unlink()
     (catapult_folder / "view.html").unlink()
+    (catapult_folder / "limit_prices.png").unlink()
     assert main(["plot", str(catapult_folder)]) == 0
     assert (catapult_folder / "path.png").exists()
+    assert (catapult_folder / "limit_prices.png").exists()
     assert (catapult_folder / "view.html").exists()
 
 

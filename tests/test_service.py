@@ -81,12 +81,13 @@ def _send(port: int, messages, at, extra=(), go: threading.Event | None = None):
     return thread
 
 
-def _motion(path, until: float, delay: float = 0.2, skip=None):
-    """The datagrams of ``path``'s modulus up to ``until`` [s], each at its time after ``delay``."""
+def _motion(path, until: float, delay: float = 0.2, skip=None, session=None):
+    """The datagrams of ``path``'s modulus up to ``until`` [s], each at its time after ``delay``, with
+    the host's ``session`` if given."""
     keep = path.t <= until
     if skip is not None:
         keep &= ~((path.t >= skip[0]) & (path.t < skip[1]))
-    data = [protocol.pack(protocol.Motion(k + 1, float(t), np.array([m])))
+    data = [protocol.pack(protocol.Motion(k + 1, float(t), np.array([m])), session)
             for k, (t, m) in enumerate(zip(path.t, path.M_d)) if keep[k]]
     return data, delay + path.t[keep]
 
@@ -176,8 +177,8 @@ def test_bad_datagrams_are_dropped_and_counted_never_used():
     assert len(served.received_t) == len(later)  # only the good ones, each once
     np.testing.assert_allclose(served.received[:, 0], [9.81 + 0.1 * k for k in range(1, 30)])
     assert sum(served.dropped.values()) == len(bad) + len(repeated)
-    assert served.dropped["out of order or repeated"] == 2
-    assert any("channels" in reason for reason in served.dropped)
+    assert served.dropped["stale"] == 2 and served.dropped["channels"] == 1
+    assert set(served.dropped) <= set(protocol.REASONS)
 
 
 def _serve_process(tmp_path):
@@ -300,11 +301,11 @@ def test_the_forecast_predictor_plans_on_the_hosts_own_forecast():
 
 
 def test_a_host_restarted_after_the_timeout_is_taken_back():
-    """A host that starts again from sequence 1 and time 0 after the watchdog parked the machine is the
-    host back: followed again, its times continuing from where it left off."""
+    """A host that starts again (a new session) from sequence 1 and time 0 after the watchdog parked the
+    machine is the host back: followed again, its times continuing from where it left off."""
     path = profiles.get_profile("dfs-catapult")
-    first, at_first = _motion(path, 0.8)
-    again, at_again = _motion(path, 0.8, delay=1.6)  # the same messages, sequence and time from the start
+    first, at_first = _motion(path, 0.8, session=1)
+    again, at_again = _motion(path, 0.8, delay=1.6, session=2)  # sequence and time from the start
     model, options, served, _ = _serve(3.0, first + again, np.r_[at_first, at_again], timeout=5)
     statuses = list(served.columns["status"])
     parked = statuses.index("parking")

@@ -7,6 +7,7 @@ from __future__ import annotations
 import sys
 
 from desdemona.cli.exits import UserError
+from desdemona.cli.serving import key_of
 
 
 def _address(text: str, option: str) -> tuple[str, int]:
@@ -43,10 +44,12 @@ def run_host_flightgear(args) -> int:
 
     listen, to = _address(args.listen, "--listen"), _address(args.to, "--to")
     _check(args.wait, args.duration)
+    key = key_of(args)
     _say(f"reading FlightGear's native FDM on {args.listen} (fgfs --native-fdm=socket,out,60,{listen[0]},"
          f"{listen[1]},udp --max-fps=60); forwarding to {args.to} once its first seconds look like a vehicle")
     try:
-        result = flightgear.run(listen, to, modulus=args.modulus, wait=args.wait, duration=args.duration, say=_say)
+        result = flightgear.run(listen, to, modulus=args.modulus, wait=args.wait, duration=args.duration, say=_say,
+                                key=key)
     except OSError as exc:
         raise UserError(f"--listen {args.listen} / --to {args.to}: {exc.strerror or exc}") from None
     _report(result, args.to)
@@ -58,13 +61,14 @@ def run_host_xplane(args) -> int:
 
     xp, listen, to = _address(args.xplane, "--xplane"), _address(args.listen, "--listen"), _address(args.to, "--to")
     _check(args.wait, args.duration)
+    key = key_of(args)
     if not 1 <= args.rate <= 99:
         raise UserError(f"--rate {args.rate}: X-Plane answers 1 ... 99 times a second")
     _say(f"subscribing to X-Plane at {args.xplane} ({len(xplane.DATAREFS)} datarefs, {args.rate} a second), "
          f"answers to {args.listen}; forwarding to {args.to} once its first seconds look like a vehicle")
     try:
         result = xplane.run(xp, listen, to, rate=args.rate, modulus=args.modulus, wait=args.wait,
-                            duration=args.duration, say=_say)
+                            duration=args.duration, say=_say, key=key)
     except OSError as exc:
         raise UserError(f"--listen {args.listen} / --xplane {args.xplane}: {exc.strerror or exc}") from None
     _report(result, args.to)

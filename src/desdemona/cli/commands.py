@@ -146,6 +146,9 @@ def run_optimize(args) -> int:
           f"{c.worst_use:.4f}, {solver}, {result.timings['wall'] - compiling:.2f} s{compile_words(compiling)}"
           f"{ends}{sizing.describe(unreachable)}; written to {out}")
     print(f"  felt: {result.quality.headline()}")
+    if result.prices is not None:
+        print(f"  limit prices (felt error {result.prices.felt_error:.4g} m/s^2; its fall were a limit 10 % wider):")
+        print("\n".join(f"    {line}" for line in result.prices.table()) or "    no limit binds")
     return 0 if result.converged else EXIT_NOT_CONVERGED
 
 

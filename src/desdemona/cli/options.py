@@ -7,7 +7,7 @@ import argparse
 import difflib
 
 from desdemona._version import __version__
-from desdemona.cli import bridges, commands, serviceoptions, serving
+from desdemona.cli import commands, serviceoptions, serving, studying
 from desdemona.cli.exits import EXIT_CODES, SEE_EXIT_CODES
 from desdemona.control import predictors
 from desdemona.machine.configs import CONFIGURATIONS
@@ -109,6 +109,7 @@ def build_parser() -> argparse.ArgumentParser:
     _add_time_option(batch, "each job")
     _add_view_option(batch)
     batch.set_defaults(run=commands.run_batch)
+    studying.add_parser(sub, _add_start_options, _add_session_options, _add_time_option)
 
     online = sub.add_parser(
         "online", epilog=SEE_EXIT_CODES, help="run the on-line MPC in closed loop on a desired path",
@@ -552,37 +553,8 @@ def _add_host_parser(sub) -> None:
                         help="the flight's time of the last message (default: the script's end)")
     _add_host_options(flight)
     flight.set_defaults(run=serving.run_host_jsbsim)
-    _add_bridge_parsers(kinds)
-
-
-def _add_bridge_parsers(kinds) -> None:
-    checked = ("Nothing is forwarded until the stream's first still second (at rest or in level flight) reads "
-               "+1 g up in SI units; a stream that then turns implausible (a pause, a reset, wrong units, a "
-               "crash) stops being forwarded, with the reason, and 'serve' parks the machine. Exit 2 when the "
-               "start check refuses the stream or it does not start within --wait.")
-    fg = kinds.add_parser("flightgear", help="forward a running FlightGear's motion (its native FDM output)",
-                          description="Read FlightGear's native FDM packets (fgfs --native-fdm=socket,out,60,"
-                                      "127.0.0.1,5600,udp --max-fps=60) and send the pilot's motion to 'serve'. "
-                                      + checked + " Needs pip install 'desdemona[flightgear]'.")
-    fg.add_argument("--listen", default="127.0.0.1:5600", metavar="HOST:PORT",
-                    help="where FlightGear sends its native FDM (default: 127.0.0.1:5600)")
-    xp = kinds.add_parser("xplane", help="forward a running X-Plane's motion (RREF dataref subscriptions)",
-                          description="Subscribe to X-Plane's body rates, g-loads, attitude and position over "
-                                      "UDP (RREF) and send the motion to 'serve'. " + checked)
-    xp.add_argument("--xplane", default="127.0.0.1:49000", metavar="HOST:PORT",
-                    help="X-Plane's UDP port (default: 127.0.0.1:49000)")
-    xp.add_argument("--listen", default="127.0.0.1:49005", metavar="HOST:PORT",
-                    help="where X-Plane's answers arrive (default: 127.0.0.1:49005)")
-    xp.add_argument("--rate", type=int, default=60, metavar="HZ", help="answers a second (default: 60)")
-    for parser, run in ((fg, bridges.run_host_flightgear), (xp, bridges.run_host_xplane)):
-        parser.add_argument("--to", required=True, metavar="HOST:PORT", help="where 'serve' listens, e.g. 127.0.0.1:5500")
-        parser.add_argument("--modulus", action="store_true", help="send the modulus |f| only (for dfs)")
-        parser.add_argument("--wait", type=float, default=120.0, metavar="SECONDS",
-                            help="the longest the stream may take to start (default: 120; FlightGear's first "
-                                 "packets come 10-35 s after it is launched)")
-        parser.add_argument("--duration", type=float, default=None, metavar="SECONDS",
-                            help="stop after this long (default: when stopped, Ctrl-C)")
-        parser.set_defaults(run=run)
+    serviceoptions.add_bridge_parsers(kinds)
+    serviceoptions.add_key_options(kinds)
 
 
 def _add_host_options(parser) -> None:

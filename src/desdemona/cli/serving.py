@@ -12,6 +12,7 @@ import numpy as np
 
 from desdemona import profiles
 from desdemona.cli.commands import _inputs, _machine, _result_folder
+from desdemona.cli.console import ending, live_console
 from desdemona.cli.exits import EXIT_USAGE, UserError
 from desdemona.runs import session
 
@@ -21,13 +22,15 @@ def run_serve(args) -> int:
     from desdemona.service import protocol, serve, sessionlog
 
     model = _machine(args)
+    key = key_of(args)  # before the folder: a key refused leaves nothing behind
     out = _result_folder(args)
     channels = args.channels or serve.default_channels(model.config)
     try:
         listen, send = protocol.address(args.listen, "--listen"), protocol.address(args.send, "--send")
         serving = serve.ServeOptions(listen=listen, send=send,
                                      channels=channels, timeout=args.timeout, duration=args.duration,
-                                     quiet_end=args.quiet_end, operator=args.operator, state_lost=args.state_lost)
+                                     quiet_end=args.quiet_end, operator=args.operator, state_lost=args.state_lost,
+                                     key=key)
     except ValueError as exc:
         raise UserError(str(exc)) from None
     try:  # bound before the controller is built (seconds): a port in use is said at once
@@ -39,6 +42,7 @@ def run_serve(args) -> int:
                             horizon=args.horizon, reach=args.reach, predictor=args.predictor, reference=reference,
                             tail_step=args.tail_step)
     options = resolved.options
+    console = live_console(args, model, options.mpc.step)  # bound before the session: a port in use said at once
 
     def say_ready(early):
         before = (f"; {early} host datagram{'s' if early != 1 else ''} came before it was ready (dropped: start "
@@ -47,8 +51,8 @@ def run_serve(args) -> int:
               f"{args.listen}, setpoints to {args.send}; Ctrl-C parks the machine and ends the session{before}",
               file=sys.stderr, flush=True)
 
-    def dropping(reason):
-        print(f"desdemona: dropping datagrams: {reason}", file=sys.stderr, flush=True)
+    def dropping(line):  # at most one a second per reason (service.drops)
+        print(f"desdemona: dropping datagrams: {line}", file=sys.stderr, flush=True)
 
     log = None
 
@@ -57,11 +61,14 @@ def run_serve(args) -> int:
         log = sessionlog.LiveLog(out, model.config.joint_names, report.RESULT_FORMAT)
         say_ready(early)
 
+    served = None
     try:
         served = serve.serve(model, options, serving, ready=ready, on_drop=dropping, inbound=inbound,
-                             log=_Later(lambda: log))
+                             log=_Later(lambda: log), console=console)
     finally:
         logged = None if log is None else log.close()
+        if console is not None:
+            console.close(ending(served))
     if not np.any(served.columns["status"] == "running"):
         dropped = sum(served.dropped.values())
         print(f"desdemona: the session never followed the host: no valid motion came to {args.listen} "
@@ -87,6 +94,7 @@ def run_machine(args) -> int:
     from desdemona.service import machine, protocol, servo
 
     model = _machine(args)
+    key = key_of(args)
     try:
         listen = protocol.address(args.listen, "--listen")
         options = machine.MachineOptions(
@@ -94,7 +102,8 @@ def run_machine(args) -> int:
             bandwidth_hz=servo.BANDWIDTH_HZ if args.bandwidth is None else args.bandwidth,
             noise=servo.NOISE if args.noise is None else tuple(args.noise), state_rate=args.state_rate,
             timeout=args.timeout, late=args.late, fault=None if args.fault is None else machine.parse_fault(args.fault),
-            operator=args.operator, seed=args.seed, state_outage=_pair(args.state_outage, "--state-outage"))
+            operator=args.operator, seed=args.seed, state_outage=_pair(args.state_outage, "--state-outage"),
+            key=key)
         report = machine.run(model, listen, args.out, idle=args.idle, duration=args.duration, options=options)
     except ValueError as exc:
         raise UserError(str(exc)) from None
@@ -124,8 +133,9 @@ def _pair(text: str | None, option: str) -> tuple[float, float] | None:
 
 
 def run_command(args) -> int:
-    from desdemona.service import protocol
+    from desdemona.service import protocol, signing
 
+    outgoing = signing.Outgoing(key_of(args))
     try:
         to = protocol.address(args.to, "--to")
     except ValueError as exc:
@@ -135,7 +145,7 @@ def run_command(args) -> int:
     message = protocol.Command(int(time.time() * 1e3) & 0xFFFFFFFF, time.time(), action)
     try:
         with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sock:
-            sock.sendto(protocol.pack(message), to)
+            sock.sendto(outgoing.pack(message), to)
     except OSError as exc:
         raise UserError(f"--to {args.to}: {exc.strerror or exc}") from None
     print(f"sent {action} to {args.to}")
@@ -151,7 +161,20 @@ def _host_options(args) -> dict:
     except ValueError as exc:
         raise UserError(str(exc)) from None
     return {"to": to, "speed": args.speed, "forecast": args.forecast, "modulus": args.modulus, "drop": args.drop,
-            "outage": outage, "seed": args.seed}
+            "outage": outage, "seed": args.seed, "key": key_of(args)}
+
+
+def key_of(args) -> bytes | None:
+    """The shared key of ``--key FILE`` (None without one); :class:`UserError` (one line, exit 2) where
+    the file cannot be used: missing, not 64 hex digits, or readable by others than its owner."""
+    from desdemona.service import signing
+
+    if args.key is None:
+        return None
+    try:
+        return signing.load_key(args.key)
+    except ValueError as exc:
+        raise UserError(str(exc)) from None
 
 
 def _say_sent(counts: dict, to: str) -> None:

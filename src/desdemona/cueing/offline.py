@@ -25,6 +25,7 @@ from desdemona.check import metrics
 from desdemona.check.simulate import LimitCheck, LimitViolation, Trajectory, check, evaluate_plan, trajectory_dataframe
 from desdemona.cueing import sizing
 from desdemona.cueing.formulation import ProblemOptions
+from desdemona.cueing.prices import LimitPrices, limit_prices
 from desdemona.cueing.transcription import CueingProblem, Solution
 from desdemona.machine.model import Model
 from desdemona.machine.plan import Plan, braked, start_acceleration, start_state
@@ -95,6 +96,8 @@ class Result:
     trajectory : the motion on the optimiser's sub-step grid (for files and figures).
     check : the independent fine-grid check (every limit <= 1 + 1e-6, RMS errors).
     starts : every start's report; timings : build, solve and wall times [s].
+    prices : what each limit costs the felt error (:mod:`desdemona.cueing.prices`), from the chosen
+    solve's multipliers (a windowed result: combined from its windows'); None for the thesis' method.
     """
 
     path: DesiredPath
@@ -106,6 +109,7 @@ class Result:
     check: LimitCheck
     starts: tuple[StartReport, ...]
     timings: dict
+    prices: LimitPrices | None = None
 
     @property
     def plan(self) -> Plan:
@@ -383,6 +387,7 @@ def optimize(path: DesiredPath, model: Model, options: OptimizeOptions = Optimiz
         reports.append(StartReport(name, sol.status, sol.success, sol.iterations, sol.solve_time, sol.cost,
                                    result_check.rms, result_check.worst_use, result_check.passed))
         candidates.append((result_check, sol))
+    solved_by = dict.fromkeys(map(id, (s for _, s in candidates)), full)  # the problem each solution is of
     passed = [(c, s) for c, s in candidates if c.passed]
     if not passed:
         # A limit bulged between the optimiser's sub-steps: back off further and re-solve the best start.
@@ -397,7 +402,7 @@ def optimize(path: DesiredPath, model: Model, options: OptimizeOptions = Optimiz
                                        sol.iterations, sol.solve_time, sol.cost, best_check.rms,
                                        best_check.worst_use, best_check.passed))
             if best_check.passed:
-                passed = [(best_check, sol)]
+                passed, solved_by[id(sol)] = [(best_check, sol)], retry
                 break
         else:
             raise LimitViolation(best_check, "every start's trajectory")
@@ -406,11 +411,13 @@ def optimize(path: DesiredPath, model: Model, options: OptimizeOptions = Optimiz
     times = full.sub_times()
     t = np.r_[times[:, :-1].ravel(), full.t_nodes[-1]]
     trajectory = evaluate_plan(model, path, chosen.plan, t, options.problem.perception)
+    pricing = time.perf_counter()
+    prices = limit_prices(solved_by[id(chosen)], chosen)
     timings = {"build": build, "solve": sum(r.solve_time for r in reports),
-               "wall": time.perf_counter() - wall}
+               "prices": time.perf_counter() - pricing, "wall": time.perf_counter() - wall}
     return Result(path=path, model=model, options=options, method=options.problem.solver,
                   solution=chosen, trajectory=trajectory, check=chosen_check, starts=tuple(reports),
-                  timings=timings)
+                  timings=timings, prices=prices)
 
 
 def _check(problem: CueingProblem, sol: Solution) -> tuple[LimitCheck, Trajectory]:

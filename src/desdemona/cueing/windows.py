@@ -8,7 +8,8 @@ exactly from that state (positions, rates and accelerations). So the part kept n
 a window ends, every window but the last ends stoppable (every state can still brake to rest within
 the position limits, the on-line end condition of chapter 7), and memory is bounded by the window,
 not the recording. The stitched plan is re-checked as a whole against every limit
-(:func:`desdemona.check.simulate.check`); a violation is an error, as for any result.
+(:func:`desdemona.check.simulate.check`); a violation is an error, as for any result. Its limit prices
+are the windows' over the parts they keep (:func:`desdemona.cueing.prices.combined`).
 
 Every window but the last poses, for every recording, the same problem with another path and another
 start: its fatrop solver is kept in the cache (``OptimizeOptions.stored``), so that only a machine's
@@ -28,7 +29,7 @@ from dataclasses import replace
 import numpy as np
 
 from desdemona.check.simulate import LimitViolation, check, evaluate_plan, fine_grid
-from desdemona.cueing import sizing
+from desdemona.cueing import prices, sizing
 from desdemona.cueing.offline import OptimizeOptions, Result, optimize, settled, spin_following
 from desdemona.cueing.transcription import Solution
 from desdemona.machine.model import Model
@@ -138,7 +139,7 @@ def optimize_windowed(path: DesiredPath, model: Model, options: OptimizeOptions,
     h_u = problem.h_u
     size = int(round(window / h_u))
     firsts = _windows(int(round(path.duration / h_u)), size, int(round((window - overlap(model)) / h_u)))
-    pieces, reports, state, guess = [], [], None, None
+    pieces, reports, state, guess, priced = [], [], None, None, []
     for index, first in enumerate(firsts):
         last = index == len(firsts) - 1
         start, end = first * h_u, path.duration if last else (first + size) * h_u
@@ -156,14 +157,17 @@ def optimize_windowed(path: DesiredPath, model: Model, options: OptimizeOptions,
         sol = result.solution
         if last:
             pieces.append((start, sol, len(sol.u)))
+            priced.append((result.prices, start, math.inf, result.path.duration))
             break
         k = firsts[index + 1] - first  # the node where the next window starts
         pieces.append((start, sol, k))
+        priced.append((result.prices, start, float(sol.t_nodes[k] - sol.t_nodes[0]), result.path.duration))
         n = model.n
         x = sol.x[k]
         state = (x[:n].copy(), x[n:2 * n].copy()) + ((x[2 * n:3 * n].copy(),) if sol.smooth else ())
         guess = _continued(sol, k)
-    return _stitched(path, model, options, pieces, reports, wall)
+    return replace(_stitched(path, model, options, pieces, reports, wall),
+                   prices=prices.combined(model, priced, 0.0, path.duration))
 
 
 def _continued(sol: Solution, k: int):

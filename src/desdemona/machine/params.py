@@ -188,14 +188,18 @@ class MachineParams:
 # Loading
 
 
-def load_params(path: str | Path | None = None, base: str | None = None) -> MachineParams:
-    """Machine parameters: a built-in set, overridden by the keys of an optional user TOML file.
+def load_params(path: str | Path | None = None, base: str | None = None,
+                numbers: dict[str, float] | None = None) -> MachineParams:
+    """Machine parameters: a built-in set, overridden by the keys of an optional user TOML file, then
+    by single ``numbers``.
 
     Parameters
     ----------
     path : a TOML file giving any subset of the keys of ``data/default.toml``; None for none.
     base : built-in set to start from, one of ``BUILTIN_SETS``. Defaults to the file's ``base`` key,
         else ``"default"``.
+    numbers : values by their dotted key (:func:`number_keys`: ``joints.track.position_m.max``),
+        checked as a file's are (a design study's point, :mod:`desdemona.runs.study`).
 
     Raises
     ------
@@ -219,7 +223,89 @@ def load_params(path: str | Path | None = None, base: str | None = None) -> Mach
     text = resources.files("desdemona").joinpath(f"data/{chosen}.toml").read_text()
     merged = _parse(tomllib.loads(text), f"<built-in {chosen}>")
     merged = _merge(merged, _parse(user, source))
+    if numbers:
+        source = f"{source} with {', '.join(f'{k} = {v:g}' for k, v in numbers.items())}"
+        merged = _merge(merged, _parse(_fragment(numbers, merged), source))
     return _build(merged, source)
+
+
+# Elements of a parameter given as a list, by name (a key of :func:`number_keys` ends in one).
+_ELEMENTS = {"position": ("min", "max"), "head_offset": ("x", "y", "z"), "com": ("x", "y", "z"),
+             "inertia": ("xx", "yy", "zz", "xy", "xz", "yz")}
+
+
+# Words for a limit that are not its key's, and the quantity they mean (for an unknown key's nearest).
+_MEANT = {"upper": "max", "lower": "min", "max": "max", "min": "min", "travel": "position", "rate": "velocity",
+          "speed": "velocity", "accel": "acceleration", "torque": "torque", "force": "force"}
+
+
+def number_keys() -> tuple[str, ...]:
+    """Every single number of a parameter file as a dotted key, in each of its units: ``gravity_m_s2``,
+    ``head_offset_m.x``, ``joints.track.position_m.max``, ``joints.yaw.velocity_deg_s``,
+    ``joints.yaw.torque_kN_m``, ``bodies.cabin.mass_kg``, ``bodies.cabin.com_m.z``,
+    ``bodies.cabin.inertia_kg_m2.xx``: what a design study may vary (``load_params(numbers=...)``)."""
+    def leaves(quantity: str, kind: str, element: str | None = None) -> list[str]:
+        names = [f"{quantity}_{unit}" for unit in _UNITS[kind]]
+        return [f"{n}.{e}" for n in names for e in _ELEMENTS[quantity]] if quantity in _ELEMENTS else names
+
+    keys = [*leaves("gravity", "linear_acceleration"), *leaves("head_offset", "length")]
+    for i, name in enumerate(JOINT_NAMES):
+        col = 0 if JOINT_KINDS[i] == "revolute" else 1
+        keys += [f"joints.{name}.{leaf}" for quantity, kinds in _JOINT_QUANTITIES.items() if kinds[col]
+                 for leaf in leaves(quantity, kinds[col])]
+    for name in BODY_NAMES:
+        keys += [f"bodies.{name}.{leaf}" for quantity, kind in _BODY_QUANTITIES.items()
+                 for leaf in leaves(quantity, kind)]
+    return tuple(keys)
+
+
+def _fragment(numbers: dict[str, float], merged: dict[str, Any]) -> dict[str, Any]:
+    """The parameter file (as ``tomllib`` reads it) that sets ``numbers`` (:func:`number_keys`) on the
+    parsed set ``merged``: an element of a list (a position's min, a head offset's x) is written with
+    the list's other elements as ``merged`` has them. Raises :class:`ParameterError` for an unknown key,
+    with the nearest known ones."""
+    known = number_keys()
+    fragment: dict[str, Any] = {}
+    for key, value in numbers.items():
+        if key not in known:
+            import difflib
+
+            prefix = ".".join(key.split(".")[:2]) + "."
+            within = [k for k in known if k.startswith(prefix)] if prefix.split(".")[0] in ("joints", "bodies") else []
+            meant = _MEANT.get(key.split(".")[-1])  # a limit named in words: its key's quantity
+            within = [k for k in within if meant in k] if meant else within
+            near = difflib.get_close_matches(key, within or known, n=3, cutoff=0.5 if not within else 0.0)
+            raise ParameterError(f"{key}: unknown parameter; nearest: {', '.join(near) or 'none'} (keys are "
+                                 "written as in a parameter file, with their unit: joints.track.position_m.max, "
+                                 "joints.yaw.velocity_deg_s, head_offset_m.x)")
+        *where, leaf = key.split(".")
+        element = None
+        if leaf in {e for names in _ELEMENTS.values() for e in names} and where[-1].split("_")[0] in (
+                "position", "head", "com", "inertia"):
+            *where, leaf, element = key.split(".")
+        table = fragment
+        for part in where:
+            table = table.setdefault(part, {})
+        if element is None:
+            table[leaf] = value
+            continue
+        quantity, unit = _split_key(leaf, _ELEMENTS)
+        if leaf not in table:
+            group = merged["top"] if not where else merged[where[0]][where[1]]
+            current = group.get("position" if quantity == "position" else quantity)
+            if current is None:
+                raise ParameterError(f"{key}: joints.{where[1]} has no position limit (unbounded): give both "
+                                     f"ends in a --params file first")
+            kind = _TOP_QUANTITIES.get(quantity) or _BODY_QUANTITIES.get(quantity) or (
+                "angle" if JOINT_KINDS[JOINT_NAMES.index(where[1])] == "revolute" else "length")
+            table[leaf] = (np.asarray(current, dtype=float) / _UNITS[kind][unit]).tolist()
+        cell = _ELEMENTS[quantity].index(element)
+        if quantity == "inertia":
+            a, b = ("xyz".index(element[0]), "xyz".index(element[1]))
+            table[leaf][a][b] = table[leaf][b][a] = value
+        else:
+            table[leaf][cell] = value
+    return fragment
 
 
 def default_params() -> MachineParams:
@@ -307,7 +393,7 @@ def _parse(data: dict[str, Any], source: str) -> dict[str, Any]:
             if quantity == "gravity":
                 out["top"]["gravity"] = _number(where, value) * factor
             else:
-                out["top"]["head_offset"] = tuple(_numbers(where, value, (3,)) * factor)
+                out["top"]["head_offset"] = tuple(float(x) for x in _numbers(where, value, (3,)) * factor)
     return out
 
 

@@ -4,7 +4,8 @@
   figures 5.7-5.16 (a)); ``joints.png`` joint positions and rates ((b), (c)); ``limits.png``
   normalised force/torque and power with the +-1 limit lines ((d), (e)); for a modulus path
   ``modulus.png``, M_d against M and their difference (figure 7.3 (a), (b)); with perception
-  ``perceived.png``; ``felt.png`` (:func:`draw_felt`).
+  ``perceived.png``; ``felt.png`` (:func:`draw_felt`); off-line ``limit_prices.png``
+  (:mod:`desdemona.results.pricefigure`).
 - :func:`draw_online`: ``online.png`` (like thesis figures 7.5/7.6, with the classical loop),
   ``online_felt.png`` (:func:`draw_felt` of the MPC beside the classical loop) and ``compute_time.png``
   (compute time per cycle against the deadline).
@@ -33,6 +34,7 @@ import numpy as np
 from desdemona.machine.configs import CONFIGURATIONS
 from desdemona.occupant import perception
 from desdemona.occupant.perception import THRESHOLDS
+from desdemona.results import pricefigure
 
 CHANNEL_LABELS = ("omega_x [rad/s]", "omega_y [rad/s]", "omega_z [rad/s]",
                   "f_x [m/s^2]", "f_y [m/s^2]", "f_z [m/s^2]")
@@ -123,6 +125,8 @@ def draw_result(traj, summary: dict, out_dir: str | Path) -> list[Path]:
     paths.append(draw_felt([traj], [None], out / "felt.png",
                            _vestibular((summary.get("quality") or {}).get("vestibular_model")), title))
     paths.append(draw_suffered([traj], [None], out / "suffered.png", title))
+    if (priced := pricefigure.draw(summary, out / "limit_prices.png", title)) is not None:
+        paths.append(priced)
     return paths
 
 

@@ -129,11 +129,12 @@ def run_description(path, config) -> dict:
 
 
 def write(result, out_dir: str | Path, command: str | None = None, overwrite: bool = False,
-          unreachable: dict | None = None, protect=(), view: bool = True, extra_summary: dict | None = None) -> Path:
+          unreachable: dict | None = None, protect=(), view: bool = True, extra_summary: dict | None = None,
+          draw: bool = True) -> Path:
     """Write the result folder of an off-line :class:`~desdemona.cueing.offline.Result` atomically.
 
     unreachable : :func:`desdemona.cueing.sizing.unreachable` of the result's path (computed when not given).
-    protect, view : see :func:`write_folder`; extra_summary : more entries of summary.json.
+    protect, view, draw : see :func:`write_folder`; extra_summary : more entries of summary.json.
     """
     if unreachable is None:
         from desdemona.cueing import sizing
@@ -162,23 +163,25 @@ def write(result, out_dir: str | Path, command: str | None = None, overwrite: bo
                    "iterations": result.solution.iterations, "cost": result.solution.cost,
                    "starts": [vars(s) for s in result.starts], "timings_s": result.timings,
                    **({"linear_algebra": blasfeo.status()} if result.method == "fatrop" else {})},
+        "limit_prices": None if getattr(result, "prices", None) is None else result.prices.to_dict(),
         "options": _plain(result.options),
         "parameters": result.model.params.to_dict(),
         "versions": versions(),
         **(extra_summary or {}),
     }
     return write_folder(result.trajectory, summary, result.model.config, out_dir, overwrite,
-                        protect=protect, view=view)
+                        protect=protect, view=view, draw=draw)
 
 
 def write_folder(traj: Trajectory, summary: dict, config, out_dir: str | Path, overwrite: bool = False,
-                 extra=None, protect=(), view: bool = True) -> Path:
+                 extra=None, protect=(), view: bool = True, draw: bool = True) -> Path:
     """Write trajectory.csv, summary.json, trajectory.mat and the figures into ``out_dir`` atomically.
 
     overwrite : replace ``out_dir`` if it is a result folder of ours (:func:`check_replaceable`).
     extra : optional ``extra(folder)`` that writes more files into the folder before it is moved in.
     protect : paths (the run's inputs) that the replaced folder must not hold.
     view : also write view.html, the 3D replay (:mod:`desdemona.results.view`), from the folder's files.
+    draw : draw the figures (a design study's points leave them to ``desdemona plot``: a second each).
     """
     import scipy.io
 
@@ -207,7 +210,8 @@ def write_folder(traj: Trajectory, summary: dict, config, out_dir: str | Path, o
         (tmp / "summary.json").write_text(json.dumps(summary, indent=2, default=_json_default))
         scipy.io.savemat(tmp / "trajectory.mat", {n.replace("-", "_"): table[:, i] for i, n in enumerate(names)},
                          oned_as="column")
-        figures.draw_result(traj, summary, tmp)
+        if draw:
+            figures.draw_result(traj, summary, tmp)
         if extra is not None:
             extra(tmp)
         if view:
@@ -336,6 +340,7 @@ def online_summary(result, command: str | None = None) -> dict:
                                       "max": float(times.max())},
                    "sources": {s: sources.count(s) for s in ("mpc", "shifted", "brake")},
                    "deadline_misses": int(np.sum(times > result.deadline))},
+        "limit_prices": None if getattr(result, "prices", None) is None else result.prices.to_dict(),
         "options": _plain(result.options),
         "parameters": result.model.params.to_dict(),
         "versions": versions(),

@@ -112,7 +112,7 @@ def limit_use(col: dict, limits: dict, joints) -> dict[str, dict]:
     return out
 
 
-def _geometry(params: dict) -> dict:
+def geometry(params: dict) -> dict:
     """Sizes [m] of the drawn machine from the machine parameters: the track's and heave's travel, the
     gimbal rings' radii from their bodies' inertia (a thin ring, I = m r^2 / 2 about a diameter) and the
     cabin's box from its inertia (a solid box), nested so that each fits inside the next."""
@@ -208,7 +208,7 @@ def scene_data(col: dict, summary: dict, classical: dict | None = None) -> dict:
         "method": summary.get("method") or "",
         "joints": list(JOINT_NAMES), "free": joints,
         "kinds": {j: summary["parameters"]["joints"][j]["kind"] for j in JOINT_NAMES},
-        "geometry": _geometry(summary["parameters"]),
+        "geometry": geometry(summary["parameters"]),
         "thresholds": {"direction_deg": math.degrees(metrics.direction_threshold(vestibular.thresholds)),
                        "rotation_deg_s": [math.degrees(x) for x in vestibular.thresholds[:3]],
                        "vestibular": vestibular.name},
@@ -232,18 +232,27 @@ def _script(text: str) -> str:
     return re.sub(r"</(script)", r"<\\/\1", text, flags=re.IGNORECASE)
 
 
-def page(col: dict, summary: dict, classical: dict | None = None) -> str:
-    """The self-contained HTML page of a result (see the module's notes)."""
-    data = scene_data(col, summary, classical)
+def fill(template: str, script: str, title: str, data: dict) -> str:
+    """The page of ``template`` (its style and markup, under ``data/``) in the shell ``page.html``, with
+    the vendored three.js and uPlot, the machine's drawing (``scene.js``), the page's own ``script``
+    and its ``data`` (JSON) inlined: a page that makes no request but its own. Also the live
+    console's (:mod:`desdemona.service.console`)."""
     three, uplot, uplot_css = (_asset(name) for name in _VENDOR)
     parts = {"GENERATOR": html.escape(f"desdemona view {__version__}"),  # first: it is the first in the head
-             "TITLE": html.escape(f"desdemona: {data['title']}"), "STYLE": uplot_css,
-             "UPLOT": _script(uplot), "THREE": _script(three), "DATA": _json(data).replace("<", "\\u003c"),
-             "VIEW": _script(_asset("view.js"))}
-    text = _asset("view.html")
+             "TITLE": html.escape(title), "STYLE": uplot_css, "UPLOT": _script(uplot), "THREE": _script(three),
+             "SCENE": _script(_asset("scene.js")), "DATA": _json(data).replace("<", "\\u003c"),
+             "VIEW": _script(_asset(script))}
+    css, body = _asset(template).split("<!-- markup -->\n", 1)
+    text = _asset("page.html").replace("@@CSS@@", css, 1).replace("@@BODY@@", body, 1)
     for key, value in parts.items():
         text = text.replace(f"@@{key}@@", value, 1)
     return text
+
+
+def page(col: dict, summary: dict, classical: dict | None = None) -> str:
+    """The self-contained HTML page of a result (see the module's notes)."""
+    data = scene_data(col, summary, classical)
+    return fill("view.html", "view.js", f"desdemona: {data['title']}", data)
 
 
 def page_of_folder(folder: str | Path) -> str:
@@ -337,9 +346,10 @@ class NoBrowser(RuntimeError):
     """selenium, chromium or chromedriver is not installed."""
 
 
-def headless_browser(width: int = 1600, height: int = 900):
+def headless_browser(width: int = 1600, height: int = 900, network: bool = False):
     """A headless Debian chromium driven by selenium through the installed chromedriver (Selenium
-    Manager never downloads one); WebGL by SwiftShader; the browser's console kept for ``get_log``.
+    Manager never downloads one); WebGL by SwiftShader; the browser's console kept for ``get_log``
+    (and, with ``network``, its network requests: ``get_log("performance")``).
     For the tests and the documentation's screenshots: selenium is a test extra, not a dependency.
     Raises :class:`NoBrowser` where any is missing."""
     try:
@@ -358,5 +368,5 @@ def headless_browser(width: int = 1600, height: int = 900):
                 "--use-angle=swiftshader", "--enable-unsafe-swiftshader", f"--window-size={width},{height}",
                 "--hide-scrollbars", "--disable-extensions", "--no-first-run"):
         options.add_argument(arg)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL", **({"performance": "ALL"} if network else {})})
     return webdriver.Chrome(service=Service(executable_path=driver), options=options)

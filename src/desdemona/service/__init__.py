@@ -8,7 +8,8 @@ service runs a session and sends setpoints to the motion system.
 - :mod:`desdemona.service.bridge`, :mod:`desdemona.service.flightgear`, :mod:`desdemona.service.xplane`:
   bridges from a running simulator's own UDP output, checked live (``desdemona host flightgear|xplane``);
 - :mod:`desdemona.service.machine`: a stand-in for the motion system (``desdemona machine``), which
-  checks every setpoint on its own.
+  checks every setpoint on its own;
+- :mod:`desdemona.service.console`: the operator's live page and its buttons (``serve --console``).
 
 The controller it calls (:mod:`desdemona.control.mpc`) is the one ``desdemona online`` runs, unchanged.
 """

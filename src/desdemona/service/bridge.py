@@ -40,6 +40,7 @@ import numpy as np
 from desdemona.profiles import convert, csvfile
 from desdemona.profiles.path import G, MAX_ANGULAR_VELOCITY, MAX_SPECIFIC_FORCE, DesiredPath, ProfileError
 from desdemona.service import protocol
+from desdemona.service.signing import Outgoing
 from desdemona.support import guard
 
 #: [s] the stream the start check reads: a still second within it (:data:`.convert.STILL_SECONDS`)
@@ -197,11 +198,13 @@ class Bridge:
     """Checked forwarding of a simulator's samples to ``serve``, one Motion message per sample.
 
     States: ``waiting`` (collecting the stream's first :data:`START_SECONDS` while it runs), ``forwarding``,
-    and back to ``waiting`` when the stream turns implausible. ``say(text)`` reports each change."""
+    and back to ``waiting`` when the stream turns implausible. ``say(text)`` reports each change; ``key``:
+    the shared key its messages are signed with, or None."""
 
     def __init__(self, sock: socket.socket, to: tuple[str, int], name: str, fixes: tuple[str, str, str, str],
-                 modulus: bool = False, say=None, clock=time.monotonic):
+                 modulus: bool = False, say=None, clock=time.monotonic, key: bytes | None = None):
         self.sock, self.to, self.name, self.fixes, self.modulus = sock, to, name, fixes, modulus
+        self.outgoing = Outgoing(key)  # a session of its own; signed with a key
         self.say = say or (lambda text: None)
         self.clock = clock
         self.begun = clock()
@@ -276,7 +279,7 @@ class Bridge:
         if t <= self.last_time:
             return
         values = np.array([np.linalg.norm(S[3:])]) if self.modulus else S
-        data = protocol.pack(protocol.Motion(self.sequence, t, values))
+        data = self.outgoing.pack(protocol.Motion(self.sequence, t, values))
         self.sock.sendto(data, self.to)
         self.delays.append(self.clock() - arrived)
         self.sequence += 1

@@ -79,11 +79,13 @@ def sample(fdm) -> _bridge.Sample:
 
 
 def run(listen: tuple[str, int], to: tuple[str, int], modulus: bool = False, wait: float = 120.0,
-        duration: float | None = None, say=None) -> dict:
+        duration: float | None = None, say=None,
+        key: bytes | None = None) -> dict:
     """Read FlightGear's native FDM packets on ``listen`` (host, port) and forward the checked motion
-    to ``serve`` at ``to`` until ``duration`` [s] or Ctrl-C (:func:`.bridge.run`: ``wait``, the result)."""
+    to ``serve`` at ``to`` until ``duration`` [s] or Ctrl-C (:func:`.bridge.run`: ``wait``, the result);
+    ``key``: the shared key its messages are signed with."""
     decode = decoder()
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sock:
         sock.bind(listen)
-        link = _bridge.Bridge(sock, to, NAME, FIXES, modulus=modulus, say=say)
+        link = _bridge.Bridge(sock, to, NAME, FIXES, modulus=modulus, say=say, key=key)
         return _bridge.run(sock, decode, link, wait, duration)

@@ -38,6 +38,7 @@ from desdemona.profiles import convert
 from desdemona.profiles import jsbsim as _flights
 from desdemona.profiles.path import DesiredPath, G, ProfileError
 from desdemona.service import protocol
+from desdemona.service.signing import Outgoing
 from desdemona.support import guard
 
 #: The largest payload of a UDP datagram over IPv4 [bytes]: a forecast must fit in one message.
@@ -65,10 +66,10 @@ def _forecast_samples(forecast: float, step: float, channels: int) -> int:
     if forecast <= 0:
         return 0
     n = max(1, round(forecast / step))
-    size = protocol.HEADER.size + protocol.MOTION.size + 8 * channels * (1 + n)
+    fixed = protocol.HEADER.size + protocol.MOTION.size + protocol.TRAILERS
+    size = fixed + 8 * channels * (1 + n)
     if n > protocol.MAX_FORECAST or size > MAX_DATAGRAM:
-        most = min(protocol.MAX_FORECAST,
-                   (MAX_DATAGRAM - protocol.HEADER.size - protocol.MOTION.size) // (8 * channels) - 1)
+        most = min(protocol.MAX_FORECAST, (MAX_DATAGRAM - fixed) // (8 * channels) - 1)
         raise ValueError(f"a forecast of {forecast:g} s at a step of {step:g} s is {n} samples: a message of "
                          f"{size} bytes; at most {most} samples ({most * step:.4g} s) fit in one datagram")
     return n
@@ -79,7 +80,7 @@ class _Sender:
     ``offset`` [s after the first message] is due ``offset / speed`` seconds after the first one was."""
 
     def __init__(self, to: tuple[str, int], speed: float, start_sequence: int, drop: float, outage, seed: int,
-                 clock, sleep):
+                 clock, sleep, key: bytes | None = None):
         host, port = to
         family, kind, proto, _, address = socket.getaddrinfo(host, int(port), type=socket.SOCK_DGRAM)[0]
         self.socket = socket.socket(family, kind, proto)
@@ -87,6 +88,7 @@ class _Sender:
         self.speed, self.drop, self.clock, self.sleep = float(speed), float(drop), clock, sleep
         self.outage = None if outage is None else (float(outage[0]), float(outage[0]) + float(outage[1]))
         self.random = np.random.default_rng(seed)
+        self.outgoing = Outgoing(key)  # a session of its own; signed with a key
         self.sequence = int(start_sequence)
         self.first_sequence = self.sequence
         self.started: float | None = None
@@ -121,7 +123,7 @@ class _Sender:
             message = protocol.Motion(sequence, float(time_), np.asarray(values, dtype=float),
                                       None if forecast is None or len(forecast) == 0 else forecast,
                                       step if forecast is not None and len(forecast) else 0.0)
-            self.socket.sendto(protocol.pack(message), self.address)
+            self.socket.sendto(self.outgoing.pack(message), self.address)
             self.counts["sent"] += 1
             self.last = now
 
@@ -135,7 +137,8 @@ class _Sender:
 
 def replay(path: DesiredPath, to: tuple[str, int], speed: float = 1.0, forecast: float = 0.0,
            start_sequence: int = 1, drop: float = 0.0, outage: tuple[float, float] | None = None,
-           seed: int = 0, modulus: bool = False, clock=time.monotonic, sleep=time.sleep) -> dict:
+           seed: int = 0, modulus: bool = False, clock=time.monotonic, sleep=time.sleep,
+           key: bytes | None = None) -> dict:
     """Send ``path`` to ``to`` = (host, port) in real time: one Motion message per sample.
 
     Sample k goes out (t_k - t_0) / ``speed`` seconds after the first, with the message time t_k (the
@@ -151,6 +154,7 @@ def replay(path: DesiredPath, to: tuple[str, int], speed: float = 1.0, forecast:
     outage : (start, length) [s of the path's time]: the messages of start <= t_k < start + length are
         withheld (the host going quiet).
     clock, sleep : the wall clock [s] and the way to wait (for tests).
+    key : the shared key every message is signed with (:mod:`desdemona.service.signing`), or None.
 
     Returns ``sent``, ``dropped`` (by ``drop``), ``outage`` (withheld by it), ``messages`` (all samples),
     ``first_sequence``, ``last_sequence``, ``duration`` [s of wall time from the first message's time
@@ -164,7 +168,7 @@ def replay(path: DesiredPath, to: tuple[str, int], speed: float = 1.0, forecast:
     step = float(np.median(np.diff(t)))
     n = _forecast_samples(forecast, step, X.shape[1])
     uniform = np.allclose(np.diff(t), step, rtol=1e-6, atol=1e-9)
-    sender = _Sender(to, speed, start_sequence, drop, outage, seed, clock, sleep)
+    sender = _Sender(to, speed, start_sequence, drop, outage, seed, clock, sleep, key)
     try:
         for k in range(len(t)):
             ahead = None
@@ -265,7 +269,8 @@ class _Flight:
 def jsbsim(script: str | Path, to: tuple[str, int], speed: float = 1.0, forecast: float = 0.0,
            rate: float = _flights.DEFAULT_RATE, start: float | None = None, end: float | None = None,
            start_sequence: int = 1, drop: float = 0.0, outage: tuple[float, float] | None = None,
-           seed: int = 0, modulus: bool = False, clock=time.monotonic, sleep=time.sleep) -> dict:
+           seed: int = 0, modulus: bool = False, clock=time.monotonic, sleep=time.sleep,
+           key: bytes | None = None) -> dict:
     """Fly a JSBSim script (a shipped one by name, or a file) in real time and send what its pilot
     feels to ``to`` = (host, port), ``rate`` messages per second of sim time.
 
@@ -289,8 +294,8 @@ def jsbsim(script: str | Path, to: tuple[str, int], speed: float = 1.0, forecast
         true future of this same, deterministic flight: the model is kept ``forecast`` seconds of sim
         time ahead of what is sent and the samples in between go into the message. It is what a perfect
         forecast would send, not what a real host could predict. Near the flight's end it is cut short.
-    speed, start_sequence, drop, outage, seed, clock, sleep : as for :func:`replay` (``outage`` in the
-        message's time, from the start).
+    speed, start_sequence, drop, outage, seed, clock, sleep, key : as for :func:`replay` (``outage`` in
+        the message's time, from the start).
 
     The flight ends with the script, at ``end``, or where the model crashes or diverges (a specific
     force above :data:`.convert.CRASH_G` g or not a number: nothing from there is sent). Returns the
@@ -325,7 +330,7 @@ def jsbsim(script: str | Path, to: tuple[str, int], speed: float = 1.0, forecast
             if end is not None and not end > lo:
                 raise ProfileError(f"JSBSim script {path.stem}: it starts at {lo:.4g} s ({why}), after the "
                                    f"end {end:g} s; give a later end or a start")
-            sender = _Sender(to, speed, start_sequence, drop, outage, seed, clock, sleep)
+            sender = _Sender(to, speed, start_sequence, drop, outage, seed, clock, sleep, key)
             try:
                 _stream(flight, sender, lo, step, n, end, modulus)
                 result = sender.result()

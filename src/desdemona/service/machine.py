@@ -63,9 +63,11 @@ from desdemona.service import protocol
 from desdemona.service.checker import (ABSOLUTE, CONTINUITY, KINDS, LIMIT_KINDS, MADE_KINDS, POINTS, REANCHOR,
                                        Checker, Violation)
 from desdemona.service.drive import Drive, Event
+from desdemona.service.drops import Drops
 from desdemona.service.machinelog import (FILES, MAX_KEPT, WRITTEN_BY, Files, number, record, summary, violation,
                                           write_summary)
 from desdemona.service.servo import BANDWIDTH_HZ, DELAY, NOISE
+from desdemona.service.signing import Incoming, Outgoing
 from desdemona.support import guard
 
 __all__ = ["ABSOLUTE", "CONTINUITY", "FILES", "KINDS", "LIMIT_KINDS", "MADE_KINDS", "POINTS", "REANCHOR", "Checker",
@@ -91,7 +93,8 @@ class MachineOptions:
     [cycles] after its cycle was due a setpoint counts as late; ``fault``: (seconds after the first
     setpoint, joint index) of an injected drive fault, or None; ``operator``: the host whose Commands
     it takes; ``state_outage``: (seconds after the first setpoint, length [s]) in which it sends no
-    State (a test of the service's loss of them), or None."""
+    State (a test of the service's loss of them), or None; ``key``: the shared key its datagrams are
+    signed with and every datagram it takes must be (:mod:`desdemona.service.signing`), or None."""
 
     delay: float = DELAY
     bandwidth_hz: float = BANDWIDTH_HZ
@@ -103,6 +106,7 @@ class MachineOptions:
     operator: str = "127.0.0.1"
     seed: int = 0
     state_outage: tuple[float, float] | None = None
+    key: bytes | None = field(default=None, repr=False)
 
     def __post_init__(self):
         for name, value, low in (("--delay", self.delay, 0.0), ("--late", self.late, 0.0),
@@ -139,7 +143,9 @@ class Report:
     """What the machine received, did and found.
 
     received : setpoints checked; datagrams : all datagrams read; dropped : {reason: count} of those
-    never checked (:func:`drop_reason`; from an unexpected address; out of order); refused : {reason:
+    never checked (one of :data:`desdemona.service.protocol.REASONS`: not valid, from an unexpected
+    sender, out of order, unsigned, forged or replayed with a key), drop_samples : {reason: the first
+    datagrams' details}; refused : {reason:
     count} of setpoints checked but not followed (a fault, braking, not where the machine stands);
     gaps : sequence gaps, missing : sequence numbers skipped in all; violations : the first
     :data:`MAX_KEPT`; counts : {kind: count} of all violations (:data:`KINDS`); worst : {limit: worst
@@ -157,6 +163,7 @@ class Report:
     received: int = 0
     datagrams: int = 0
     dropped: dict = field(default_factory=dict)
+    drop_samples: dict = field(default_factory=dict)
     refused: dict = field(default_factory=dict)
     gaps: int = 0
     missing: int = 0
@@ -220,17 +227,9 @@ def exit_code(report: Report) -> int:
 
 
 def drop_reason(error: protocol.ProtocolError) -> str:
-    """A short reason (the key of :attr:`Report.dropped`) for a datagram :func:`protocol.unpack` refused."""
-    text = str(error)
-    for words, reason in (("truncated", "truncated"), ("magic", "wrong magic"), ("protocol version", "version"),
-                          ("unknown message kind", "unknown kind"), ("not a finite number", "not finite"),
-                          ("absurd", "absurd value"), ("setpoint of", "wrong length"),
-                          ("setpoint with", "malformed"), ("state of", "not a setpoint"),
-                          ("state with", "not a setpoint"), ("command of", "wrong length"),
-                          ("command with", "malformed"), ("motion", "not a setpoint")):
-        if words in text:
-            return reason
-    return "invalid"
+    """The reason (a key of :attr:`Report.dropped`, one of :data:`protocol.REASONS`) for a datagram
+    :func:`protocol.read` refused."""
+    return error.reason
 
 
 def _is_own(folder: Path) -> bool:
@@ -267,6 +266,8 @@ class _StandIn:
         self.checker = Checker(model)
         self.rng = np.random.default_rng(options.seed)
         self.previous: protocol.Setpoint | None = None
+        self.incoming, self.outgoing = Incoming(options.key), Outgoing(options.key)
+        self.drops = Drops()
         self.service = None  # where the setpoints come from, and the States go
         self.commands: dict = {}  # the last command sequence per sender
         self.first_arrival: float | None = None
@@ -277,35 +278,39 @@ class _StandIn:
         self.faulted = False
         self.button = False  # the emergency stop's button (SIGUSR1), acted on at the next tick
 
-    def drop(self, reason: str) -> None:
-        self.report.dropped[reason] = self.report.dropped.get(reason, 0) + 1
+    def drop(self, reason: str, detail: str = "") -> None:
+        self.drops(reason, detail)
+        self.report.dropped[reason] = self.drops.counts[reason]
+        self.report.drop_samples = self.drops.sample()
 
     def datagram(self, data: bytes, sender, t: float) -> None:
         self.report.datagrams += 1
         self.last_arrival = t
         try:
-            message = protocol.unpack(data)
+            frame = self.incoming.read(data)
         except protocol.ProtocolError as error:
-            return self.drop(drop_reason(error))
+            return self.drop(error.reason, str(error))
+        message, who = frame.message, (*sender[:2], frame.session)
         if isinstance(message, protocol.Setpoint):
             return self.setpoint(message, sender, t)
         if isinstance(message, protocol.Command):
             if sender[0] != self.options.operator:
-                return self.drop("command from an unexpected address")
-            if message.sequence <= self.commands.get(sender, -1):
-                return self.drop("command out of order")
-            self.commands[sender] = message.sequence
+                return self.drop("sender", f"a command from {sender[0]}, the operator is {self.options.operator}")
+            if message.sequence <= self.commands.get(who, -1):
+                return self.drop("stale", f"command sequence {message.sequence}")
+            self.commands[who] = message.sequence
             return self.drive.command(message.action, t)
-        self.drop("not a setpoint")
+        self.drop("kind", f"a {type(message).__name__} from {sender[0]}:{sender[1]}")
 
     def setpoint(self, sp: protocol.Setpoint, sender, t: float) -> None:
         report, previous = self.report, self.previous
         if self.service is None:
             self.service = sender
         elif sender != self.service:
-            return self.drop("setpoint from an unexpected address")
+            return self.drop("sender", f"a setpoint from {sender[0]}:{sender[1]}, the service is "
+                                       f"{self.service[0]}:{self.service[1]}")
         if previous is not None and sp.sequence <= previous.sequence:
-            return self.drop("duplicate" if sp.sequence == previous.sequence else "out of order")
+            return self.drop("stale", f"setpoint sequence {sp.sequence} after {previous.sequence}")
         follows = previous is not None and sp.sequence == previous.sequence + 1
         # continuity matters for a motion the drive follows on: not for setpoints it refuses (stopped on
         # its own) or takes afresh from where it stands
@@ -380,10 +385,10 @@ class _StandIn:
                   and 0.0 <= t1 - self.first_arrival - outage[0] < outage[1])
         if self.service is not None and not silent:
             try:
-                self.sock.sendto(protocol.pack(state), self.service)
+                self.sock.sendto(self.outgoing.pack(state), self.service)
                 self.report.states += 1
-            except OSError:
-                self.drop("state not sent")
+            except OSError as exc:
+                self.drop("socket", f"state not sent: {exc}")
         for event in drive.events[self.written_events:]:
             self.files.write("events.csv", [number(event.time), event.what, event.detail])
         self.written_events = len(drive.events)

@@ -98,6 +98,7 @@ def summary(report, model) -> dict:
         "config": model.config.name, "params": model.params.name, "free": list(model.config.joint_names),
         "listen": list(report.address), "stopped": report.stopped, "elapsed": report.elapsed,
         "datagrams": report.datagrams, "received": report.received, "dropped": dict(sorted(report.dropped.items())),
+        "dropped_sample": report.drop_samples,
         "refused": dict(sorted(report.refused.items())), "gaps": report.gaps, "missing": report.missing,
         "reanchored": report.reanchored, "states_sent": report.states,
         "violations": dict(report.counts), "violation_count": report.violation_count,

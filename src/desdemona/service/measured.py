@@ -19,13 +19,14 @@ Tolerances, from the limits (per free joint, the session's step h):
 
 from __future__ import annotations
 
-from collections import Counter
 from dataclasses import dataclass
 
 import numpy as np
 
 from desdemona.machine.plan import advance
 from desdemona.service import protocol
+from desdemona.service.drops import Drops
+from desdemona.service.signing import Incoming
 
 #: The fault tolerance in cycles at the rate limit (position) and at the acceleration limit (rate).
 CYCLES = 2.0
@@ -49,42 +50,62 @@ class Tracking:
 class MachineLink:
     """The States of the motion system at ``address`` (the service's ``--send``), for ``model`` at the
     session's step ``h`` [s]: :meth:`take` a datagram; :meth:`tracking` of the newest State against the
-    commanded motion; ``lost_after`` [s] without a State (once they came) is a loss."""
+    commanded motion; ``lost_after`` [s] without a State (once they came) is a loss. With ``key`` only
+    signed States are taken; a new session of the motion system is its restart (its sequence counted
+    afresh, the old session's States never taken again); drops are counted by reason
+    (:class:`~desdemona.service.drops.Drops`, ``on_drop(line)`` at most once a second per reason of
+    ``clock``)."""
 
-    def __init__(self, model, h: float, address: tuple[str, int], lost_after: float):
+    def __init__(self, model, h: float, address: tuple[str, int], lost_after: float, key: bytes | None = None,
+                 on_drop=None, clock=None):
         self.select = model.config.select
         lim = model.limits
         self.tolerance = (CYCLES * h * np.asarray(lim.velocity, float), CYCLES * h * np.asarray(lim.acceleration, float))
         self.address, self.lost_after = address, lost_after
         self.newest: protocol.MachineState | None = None
+        self.session = None  # the motion system's session (a new one: it restarted)
+        self.past: set = set()  # its sessions before
         self.arrived: float | None = None
         self.received = 0
-        self.dropped: Counter = Counter()
+        self.incoming = Incoming(key)
+        self.drops = Drops(on_drop) if clock is None else Drops(on_drop, clock)
+
+    @property
+    def dropped(self):
+        """reason -> datagrams dropped (:data:`~desdemona.service.protocol.REASONS`)."""
+        return self.drops.counts
 
     def take(self, data: bytes, sender, now: float) -> str:
         """A datagram that came to the service's sending socket: "" if it is a valid State of the
         machine (kept as the newest), else the reason it was dropped (counted)."""
-        reason = self._check(data, sender)
-        if reason:
-            self.dropped[reason] += 1
-            return reason
+        why = self._check(data, sender)
+        if why:
+            self.drops(*why)
+            return why[0]
         self.received += 1
         self.arrived = now
         return ""
 
-    def _check(self, data: bytes, sender) -> str:
+    def _check(self, data: bytes, sender) -> tuple[str, str] | None:
         if tuple(sender[:2]) != tuple(self.address):
-            return "state from an unexpected address"
+            return "sender", f"a datagram from {sender[0]}:{sender[1]}, the machine is {self.address[0]}:" \
+                             f"{self.address[1]}"
         try:
-            message = protocol.unpack(data)
+            frame = self.incoming.read(data)
         except protocol.ProtocolError as exc:
-            return f"state: {str(exc).split(':')[0]}"
+            return exc.reason, f"state: {exc}"
+        message = frame.message
         if not isinstance(message, protocol.MachineState):
-            return "not a state message"
-        if self.newest is not None and message.sequence <= self.newest.sequence:
-            return "state out of order or repeated"
-        self.newest = message
-        return ""
+            return "kind", f"a {type(message).__name__} from the machine's address"
+        if frame.session in self.past:
+            return "sender", f"a State of the machine's session {frame.session}, replaced by a newer one"
+        if (self.newest is not None and frame.session == self.session
+                and message.sequence <= self.newest.sequence):
+            return "stale", f"state sequence {message.sequence} after {self.newest.sequence}"
+        if self.newest is not None and frame.session != self.session:
+            self.past.add(self.session)  # the motion system restarted
+        self.newest, self.session = message, frame.session
+        return None
 
     def lost(self, now: float) -> bool:
         """States came, and none for ``lost_after`` seconds."""

@@ -29,7 +29,6 @@ import socket
 import statistics
 import struct
 import time
-from collections import Counter
 
 #: How many of the host's last arrivals give its period (the median of their gaps).
 ARRIVALS = 16
@@ -73,16 +72,17 @@ def stamped(sock: socket.socket) -> socket.socket:
     return sock
 
 
-def datagrams(sock: socket.socket, dropped: Counter):
+def datagrams(sock: socket.socket, on_error):
     """The datagrams waiting on a non-blocking ``sock``: (data, sender, age [s]) each, the age since the
-    kernel received it (0 where it was not stamped, :func:`stamped`)."""
+    kernel received it (0 where it was not stamped, :func:`stamped`); ``on_error(exc)`` is told of a
+    socket error (an ICMP error for an earlier send: not a message)."""
     while True:
         try:
             data, ancillary, _, sender = sock.recvmsg(65536, socket.CMSG_SPACE(16))
         except (BlockingIOError, InterruptedError):
             return
-        except OSError:  # e.g. an ICMP error for an earlier send: not a message
-            dropped["socket error"] += 1
+        except OSError as exc:
+            on_error(exc)
             continue
         age = 0.0
         for level, kind, stamp in ancillary:

@@ -19,7 +19,8 @@ the window opened waits for the host's next where it is due in time (:mod:`desde
   rest within every limit (``parking``), then held (``parked``); when valid messages return, the
   controller plans afresh from where it stands (``running``).
 - **Bad datagrams** (not this protocol, NaN, absurd values, the wrong channels, out of order or
-  repeated): dropped and counted by reason, never used.
+  repeated, from another sender than the host, unsigned, forged or replayed with a key): dropped and
+  counted by one of the protocol's fixed reasons, never used (:mod:`desdemona.service.inbox`).
 - **Stop**: SIGINT or SIGTERM parks the machine and then ends the session; a second one ends it at
   once after one braking command.
 
@@ -31,9 +32,7 @@ the window opened waits for the host's next where it is due in time (:mod:`desde
 
 from __future__ import annotations
 
-import bisect
 import math
-import selectors
 import socket
 import time
 from collections import Counter
@@ -51,6 +50,7 @@ from desdemona.machine.params import JOINT_NAMES
 from desdemona.machine.plan import Plan, State, stopping_jerk
 from desdemona.profiles import DesiredPath, ProfileError
 from desdemona.service import pacing, protocol
+from desdemona.service.inbox import Inbox
 from desdemona.service.measured import (
     BAND,
     STOPPED_ON_ITS_OWN,
@@ -59,17 +59,8 @@ from desdemona.service.measured import (
 )
 from desdemona.service.sessionlog import TIMED, describe, events_table, session_table, summary
 
-__all__ = [
-    "ServeOptions",
-    "Served",
-    "default_channels",
-    "describe",
-    "events_table",
-    "result",
-    "serve",
-    "session_table",
-    "summary",
-]
+__all__ = ["ServeOptions", "Served", "default_channels", "describe", "events_table", "result", "serve",
+           "session_table", "summary"]
 from desdemona.support import guard
 from desdemona.support.symbolic import call
 
@@ -108,6 +99,7 @@ class ServeOptions:
     history: float = 10.0
     operator: str = "127.0.0.1"
     state_lost: float = 0.5
+    key: bytes | None = field(default=None, repr=False)
 
     def __post_init__(self):
         if self.channels not in (None, 1, 6):
@@ -132,6 +124,7 @@ class Served:
     received_t: np.ndarray
     received: np.ndarray
     dropped: Counter = field(default_factory=Counter)
+    drop_samples: dict = field(default_factory=dict)  # reason -> the first datagrams' details
     stopped_by: int | None = None
     deadline: float = 0.0
     offset: float = 0.0  # the session's time [s] of the host's time 0
@@ -171,95 +164,6 @@ class Served:
         return model.config.cue_path(_host_path(t, values, "received from the host")), loop
 
 
-class _Inbox:
-    """The host's datagrams: read without blocking, checked, the newest valid message kept; the motion
-    received so far for the predictor and the log, on the host's clock. A host that starts again
-    (its sequence and time from the beginning) after it has been silent for ``restart_after`` seconds
-    is taken as the same host back: its times continue from where it left off. ``on_drop(reason)`` is
-    told of each new reason to drop a datagram. ``machine`` = (the sending socket, its
-    :class:`MachineLink`): the States that come back to it; Commands are taken from the host
-    ``operator`` only; ``early``: datagrams dropped before the session began."""
-
-    def __init__(self, sock: socket.socket, channels: int, clock, restart_after: float = np.inf, on_drop=None,
-                 machine: tuple[socket.socket, MachineLink] | None = None, operator: str = "127.0.0.1",
-                 early: int = 0):
-        self.sock, self.channels, self.clock = pacing.stamped(sock), channels, clock
-        self.restart_after, self.on_drop = restart_after, on_drop
-        self.shift = 0.0  # added to a returning host's times
-        self.selector = selectors.DefaultSelector()
-        self.selector.register(sock, selectors.EVENT_READ)
-        self.machine, self.operator = machine, operator
-        if machine is not None:
-            machine[0].setblocking(False)
-            self.selector.register(machine[0], selectors.EVENT_READ)
-        self.commands: list[tuple[float, str]] = []  # (arrived, action) not yet acted on
-        self.last_command: dict = {}
-        self.dropped: Counter = Counter({"came before the service was ready": early} if early else {})
-        self.newest: protocol.Motion | None = None
-        self.arrived = None  # clock time the newest message arrived
-        self.fresh = False  # a message came since the last cycle took one
-        self.t, self.values, self.arrivals = [], [], []
-
-    def wait(self, until: float, opens: float) -> None:
-        """Read what comes until ``until`` (clock), returning early once a new message has come and the
-        cycle's window has opened (``opens``)."""
-        while True:
-            self.drain()
-            now = self.clock()
-            # a stale message is answered as the window opens unless the host's next is due in it (pacing)
-            begins = opens if self.fresh and not pacing.newer_due(self.arrivals, opens, until) else until
-            if now >= min(begins, until):
-                return
-            self.selector.select(min(begins, until) - now)
-
-    def drain(self) -> None:
-        if self.machine is not None:
-            sock, link = self.machine
-            for data, sender, _ in pacing.datagrams(sock, self.dropped):
-                reason = link.take(data, sender, self.clock())
-                if reason and link.dropped[reason] == 1 and self.on_drop is not None:
-                    self.on_drop(reason)
-        for data, sender, age in pacing.datagrams(self.sock, self.dropped):
-            self._take(data, self.clock() - age, sender)
-
-    def _take(self, data: bytes, arrived: float, sender=("", 0)) -> None:
-        try:
-            message = protocol.unpack(data)
-        except protocol.ProtocolError as exc:
-            return self._drop(str(exc).split(":")[0])
-        if isinstance(message, protocol.Command):
-            if sender[0] != self.operator:
-                return self._drop("command from an unexpected address")
-            if message.sequence <= self.last_command.get(sender, -1):
-                return self._drop("command out of order or repeated")
-            self.last_command[sender] = message.sequence
-            self.commands.append((arrived, message.action))
-            return None
-        if not isinstance(message, protocol.Motion):
-            return self._drop("not a motion message")
-        if message.channels != self.channels:
-            return self._drop(f"{message.channels} channels, the session takes {self.channels} (--channels)")
-        if self.newest is not None and (message.sequence <= self.newest.sequence
-                                        or message.time + self.shift <= self.t[-1]):
-            if arrived - self.arrived <= self.restart_after:
-                return self._drop("out of order or repeated")
-            self.shift = self.t[-1] + (arrived - self.arrived) - message.time  # the host is back, restarted
-        self.newest, self.arrived, self.fresh = message, arrived, True
-        self.t.append(message.time + self.shift)
-        self.values.append(message.values)
-        self.arrivals.append(arrived)
-
-    def _drop(self, reason: str) -> None:
-        self.dropped[reason] += 1
-        if self.dropped[reason] == 1 and self.on_drop is not None:
-            self.on_drop(reason)
-
-    def recent(self, seconds: float) -> tuple[np.ndarray, np.ndarray]:
-        """(t, values) of the motion of the last ``seconds`` (host time)."""
-        start = bisect.bisect_right(self.t, self.t[-1] - seconds)  # the times increase: 0.1 ms less a cycle than a scan
-        return np.asarray(self.t[start:]), np.asarray(self.values[start:])
-
-
 class _Preview:
     """The session's predictor over what the host has sent (``forecast``: the host's own block)."""
 
@@ -267,7 +171,7 @@ class _Preview:
         self.name, self.model, self.horizon, self.history = name, model, horizon, history
         self.predict = None if name == "forecast" else predictor(name, reference)
 
-    def __call__(self, inbox: _Inbox):
+    def __call__(self, inbox: Inbox):
         message = inbox.newest
         if self.name == "forecast":
             if message.forecast is None:
@@ -311,17 +215,18 @@ def _discard_queued(sock: socket.socket) -> int:
 
 
 def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=time.monotonic, ready=None,
-          on_drop=None, inbound: socket.socket | None = None, log=None) -> Served:
+          on_drop=None, inbound: socket.socket | None = None, log=None, console=None) -> Served:
     """Run a session (see the module's docstring) until ``serving.duration``, ``serving.quiet_end`` or
     a stop signal; returns what it did. The controller's options are ``options.mpc`` (a plan every
     step: the session's step is the cycle); its predictor ``options.predictor``
     (one that may run live, :data:`desdemona.control.predictors.PREDICTORS`). ``ready(early)``, if given,
     is called once the service listens, with the number of host datagrams that came before (counted as
-    dropped); ``on_drop(reason)`` the first time a datagram is dropped for a reason. ``inbound``: the
-    host's socket (:func:`listening`), bound before the controller is built, so that a port in use is
-    said at once and what a host sends meanwhile is counted, not lost unseen; None: bound here to
+    dropped); ``on_drop(line)`` when datagrams are dropped, at most once a second per reason.
+    ``inbound``: the host's socket (:func:`listening`), bound before the controller is built, so that
+    a port in use is said at once and what a host sends meanwhile is counted; None: bound to
     ``serving.listen``. ``log``, if given, a :class:`~desdemona.service.sessionlog.LiveLog` that gets
-    every cycle as it ends."""
+    every cycle as it ends; ``console``, a :class:`~desdemona.service.console.Console` handed each cycle
+    as it ends, whose operators' commands are taken as Command datagrams are."""
     mpc = options.mpc
     predictors.check(options.predictor, True, options.reference is not None, options.forecast is not None)
     if mpc.replan_steps != 1:
@@ -340,9 +245,9 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
         early = _discard_queued(inbound)
         if ready is not None:
             ready(early)
-        link = MachineLink(model, h, serving.send, serving.state_lost)
-        inbox = _Inbox(inbound, channels, clock, serving.timeout * h, on_drop, machine=(outbound, link),
-                       operator=serving.operator, early=early)
+        link = MachineLink(model, h, serving.send, serving.state_lost, key=serving.key, on_drop=on_drop, clock=clock)
+        inbox = Inbox(inbound, channels, clock, serving.timeout * h, on_drop, machine=(outbound, link),
+                      operator=serving.operator, early=early, key=serving.key)
         session = _Session(model, controller, h, guard_use)
         start = clock()
         k = 0
@@ -351,8 +256,9 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             # stopping, the cycles keep their times; else each starts as a new host message comes
             inbox.wait(start + k * h, np.inf) if stops else inbox.wait(closes, opens)
             began, cpu, session.timings = clock(), time.thread_time(), None
-            for _, action in inbox.commands:  # logged at the cycle that acts on it, as every event
-                session.operator(action, k * h)
+            commands = inbox.commands + (console.commands() if console is not None else [])
+            for _, action, *who in commands:  # logged at the cycle that acts on it, as every event
+                session.operator(action, k * h, *who)
                 if action in ("emergency stop", "reset"):  # the motion system's own: passed on
                     _send(outbound, protocol.Command(len(session.events), began - start, action), serving.send, inbox)
             inbox.commands = []
@@ -376,8 +282,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             session.record(k, compute=sent - began, age=np.nan if inbox.arrived is None else began - inbox.arrived,
                            latency=sent - inbox.arrived if answered else np.nan)
             pacing.close(session.rows[-1], session.timings, sent - sending, cpu, controller.prepare, session.state)
-            if log is not None:
-                _log(log, session, link.newest, model.config)
+            _log(log, console, session, inbox, link, model.config)
             k += 1
             quiet = inbox.arrived is not None and clock() - inbox.arrived > (serving.quiet_end or np.inf)
             if ((stops and (session.status == "parked" or len(stops) > 1))
@@ -387,23 +292,28 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
     offset = inbox.arrivals[0] - start - inbox.t[0] if inbox.t else 0.0
     return Served(loop=session.loop(), columns=session.columns(), received_t=np.asarray(inbox.t) + offset,
                   received=np.asarray(inbox.values).reshape(len(inbox.t), channels),
-                  dropped=inbox.dropped + link.dropped, stopped_by=stops[0] if stops else None,
-                  deadline=controller.deadline, offset=offset, events=session.events, states=link.received,
-                  reanchored=session.reanchored, breaks=session.breaks)
+                  dropped=inbox.dropped + link.dropped, drop_samples={**link.drops.sample(), **inbox.drops.sample()},
+                  stopped_by=stops[0] if stops else None, deadline=controller.deadline, offset=offset,
+                  events=session.events, states=link.received, reanchored=session.reanchored, breaks=session.breaks)
 
 
-def _log(log, session: _Session, state: protocol.MachineState | None, config) -> None:
-    """The cycle just recorded, into the session's log as it goes: commanded and measured beside."""
-    measured = None if state is None else (config.select(state.position), config.select(state.rate),
-                                           state.applied_time)
-    log.cycle(session.rows[-1], session.starts[-1][:2], measured, session.events)
+def _log(log, console, session: _Session, inbox: Inbox, link: MachineLink, config) -> None:
+    """The cycle just recorded, into the session's log as it goes (commanded and measured beside) and
+    handed to the console (each where given)."""
+    state = link.newest
+    if log is not None:
+        measured = None if state is None else (config.select(state.position), config.select(state.rate),
+                                               state.applied_time)
+        log.cycle(session.rows[-1], session.starts[-1][:2], measured, session.events)
+    if console is not None:
+        console.publish(session, inbox, link)
 
 
-def _send(sock: socket.socket, message, to, inbox: _Inbox) -> None:
+def _send(sock: socket.socket, message, to, inbox: Inbox) -> None:
     try:
-        sock.sendto(protocol.pack(message), to)
+        sock.sendto(inbox.outgoing.pack(message), to)
     except OSError as exc:  # the machine's port: nothing to do but count it
-        inbox.dropped[f"{type(message).__name__.lower()} not sent: {exc.strerror or exc}"] += 1
+        inbox.drops("socket", f"{type(message).__name__.lower()} not sent: {exc.strerror or exc}")
 
 
 class _Session:
@@ -444,10 +354,10 @@ class _Session:
     def event(self, t: float, what: str, detail: str = "") -> None:
         self.events.append((t, what, detail))
 
-    def operator(self, action: str, t: float) -> None:
+    def operator(self, action: str, t: float, who: str = "") -> None:
         """An operator's Command: pause, park (the same, the controller then plans afresh), resume,
-        emergency stop (parked until a reset), reset."""
-        self.event(t, f"command {action}")
+        emergency stop (parked until a reset), reset; ``who`` sent it (the console's client)."""
+        self.event(t, f"command {action}", who)
         if action in ("pause", "park", "emergency stop"):
             self.paused = action
             if action == "park":

@@ -84,11 +84,13 @@ def sample(v) -> _bridge.Sample:
 
 
 def run(xplane: tuple[str, int], listen: tuple[str, int], to: tuple[str, int], rate: int = 60,
-        modulus: bool = False, wait: float = 120.0, duration: float | None = None, say=None) -> dict:
+        modulus: bool = False, wait: float = 120.0, duration: float | None = None, say=None,
+        key: bytes | None = None) -> dict:
     """Subscribe to :data:`DATAREFS` at ``rate`` answers a second from the X-Plane at ``xplane`` (host,
     port), receiving on ``listen``, and forward the checked motion to ``serve`` at ``to`` until
-    ``duration`` [s] or Ctrl-C (:func:`.bridge.run`: ``wait``, the result). The subscriptions are sent
-    again while nothing comes (X-Plane started after the bridge) and cancelled at the end."""
+    ``duration`` [s] or Ctrl-C (:func:`.bridge.run`: ``wait``, the result); ``key``: the shared key
+    its messages are signed with. The subscriptions are sent again while nothing comes (X-Plane
+    started after the bridge) and cancelled at the end."""
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sock:
         sock.bind(listen)
 
@@ -96,7 +98,7 @@ def run(xplane: tuple[str, int], listen: tuple[str, int], to: tuple[str, int], r
             for k in range(len(DATAREFS)):
                 sock.sendto(request(k, every), xplane)
 
-        link = _bridge.Bridge(sock, to, NAME, FIXES, modulus=modulus, say=say)
+        link = _bridge.Bridge(sock, to, NAME, FIXES, modulus=modulus, say=say, key=key)
         subscribe()
         try:
             return _bridge.run(sock, Decoder(), link, wait, duration, idle=subscribe)
