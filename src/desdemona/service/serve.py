@@ -280,8 +280,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             _send(outbound, setpoint, serving.send, inbox)
             sent = clock()
             session.record(k, compute=sent - began, age=np.nan if inbox.arrived is None else began - inbox.arrived,
-                           latency=sent - inbox.arrived if answered else np.nan)
-            pacing.close(session.rows[-1], session.timings, sent - sending, cpu, controller.prepare, session.state)
+                           latency=sent - inbox.arrived if answered else np.nan, timed=(sent - sending, cpu))
             _log(log, console, session, inbox, link, model.config)
             k += 1
             quiet = inbox.arrived is not None and clock() - inbox.arrived > (serving.quiet_end or np.inf)
@@ -472,7 +471,10 @@ class _Session:
         return protocol.Setpoint(k + 1, now, self.status, self.source, answers, k * self.h, self.h, config.expand(q),
                                  config.expand(qd, "zero"), config.expand(qdd, "zero"), config.expand(jerk, "zero"))
 
-    def record(self, k: int, compute: float, age: float, latency: float) -> None:
+    def record(self, k: int, compute: float, age: float, latency: float, timed=(np.nan, 0.0)) -> None:
+        """The cycle's row, and the state its command leaves the machine in; ``timed`` = (the send's time
+        [s], the thread's processor time at the cycle's start): its phases, then the next cycle's QP
+        prepared from that state where it planned (:func:`desdemona.service.pacing.close`)."""
         qdd, jerk = self.command
         self.starts.append(self.state)
         self.u.append(qdd)
@@ -481,6 +483,7 @@ class _Session:
                           "command": self.source, "status": self.status, "reason": self.reason,
                           "tracking_use": self.tracking, "machine": self.machine_status})
         self.state = self.state.advance(qdd, self.h, jerk)
+        pacing.close(self.rows[-1], self.timings, *timed, self.controller.prepare, self.state)
 
     def loop(self) -> ClosedLoop:
         n = self.model.n
