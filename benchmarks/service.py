@@ -4,6 +4,7 @@
     python benchmarks/service.py --runs dfs-50        # one run
     python benchmarks/service.py --table-only         # re-read the folders, rewrite the table
     python benchmarks/service.py --runs dfs-50 --key  # the same run, every datagram signed (``--key``)
+    python benchmarks/service.py --runs full-50-host60 --seconds 20   # a short run
 
 Each run starts three processes, as a user would (docs/guide/serve.md): the motion
 system's stand-in (``desdemona machine``), the service (``desdemona serve``, the ``hold`` predictor,
@@ -16,7 +17,11 @@ at the motion system's rate). Runs:
   plan's coarse tail in steps of 0.2 s instead of 0.1 s: half the intervals);
 - ``dfs-50-lossy``: as ``dfs-50`` with 10 % of the host's datagrams dropped at random and a 1 s
   outage at 30 s of the flight: the machine must park within the time its limits allow for braking,
-  and the session resume after the outage.
+  and the session resume after the outage;
+- ``full-50-host60``, ``full-50-host120``: ``full`` at 50 Hz, ``dfs-100-host60``, ``dfs-100-host120``:
+  ``dfs`` at 100 Hz, each with the host sending at 60 or 120 Hz on its own clock, not locked to the
+  service's (the latency targets of issue 75: p99 at most 10 ms on ``full`` at 50 Hz, 5 ms on ``dfs`` at
+  100 Hz); ``online``, the reference, runs on the recording at the host's rate with the service's step.
 
 Per run the table gives the end-to-end latency (host message received to setpoint sent) median and
 p99, the cycles over their deadline, the datagrams dropped, the stand-in's verdict (violations of
@@ -24,7 +29,11 @@ any limit, position to jerk, or of continuity), the felt-force RMS of the served
 ``desdemona online`` with the same predictor on the imported recording of the same flight at the
 host's rate (``desdemona import jsbsim --rate``), both judged against that recording, and how long parking took once the host had
 ended, against the time the limits allow. The lossy run adds when it parked and when it resumed.
-The machine's load average is recorded before and after. With ``--key`` the three processes share
+The machine's load average is recorded before and after, and per run over the minute it ended in.
+A second table gives per run where a cycle's time goes (median and p99 of the message's wait from its
+arrival to the cycle's start, and of each phase the service logs, :mod:`desdemona.service.pacing`),
+with the thread's processor time over the compute: on a shared machine a p99 well above it is time
+the processor was taken away, not work. With ``--key`` the three processes share
 a key (made once, ``service-results/key``) and sign every datagram; such a run is written to
 ``NAME-key`` and is its own row of the table.
 """
@@ -54,12 +63,19 @@ RESULTS = HERE / "service-results"
 DOCS = HERE.parent / "docs" / "benchmarks" / "real-time-service.md"
 BEGIN, END = "<!-- service.py table: begin -->", "<!-- service.py table: end -->"
 SCRIPT, START, STOP = str(HERE / "corpus_scripts" / "f16_turn.xml"), 3.0, 58.0  # the F-16's 4.6 g turn, 55 s
-RUNS = {  # name: (configuration, rate [Hz], modulus, lossy, the plan's tail step [s])
-    "dfs-50": ("dfs", 50.0, True, False, 0.1),
-    "full-20": ("full", 20.0, False, False, 0.1),
-    "full-20-tail": ("full", 20.0, False, False, 0.2),
-    "dfs-50-lossy": ("dfs", 50.0, True, True, 0.1),
+FLIGHT_END = STOP  # --seconds shortens the flight (STOP)
+RUNS = {  # name: (configuration, rate [Hz], modulus, lossy, the plan's tail step [s], the host's rate [Hz])
+    "dfs-50": ("dfs", 50.0, True, False, 0.1, 50.0),
+    "full-20": ("full", 20.0, False, False, 0.1, 20.0),
+    "full-20-tail": ("full", 20.0, False, False, 0.2, 20.0),
+    "dfs-50-lossy": ("dfs", 50.0, True, True, 0.1, 50.0),
+    "full-50-host60": ("full", 50.0, False, False, 0.1, 60.0),
+    "full-50-host120": ("full", 50.0, False, False, 0.1, 120.0),
+    "dfs-100-host60": ("dfs", 100.0, True, False, 0.1, 60.0),
+    "dfs-100-host120": ("dfs", 100.0, True, False, 0.1, 120.0),
 }
+#: The figures the service's log times per cycle (desdemona.service.pacing): the message's wait, then the phases.
+PHASES = ("message_age", "preview", "qp_data", "qp", "check", "send", "prepare", "compute_cpu")
 DROP, OUTAGE = 0.1, (30.0, 1.0)
 
 
@@ -91,7 +107,8 @@ def start_pair(config: str, folder: Path, listen: int, send: int, rate: float, i
 def recording(modulus: bool, rate: float) -> Path:
     """The flight imported as ``desdemona import jsbsim`` writes it, at the host's rate (the samples
     the host sends): the reference ``online`` runs on and both are judged against."""
-    out = RESULTS / f"f16-turn{'-modulus' if modulus else ''}-{rate:g}hz.csv"
+    span = "" if STOP == FLIGHT_END else f"-{STOP - START:g}s"
+    out = RESULTS / f"f16-turn{'-modulus' if modulus else ''}-{rate:g}hz{span}.csv"
     if not out.exists():
         RESULTS.mkdir(parents=True, exist_ok=True)
         subprocess.run(_desdemona("import", "jsbsim", SCRIPT, "--start", START, "--end", STOP, "--rate", rate,
@@ -111,7 +128,7 @@ def key_file() -> Path:
 
 def serve_run(name: str, signed: bool = False) -> dict:
     """One run of the three processes (``signed``: sharing a key); returns what the table needs."""
-    config, rate, modulus, lossy, tail = RUNS[name]
+    config, rate, modulus, lossy, tail, host_rate = RUNS[name]
     folder = RESULTS / (f"{name}-key" if signed else name)
     folder.mkdir(parents=True, exist_ok=True)
     listen, send = _port(), _port()
@@ -122,7 +139,8 @@ def serve_run(name: str, signed: bool = False) -> dict:
     host = [*(["--modulus"] if modulus else []),
             *(["--drop", DROP, "--outage", f"{OUTAGE[0]},{OUTAGE[1]}"] if lossy else [])]
     subprocess.run(_desdemona("host", "jsbsim", SCRIPT, "--to", f"127.0.0.1:{listen}", "--start", START,
-                              "--end", STOP, "--rate", rate, *host, *key), check=True)
+                              "--end", STOP, "--rate", host_rate, *host, *key), check=True)
+    load = os.getloadavg()[0]  # over the last minute: while the run ran
     served_out, _ = server.communicate(timeout=120)
     try:
         machine_out, _ = machine.communicate(timeout=30)
@@ -132,7 +150,8 @@ def serve_run(name: str, signed: bool = False) -> dict:
     (folder / "serve.txt").write_text(served_out)
     (folder / "machine.txt").write_text(machine_out)
     online = folder / "online"
-    subprocess.run(_desdemona("online", recording(modulus, rate), "--config", config, "--predictor", "hold",
+    (folder / "load.json").write_text(json.dumps(load))
+    subprocess.run(_desdemona("online", recording(modulus, host_rate), "--config", config, "--predictor", "hold",
                               "--step", 1.0 / rate, "--tail-step", tail, "--initial", "home", "--out", online, "--overwrite",
                               "--no-view"), check=True, capture_output=True)
     return {"name": folder.name, "served_rc": server.returncode, "machine_rc": machine.returncode}
@@ -162,15 +181,18 @@ def _cycles(folder: Path) -> list[dict]:
 
 def measure(name: str, signed: bool = False) -> dict:
     """The table's row of a run, from its folders."""
-    config, rate, modulus, lossy, tail = RUNS[name]
+    config, rate, modulus, lossy, tail, host_rate = RUNS[name]
     folder = RESULTS / (f"{name}-key" if signed else name)
     served = json.loads((folder / "served" / "summary.json").read_text())
     service = served["service"]
     stand_in = json.loads((folder / "machine" / "summary.json").read_text())
     cycles = _cycles(folder / "served")
     running = [float(c["t"]) for c in cycles if c["status"] == "running"]
-    reference = recording(modulus, rate)
-    row = {"run": name + (", signed" if signed else ""), "config": config, "rate": rate, "tail": tail, "latency_ms": {k: 1e3 * v for k, v in service["latency_s"].items()},
+    reference = recording(modulus, host_rate)
+    row = {"run": name + (", signed" if signed else ""), "config": config, "rate": rate, "tail": tail,
+           "host_rate": host_rate, "latency_ms": {k: 1e3 * v for k, v in service["latency_s"].items()},
+           "phases_ms": _phases_ms(cycles),
+           "load": json.loads((folder / "load.json").read_text()) if (folder / "load.json").exists() else None,
            "over_deadline": service["compute_over_deadline"], "cycles": service["cycles"],
            "dropped": sum(service["dropped"].values()), "violations": stand_in.get("violations", stand_in.get("counts")),
            "passed": stand_in["passed"], "received": service["received"],
@@ -179,6 +201,20 @@ def measure(name: str, signed: bool = False) -> dict:
     row.update(_parking(cycles, folder / "served", rate, Model(config=config), running[0] + OUTAGE[0] if lossy else None,
                         service["judged_span_s"][0]))
     return row
+
+
+def _phases_ms(cycles: list[dict]) -> dict:
+    """Median and p99 [ms] of the message's wait and of each phase over the cycles that answered a
+    host message (None where the log has no such column)."""
+    answered = [c for c in cycles if c["status"] == "running" and c["latency_s"] not in ("", "nan")]
+    spreads = {}
+    for key in PHASES:
+        column = f"{key}_s"
+        values = np.array([float(c[column]) for c in answered if column in c], dtype=float)
+        values = values[np.isfinite(values)]
+        spreads[key] = None if len(values) == 0 else {"median": 1e3 * float(np.median(values)),
+                                                      "p99": 1e3 * float(np.percentile(values, 99))}
+    return spreads
 
 
 def _parking(cycles: list[dict], folder: Path, rate: float, model: Model, outage_at: float | None,
@@ -214,7 +250,8 @@ def table(rows: list[dict], load: tuple) -> str:
     for r in rows:
         lat = r["latency_ms"]
         verdict = "no violation" if r["passed"] else f"violations {r['violations']}"
-        lines.append(f"| {r['run']} ({r['config']}, {r['rate']:g} Hz, tail {r['tail']:g} s) | {lat['median']:.2f} / {lat['p99']:.2f} | "
+        host = f", host {r['host_rate']:g} Hz" if r.get("host_rate", r["rate"]) != r["rate"] else ""
+        lines.append(f"| {r['run']} ({r['config']}, {r['rate']:g} Hz{host}, tail {r['tail']:g} s) | {lat['median']:.2f} / {lat['p99']:.2f} | "
                      f"{r['over_deadline']} of {r['cycles']} | {r['dropped']} | {verdict} | "
                      f"{r['served_rms']:.3f} / {r['online_rms']:.3f} | {r['served_rms'] / r['online_rms']:.3f} | "
                      f"{r['parking_s']:.2f} ({r['parking_bound_s']:.2f}) |")
@@ -224,10 +261,27 @@ def table(rows: list[dict], load: tuple) -> str:
             lines.append(f"{r['run']}: the host silent from {r['outage_at']:.2f} s of the session for "
                          f"{OUTAGE[1]:g} s; parking from {r['parking_at']:.2f} s, running again from "
                          f"{r['resumed_at']:.2f} s.")
-    lines.append("")
-    lines.append(f"Load average before and after: {load[0]:.2f}, {load[1]:.2f} (2 cores); measured "
-                 f"{time.strftime('%Y-%m-%d')}.")
+    measured = (f"Load average before and after: {load[0]:.2f}, {load[1]:.2f} (2 cores); measured "
+                f"{time.strftime('%Y-%m-%d')}.")
+    lines += ["", *_phases_table(rows), "", measured]
     return "\n".join(lines)
+
+
+def _phases_table(rows: list[dict]) -> list[str]:
+    """Where each run's cycles spend their time: median / p99 [ms] of the message's wait (arrival to the
+    cycle's start) and of each phase (desdemona.service.pacing) over the cycles that answered a host
+    message, the thread's processor time over the compute, and the load average over the minute the
+    run ended in."""
+    head = ("| run | wait | preview | QP data | QP | check | send | prepared after the send | compute CPU | "
+            "load (1 min) |")
+    lines = ["Per cycle, median / p99 [ms]:", "", head, "|" + " --- |" * (head.count("|") - 1)]
+    for r in rows:
+        phases = r.get("phases_ms") or {}
+        cells = ["-" if phases.get(k) is None else f"{phases[k]['median']:.2f} / {phases[k]['p99']:.2f}"
+                 for k in PHASES]
+        load = "-" if r.get("load") is None else f"{r['load']:.2f}"
+        lines.append(f"| {r['run']} | " + " | ".join(cells) + f" | {load} |")
+    return lines
 
 
 def main(argv=None) -> int:
@@ -235,7 +289,12 @@ def main(argv=None) -> int:
     parser.add_argument("--runs", nargs="+", choices=tuple(RUNS), default=list(RUNS))
     parser.add_argument("--table-only", action="store_true")
     parser.add_argument("--key", action="store_true", help="sign every datagram with a shared key")
+    parser.add_argument("--seconds", type=float, default=FLIGHT_END - START,
+                        help="fly only the first SECONDS of the turn (default: all 55 s; the lossy run's outage "
+                             "is at 30 s)")
     args = parser.parse_args(argv)
+    global STOP
+    STOP = min(FLIGHT_END, START + args.seconds)
     loads = RESULTS / "load.json"  # the machine's load while the runs ran, kept for --table-only
     if not args.table_only:
         before = os.getloadavg()[0]

@@ -40,12 +40,12 @@ class _Machine:
         self.address = self.sock.getsockname()
         self.setpoints = []
         self.seconds = seconds
-        self.from_now()
+        self.end = None  # until the service is ready (from_now): its start-up may take longer than the session
         self.thread = threading.Thread(target=self._run, daemon=True)
         self.thread.start()
 
     def _run(self):
-        while time.monotonic() < self.end:
+        while self.end is None or time.monotonic() < self.end:
             try:
                 self.setpoints.append(protocol.unpack(self.sock.recv(4096)))
             except socket.timeout:
@@ -185,6 +185,7 @@ def _serve_process(tmp_path):
     """``desdemona serve`` on dfs as its own process, a stand-in receiving, once the service listens."""
     port, out = _free_port(), tmp_path / "served"
     stand_in = _Machine(20.0)
+    stand_in.from_now()
     proc = subprocess.Popen([sys.executable, "-m", "desdemona", "serve", "--config", "dfs", "--listen",
                              f"{LOOPBACK}:{port}", "--send", f"{LOOPBACK}:{stand_in.address[1]}", "--out", str(out),
                              "--horizon", "1", "--duration", "15", "--no-view"],

@@ -26,12 +26,13 @@ from __future__ import annotations
 import dataclasses
 import time
 from dataclasses import dataclass
-from typing import Literal, NamedTuple
+from typing import Literal
 
 import numpy as np
 
 from desdemona.baselines.classical import still_home
 from desdemona.check.simulate import TOLERANCE
+from desdemona.control.command import Command, _Solved, default_horizon  # noqa: F401 -- default_horizon: re-exported
 from desdemona.cueing.formulation import ProblemOptions
 from desdemona.cueing.realtime_iteration import RealTimeIteration
 from desdemona.cueing.transcription import CueingProblem
@@ -203,52 +204,6 @@ class MPCOptions:
         return self.step * np.array(sizes, dtype=float)
 
 
-@dataclass(frozen=True)
-class Command:
-    """What one cycle returns: the joint accelerations of its steps, and why.
-
-    sequence : (r, n) accelerations at the start of each step, r = ``options.replan_steps``;
-    source : "mpc" (this cycle's plan), "shifted" (the previous plan), "brake" (no plan left);
-    compute_time [s] of the cycle; reason : why a fallback was used ("" for "mpc");
-    jerk : (r, n) the accelerations' rate of change over each step (None: held constant).
-    """
-
-    sequence: np.ndarray
-    source: Literal["mpc", "shifted", "brake"]
-    compute_time: float
-    reason: str = ""
-    jerk: np.ndarray | None = None
-
-    @property
-    def jerks(self) -> np.ndarray:
-        """(r, n) jerks of the steps (zeros where the accelerations are held)."""
-        return np.zeros_like(self.sequence) if self.jerk is None else self.jerk
-
-    @property
-    def qdd(self) -> np.ndarray:
-        """(n,) the first step's accelerations."""
-        return self.sequence[0]
-
-
-def default_horizon(config) -> float:
-    """The horizon a session uses when none is given [s]: 2 s where only the yaw and the gimbals
-    move (dfs), 4 s where the track does, whose position must be planned further ahead than the cue
-    (docs/benchmarks/default-horizon.md). A session's plans reach at least this far whatever the horizon
-    (``MPCOptions.reach``)."""
-    return 4.0 if config.moves_track else 2.0
-
-
-class _Solved(NamedTuple):
-    """What one solve of :class:`MPC` gives: the plan (accelerations, jerks) per interval, whether the
-    solver succeeded, its time [s], the start's positions and (IPOPT only) the cost."""
-
-    plan: tuple[np.ndarray, np.ndarray]
-    success: bool
-    elapsed: float
-    start: np.ndarray
-    cost: float | None
-
-
 #: The least a placed start must save of the first plan's cost (a mean square felt error, (m/s^2)^2) to be
 #: taken: 1e-4 is an RMS of 0.01 m/s^2, a seventeenth of the smallest force threshold. Less is a place the
 #: plan does not feel (the track under a held 1 g), set by the solver's last digits (docs/benchmarks/placed-start.md).
@@ -289,6 +244,9 @@ class MPC:
         self._offsets = (np.concatenate([np.arange(c) for c in self._counts]) * options.step)[:, None]
         self.plan_age = self.braked = 0  # steps since the last plan began; steps braked in a row
         self.present = None  # the last preview's present value
+        # the last step's stage data and whether it seeded a still arm to turn; what prepare() linearised for
+        self._last_data, self._turning, self._prepared = None, True, None
+        self.timings = dict.fromkeys(("preview", "qp_data", "qp", "check"), 0.0)  # the last step's phases [s]
 
     def step(self, state, preview) -> Command:
         """The commands of the coming cycle from the state (q, qd[, qdd]) and the preview of S_d.
@@ -314,19 +272,23 @@ class MPC:
         if not reason:
             self.present = values[0].copy() if values.ndim == 2 else None  # S_d now: the brake's home (homing)
             turning = not self.model.config.takes_modulus or above_g(values, THRESHOLDS[5])  # _leave_rest's
-            plan, success, elapsed, *_ = self._solve(q, qd, a, self._data(t, values), turning=turning)
+            begun = time.perf_counter()
+            self._last_data, self._turning = self._data(t, values), turning
+            self.timings["preview"] = time.perf_counter() - begun
+            plan, success, elapsed, *_ = self._solve(q, qd, a, self._last_data, turning=turning)
             plan = self._per_step(*plan)
             if not success:
                 reason, plan = "solver failed", None
             elif elapsed > self.deadline:
                 reason, plan = f"deadline missed ({elapsed * 1e3:.1f} ms > {self.deadline * 1e3:.1f} ms)", None
-        r = self.options.replan_steps
+        r, checked = self.options.replan_steps, time.perf_counter()
         if plan is not None and self._safe_sequence(now, plan[0][:r], plan[1][:r]):
             self.plan, self.plan_age, self.braked = plan, 0, 0
             command = Command(plan[0][:r].copy(), "mpc", time.perf_counter() - start, jerk=plan[1][:r].copy())
         else:
             reason = reason or "plan fails the limit check"
             command = self._fallback(now, reason, start)
+        self.timings["check"] = time.perf_counter() - checked
         if self.problem.nz:
             self._advance_filters(now, command)
         return command
@@ -372,7 +334,7 @@ class MPC:
     def forget(self) -> None:
         """Drop the last plan: the machine was moved by something else (parked by the real-time
         service while the host was quiet), so the next cycle plans afresh from where it stands."""
-        self.plan, self.plan_age = None, 0
+        self.plan, self.plan_age, self._prepared = None, 0, None
 
     def _within_a_turn(self, q) -> np.ndarray:
         """``q`` with each joint that has no position limit (a gimbal that turns freely) taken within
@@ -449,21 +411,55 @@ class MPC:
         """One warm-started solve from (q, qd, a) by ``method`` (default the options'); with ``place``
         the start's positions are free within their limits (``q`` is then only the guess's start);
         ``turning``: the preview asks for what a turning arm gives (:meth:`_leave_rest`). Returns a :class:`_Solved`."""
+        prob, method = self.problem, method or self.options.plan_method
+        share = self.rti_step if self.plan is not None else 1.0  # the whole step from a fresh seed
+        begun = time.perf_counter()
+        if method == "rti" and not place and self._prepared == self._key(q, qd, a, turning) and self._rti.ready:
+            start = time.perf_counter()
+            w, success, cost = *self._rti.feedback(np.asarray(data).ravel(order="F"), share), None
+        else:
+            x, controls, bounds = self._linearisation(q, qd, a, turning, method, place)
+            start = time.perf_counter()
+            w, success, cost = prob.solve_from(x, controls, bounds, data, self._rti if method == "rti" else None, share)
+        self._prepared, elapsed = None, time.perf_counter() - start
+        if self._rti is not None:  # the cycle's phases [s]: linearising and the QP's data, the QP solver
+            self.timings.update(qp_data=start - begun + self._rti.timings["qp_data"], qp=self._rti.timings["qp"])
+        q0, accelerations, jerks = prob.plan_of(w)
+        return _Solved((accelerations, jerks), success, elapsed, q0, cost)
+
+    def _linearisation(self, q, qd, a, turning: bool, method: str, place: bool = False):
+        """The guess (node states, controls) a solve starts from, and the bounds of its start: the
+        previous plan shifted by a period (with a spin-up where the arm is still and ``turning``)."""
         prob = self.problem
-        method = method or self.options.plan_method
         u = self._shifted_plan(prob) if self.plan is not None else np.zeros((prob.N, self.model.n))
         u = self._leave_rest(qd, u) if turning else u
-        share = self.rti_step if self.plan is not None else 1.0  # the whole step from a fresh seed
         # RTI: a consistent point, not clipped
         x, controls = prob.guess(q, qd, u, a, clip=method != "rti", filters=self.z if prob.nz else None)
         bounds = prob.start_bounds(q, qd, a, self.z, positions=self._placing(q) if place else None)
         if self.model.config.takes_modulus:
             self._one_way(qd, a, bounds)
-        start = time.perf_counter()
-        w, success, cost = prob.solve_from(x, controls, bounds, data, self._rti if method == "rti" else None, share)
-        elapsed = time.perf_counter() - start
-        q0, accelerations, jerks = prob.plan_of(w)
-        return _Solved((accelerations, jerks), success, elapsed, q0, cost)
+        return x, controls, bounds
+
+    def prepare(self, state) -> None:
+        """The preparation phase of the real-time iteration, between two cycles: the next cycle's QP
+        linearised at the plan shifted by a period from ``state`` (where the command just sent leaves the
+        machine), so that :meth:`step` from that state, on the next preview, only feeds the preview in
+        and solves (Diehl's real-time iteration; the same step to round-off). A step from any other
+        state, after :meth:`forget`, or where the preview changes whether the arm is seeded to turn,
+        linearises afresh. Nothing is prepared before a first plan, or with IPOPT."""
+        if self._rti is None or self.plan is None or self._last_data is None:
+            return
+        q, qd = (np.asarray(v, dtype=float).reshape(self.model.n) for v in state[:2])
+        a = np.asarray(state[2], dtype=float).reshape(self.model.n) if self.smooth else np.zeros_like(q)
+        x, controls, bounds = self._linearisation(q, qd, a, self._turning, "rti")
+        self._rti.prepare(self.problem.pack(x, controls), np.asarray(self._last_data).ravel(order="F"), bounds)
+        self._prepared = self._key(q, qd, a, self._turning)
+
+    def _key(self, q, qd, a, turning) -> tuple:
+        """What a prepared QP was linearised for: the start, the plan shifted and its age, the felt
+        filter state and whether the arm is seeded to turn."""
+        return (q.tobytes(), qd.tobytes(), a.tobytes(), id(self.plan), self.plan_age, turning,
+                None if self.z is None else self.z.tobytes())
 
     def _placing(self, q) -> tuple[np.ndarray, np.ndarray]:
         """Bounds on the start's positions when it is placed: each joint within its limits, except

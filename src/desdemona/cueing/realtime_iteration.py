@@ -4,6 +4,8 @@ QP solver (:class:`RealTimeIteration`)."""
 
 from __future__ import annotations
 
+import time
+
 import casadi as ca
 import numpy as np
 
@@ -50,11 +52,23 @@ class RealTimeIteration:
         gradient = ca.vertcat(ca.vec(g_blocks), ca.MX.zeros(nx))
         g, A = prob.derivatives["jac_g"](w, p)
         graph = ca.Function("qp_data", [w, p], [H, gradient, A, g])
-        # interpreted, flattened to SX: the mapped graph spends more time slicing than computing
-        # (0.22 -> 0.10 ms for the 2 s dfs horizon at 50 Hz; building the flat graph takes 0.01-0.1 s)
-        qp_data = graph.expand()
-        if compile is True or (compile is None and qp_data.n_instructions() >= RTI_COMPILE_WORK):
-            qp_data = (compiled.compiled([graph], RTI_FLAGS) or [qp_data])[0]
+        # The preparation's data (:meth:`prepare`): per stage the gradient's derivative in the desired
+        # values v, 2 J^T dr/dv, and the piece of the residuals the preview is on, (dr/dv, r - dr/dv v).
+        # The residuals are affine in v on each piece (the felt rotation's band is a dead zone in
+        # it) and the constraints do not see v: on the same piece, H and A are the prepared ones and
+        # the gradient for another preview is exact from its derivative.
+        values = d[prob.n_head:]  # the desired values; the head (lengths, weights) is the stage's own
+        dr = ca.jacobian(r, values)
+        x_next, _, g_stage = prob.stage(x, u, d)
+        self.splits = ca.jacobian(dr, values).is_zero() and not ca.depends_on(ca.vertcat(x_next, g_stage), values)
+        dgrad = ca.Function("stage_dgrad", [x, u, d], [ca.densify(2.0 * J.T @ dr)])
+        piece = ca.Function("stage_piece", [x, u, d], [ca.vertcat(ca.vec(ca.densify(dr)), r - dr @ values)])
+        M = dgrad.map(N, "serial")(XU[:nx, :], XU[nx:, :], data)
+        pieces = piece.map(N, "serial")(XU[:nx, :], XU[nx:, :], data)
+        qp_data, prepared_data, piece_data = self._evaluated(
+            [graph, ca.Function("qp_dgradient", [w, p], [M]), ca.Function("qp_piece", [w, p], [ca.vec(pieces)])], compile)
+        self.piece_data = piece_data
+        self._stage_data, self._N, self._head, self._nw = d.numel(), N, prob.n_head, nw
         options = {"error_on_fail": False, "print_time": False}
         if qp_solver == "hpipm":
             blasfeo.load()  # its linear algebra built for this processor, where it can be (desdemona.cueing.blasfeo)
@@ -70,8 +84,21 @@ class RealTimeIteration:
         elif qp_solver == "osqp":
             options["osqp"] = {"verbose": False, "eps_abs": 1e-7, "eps_rel": 1e-7, "max_iter": 4000}
         qp = ca.conic("rti", qp_solver, {"h": qp_data.sparsity_out(0), "a": qp_data.sparsity_out(2)}, options)
-        self.data, self.qp = qp_data, qp
+        self.data, self.qp, self.prepared_data = qp_data, qp, prepared_data
         self._buffers()
+        self.timings = {"qp_data": 0.0, "qp": 0.0}  # the last solve's [s]: the QP's data and the QP solver
+        self._ready = None  # what prepare() left for feedback(): (p it linearised at, the gradient's blocks, the pieces)
+        self.refreshed = 0  # fed previews whose QP data was evaluated afresh (feedback)
+
+    @staticmethod
+    def _evaluated(graphs: list[ca.Function], compile: bool | None) -> list[ca.Function]:
+        """The graphs flattened to SX (interpreted: the mapped graph spends more time slicing than
+        computing, 0.22 -> 0.10 ms for the 2 s dfs horizon at 50 Hz; building the flat graph takes
+        0.01-0.1 s), or compiled (see :data:`RTI_COMPILE_WORK`)."""
+        flat = [graph.expand() for graph in graphs]
+        if compile is True or (compile is None and flat[0].n_instructions() >= RTI_COMPILE_WORK):
+            return compiled.compiled(graphs, RTI_FLAGS) or flat
+        return flat
 
     def _buffers(self) -> None:
         """Arrays the two Functions read and write in place, through CasADi's FunctionBuffer, so that
@@ -88,6 +115,9 @@ class RealTimeIteration:
         # the gradient's structural zeros (the end state's) are not among the data's nonzeros
         self._gradient_rows = np.asarray(data.sparsity_out(1).row(), dtype=int)
         self._data_buffer, self._eval_data = bound(data, {0: self._w, 1: self._p}, dict(enumerate(self._out)))
+        self._blocks, self._piece = np.zeros(self.prepared_data.nnz_out(0)), np.zeros(self.piece_data.nnz_out(0))
+        self._prepared_buffer, self._eval_prepared = bound(self.prepared_data, {0: self._w, 1: self._p}, {0: self._blocks})
+        self._piece_buffer, self._eval_piece = bound(self.piece_data, {0: self._w, 1: self._p}, {0: self._piece})
 
     def _qp_buffer(self):
         """A new buffer of the QP's arrays for each solve (0.05-0.09 ms): HPIPM's plugin depends on
@@ -101,14 +131,67 @@ class RealTimeIteration:
 
         share : the share of the QP's step taken, in (0, 1]. The QP's constraints are linear, so a
         point between ``w`` and the QP's solution keeps each one that both ends keep."""
+        start = time.perf_counter()
         self._w[:], self._p[:] = w, p
         self._eval_data()
+        self._qp_in["g"][self._gradient_rows] = self._out[1]
+        self._bounds(bounds)
+        self._ready = None
+        return self._solve(share, start)
+
+    def prepare(self, w, p, bounds: Bounds) -> None:
+        """The preparation phase of the real-time iteration (Diehl, Bock and Schloeder, 2005): the QP
+        linearised at ``w`` within ``bounds``, everything but what the desired path changes, before the
+        preview is known, for the preview of ``p`` (the last one: what the next is most like; its
+        head, the stages' lengths and weights, is every preview's). :meth:`feedback` then takes the
+        cycle's preview."""
+        self._w[:], self._p[:] = w, p
+        self._eval_data()
+        self._qp_in["g"][self._gradient_rows] = self._out[1]
+        self._bounds(bounds)
+        blocks = piece = None
+        if self.splits:
+            self._eval_prepared()
+            self._eval_piece()
+            blocks, piece = self._blocks.reshape(self._N, self._stage_data - self._head, self._nw).copy(), self._piece.copy()
+        self._ready = (self._p.copy(), blocks, piece)
+
+    def feedback(self, p, share: float = 1.0) -> tuple[np.ndarray, bool]:
+        """The feedback phase: the step of the QP :meth:`prepare` built, for the parameter ``p``; as
+        ``self(w, p, bounds, share)`` would give from the same point, to round-off. Where ``p``'s
+        preview puts a residual on another piece (across the felt rotation's band), or the residuals
+        are not piecewise affine in it (:attr:`splits` False), the QP's data is evaluated afresh at the
+        prepared point (:attr:`refreshed` counts them): the same step, with less prepared."""
+        start = time.perf_counter()
+        p_lin, blocks, piece = self._ready
+        self._ready = None
+        self._p[:] = p
+        if blocks is not None:
+            self._eval_piece()
+            if np.allclose(self._piece, piece, rtol=1e-12, atol=1e-12):
+                change = (self._p - p_lin).reshape(self._N, self._stage_data)[:, self._head:]
+                self._qp_in["g"][: self._N * self._nw] += np.einsum("kdi,kd->ki", blocks, change).ravel()
+                return self._solve(share, start)
+        self.refreshed += 1
+        self._eval_data()
+        self._qp_in["g"][self._gradient_rows] = self._out[1]
+        return self._solve(share, start)
+
+    @property
+    def ready(self) -> bool:
+        """A QP is prepared (:meth:`prepare`) and not yet solved."""
+        return self._ready is not None
+
+    def _bounds(self, bounds: Bounds) -> None:
         g, into = self._out[3], self._qp_in
-        into["g"][self._gradient_rows] = self._out[1]
         np.subtract(bounds.lbg, g, out=into["lba"])
         np.subtract(bounds.ubg, g, out=into["uba"])
         np.subtract(bounds.lbx, self._w, out=into["lbx"])
         np.subtract(bounds.ubx, self._w, out=into["ubx"])
+
+    def _solve(self, share: float, start: float) -> tuple[np.ndarray, bool]:
         buffer, solve = self._qp_buffer()
+        began = time.perf_counter()
         solve()
+        self.timings = {"qp_data": began - start, "qp": time.perf_counter() - began}
         return self._w + share * self._qp_out["x"], bool(buffer.stats()["success"])

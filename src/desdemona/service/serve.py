@@ -11,7 +11,8 @@ command exactly: the setpoints are a continuous jerk-limited motion, cycle after
 
 Timing: cycle k belongs to the machine's time k h. It starts when a new host message arrives within
 half a cycle of that time (so a host that sends at the session's rate is answered at once: the
-end-to-end latency is the compute time), else at the window's end with what it has.
+end-to-end latency is the compute time), else at the window's end with what it has; one stale before
+the window opened waits for the host's next where it is due in time (:mod:`desdemona.service.pacing`).
 
 - **Starting**: until the first host message the machine stands still at home (status ``starting``).
 - **Watchdog**: without a valid host message for ``timeout`` cycles the machine is parked: braked to
@@ -48,7 +49,7 @@ from desdemona.machine.model import Model
 from desdemona.machine.params import JOINT_NAMES
 from desdemona.machine.plan import Plan, State, stopping_jerk
 from desdemona.profiles import DesiredPath, ProfileError
-from desdemona.service import protocol
+from desdemona.service import pacing, protocol
 from desdemona.service.inbox import Inbox
 from desdemona.service.measured import (
     BAND,
@@ -56,7 +57,7 @@ from desdemona.service.measured import (
     MachineLink,
     commanded_at,
 )
-from desdemona.service.sessionlog import describe, events_table, session_table, summary
+from desdemona.service.sessionlog import TIMED, describe, events_table, session_table, summary
 
 __all__ = ["ServeOptions", "Served", "default_channels", "describe", "events_table", "result", "serve",
            "session_table", "summary"]
@@ -254,7 +255,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             opens, closes = start + (k - 0.5) * h, start + (k + 0.5) * h
             # stopping, the cycles keep their times; else each starts as a new host message comes
             inbox.wait(start + k * h, np.inf) if stops else inbox.wait(closes, opens)
-            began = clock()
+            began, cpu, session.timings = clock(), time.thread_time(), None
             commands = inbox.commands + (console.commands() if console is not None else [])
             for _, action, *who in commands:  # logged at the cycle that acts on it, as every event
                 session.operator(action, k * h, *who)
@@ -268,18 +269,18 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             elif machine or session.paused:
                 session.park(reason=machine or f"operator: {session.paused}")
             elif alive:
-                session.run(preview(inbox), inbox.newest.sequence)
+                session.run(*pacing.timed(preview, inbox), inbox.newest.sequence)
             elif inbox.newest is None:
                 session.hold("starting")
             else:
                 session.park()
             answered = inbox.fresh and alive and not (stops or machine or session.paused)
             inbox.fresh = inbox.fresh and not answered
-            setpoint = session.setpoint(k, began - start, inbox.newest.sequence if answered else None)
+            sending, setpoint = clock(), session.setpoint(k, began - start, inbox.newest.sequence if answered else None)
             _send(outbound, setpoint, serving.send, inbox)
             sent = clock()
             session.record(k, compute=sent - began, age=np.nan if inbox.arrived is None else began - inbox.arrived,
-                           latency=sent - inbox.arrived if answered else np.nan)
+                           latency=sent - inbox.arrived if answered else np.nan, timed=(sent - sending, cpu))
             _log(log, console, session, inbox, link, model.config)
             k += 1
             quiet = inbox.arrived is not None and clock() - inbox.arrived > (serving.quiet_end or np.inf)
@@ -338,8 +339,9 @@ class _Session:
         self.machine_status = ""
         self.told: set[str] = set()
         self.breaks: list[int] = []
+        self.timings, self.guarded = None, 0.0  # this cycle's phases where it planned [s]; the service's check's
 
-    def run(self, preview, sequence: int) -> None:
+    def run(self, preview, preview_time: float, sequence: int) -> None:
         if self.was_parked:  # the machine was moved by the watchdog: plan afresh from here
             self.controller.forget()
             self.was_parked, self.settle = False, None
@@ -347,6 +349,7 @@ class _Session:
         self.command = (command.sequence[0], command.jerks[0])
         self.status, self.source, self.reason = "running", SOURCE_NAMES[command.source], command.reason
         self._guard()
+        self.timings = {**self.controller.timings, "service_preview": preview_time, "guard": self.guarded}
 
     def event(self, t: float, what: str, detail: str = "") -> None:
         self.events.append((t, what, detail))
@@ -456,7 +459,9 @@ class _Session:
         """The service's own check of the cycle's command over the cycle (every limit, position to
         jerk); a command that fails it is a fault (the controller's own check should never let one
         through), reported as such in the setpoint and the log."""
+        began = time.perf_counter()
         use = self._use()
+        self.guarded = time.perf_counter() - began
         if use > 1.0 + TOLERANCE:
             self.status, self.reason = "fault", f"limit use {use:.4f} over the cycle"
 
@@ -467,7 +472,10 @@ class _Session:
         return protocol.Setpoint(k + 1, now, self.status, self.source, answers, k * self.h, self.h, config.expand(q),
                                  config.expand(qd, "zero"), config.expand(qdd, "zero"), config.expand(jerk, "zero"))
 
-    def record(self, k: int, compute: float, age: float, latency: float) -> None:
+    def record(self, k: int, compute: float, age: float, latency: float, timed=(np.nan, 0.0)) -> None:
+        """The cycle's row, and the state its command leaves the machine in; ``timed`` = (the send's time
+        [s], the thread's processor time at the cycle's start): its phases, then the next cycle's QP
+        prepared from that state where it planned (:func:`desdemona.service.pacing.close`)."""
         qdd, jerk = self.command
         self.starts.append(self.state)
         self.u.append(qdd)
@@ -476,6 +484,7 @@ class _Session:
                           "command": self.source, "status": self.status, "reason": self.reason,
                           "tracking_use": self.tracking, "machine": self.machine_status})
         self.state = self.state.advance(qdd, self.h, jerk)
+        pacing.close(self.rows[-1], self.timings, *timed, self.controller.prepare, self.state)
 
     def loop(self) -> ClosedLoop:
         n = self.model.n
@@ -487,7 +496,7 @@ class _Session:
 
     def columns(self) -> dict[str, np.ndarray]:
         return {key: np.array([r[key] for r in self.rows])
-                for key in ("message_age_s", "latency_s", "command", "status", "tracking_use", "machine")}
+                for key in (*TIMED, "message_age_s", "latency_s", "command", "status", "tracking_use", "machine")}
 
 
 def result(served: Served, model: Model, options: OnlineOptions) -> OnlineResult:

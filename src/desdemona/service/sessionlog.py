@@ -10,21 +10,28 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from desdemona.service.pacing import PHASES
+
 if TYPE_CHECKING:
     from desdemona.service.livetrajectory import LiveTrajectory
+
+#: The timing columns of a cycle after the others [s]: its phases and its compute's processor time.
+TIMED = (*(f"{phase}_s" for phase in PHASES), "compute_cpu_s")
 
 
 def session_table(served) -> str:
     """``session.csv``: every cycle of the session, on its clock (also before the host came and after
     it had gone): its time, status, command, the host message's age, the latency and the compute time
     [s], the reason of a fallback or a parking, the machine's own status as its newest State said and
-    the use of the tracking tolerance (1 = a fault; empty without States)."""
+    the use of the tracking tolerance (1 = a fault; empty without States), then its phases and the
+    processor time of its compute [s] (:data:`TIMED`, :mod:`desdemona.service.pacing`)."""
     columns, loop = served.columns, served.loop
-    lines = ["t,status,command,message_age_s,latency_s,compute_time_s,reason,machine,tracking_use"]
+    lines = ["t,status,command,message_age_s,latency_s,compute_time_s,reason,machine,tracking_use," + ",".join(TIMED)]
     for k, t in enumerate(loop.cycle_times):
         lines.append(f"{t:.6g},{columns['status'][k]},{columns['command'][k]},{columns['message_age_s'][k]:.6g},"
                      f"{columns['latency_s'][k]:.6g},{loop.compute_times[k]:.6g},\"{loop.reasons[k]}\","
-                     f"{columns['machine'][k]},{columns['tracking_use'][k]:.6g}")
+                     f"{columns['machine'][k]},{columns['tracking_use'][k]:.6g},"
+                     + ",".join(f"{columns[key][k]:.6g}" for key in TIMED))
     return "\n".join(lines) + "\n"
 
 
@@ -55,6 +62,7 @@ def summary(served, serving) -> dict:
             "dropped": dict(served.dropped), "dropped_sample": served.drop_samples,
             "received": int(len(served.received_t)),
             "latency_s": spread(latency), "message_age_s": spread(age),
+            "phases_s": {key[:-2]: spread(columns[key]) for key in TIMED},
             "compute_over_deadline": int(np.sum(times > served.deadline)),
             "judged_span_s": [float(served.loop.plan.t_nodes[k]) for k in served.span()],
             "host_time_offset_s": served.offset - float(served.loop.plan.t_nodes[served.span()[0]]),
@@ -108,7 +116,7 @@ class LiveLog:
                                                                 ("measured", ("position", "rate")))
                   for q in quantities for name in names]
         self.session.write(",".join(["t,status,command,message_age_s,latency_s,compute_time_s,reason,machine,"
-                                     "tracking_use", *joints, "measured_at"]) + "\n")
+                                     "tracking_use", *joints, "measured_at", *TIMED]) + "\n")
         self.events.write("t,what,detail\n")
         self.written = 0
 
@@ -124,7 +132,8 @@ class LiveLog:
                            f"{row['latency_s']:.6g},{row['compute_time_s']:.6g},\"{row['reason']}\","
                            f"{row['machine']},{row['tracking_use']:.6g},"
                            + ",".join(f"{v:.10g}" for v in values)
-                           + f",{measured[2] if measured else np.nan:.6g}\n")
+                           + f",{measured[2] if measured else np.nan:.6g},"
+                           + ",".join(f"{row[key]:.6g}" for key in TIMED) + "\n")
         for t, what, detail in events[self.written:]:
             self.events.write(f"{t:.6g},{what},\"{detail}\"\n")
         self.written = len(events)

@@ -1,0 +1,120 @@
+"""When a cycle of :mod:`desdemona.service.serve` starts, and what its phases cost.
+
+**Starting on the host's message.** Cycle k belongs to the machine's time k h and may start anywhere
+in its window, within half a cycle of k h: the motion system plays its setpoint at its place on the
+setpoints' time line whenever within the window it came (:mod:`desdemona.service.drive`). A host sends
+at its own rate and on its own clock. A message that came before the window opened (while the last
+cycle computed, or between two cycles) is stale by the time the window opens; where the host's next
+message is due well before the window closes (a host that sends faster than the service, or at its
+rate with its messages just before the windows open), the cycle waits for it and answers it at once:
+the setpoint then carries motion younger by up to a cycle, and the latency from the message to the
+setpoint is the cycle's compute alone. Where the next message is not due in time (a slower host), the
+cycle starts with the stale one as the window opens, as it always did. :func:`newer_due` decides.
+
+**The phases of a cycle** (:data:`PHASES`, seconds, in the session's ``session.csv`` and summarised in
+its ``summary.json``): the preview (the predictor over what the host sent, and the stage data of the
+plan), the QP's data (linearising the plan: on the hot path only where nothing was prepared), the QP
+(the solver), the check (the controller's of its command over the cycle, and the service's own), the
+send; and after the send, off the hot path, the preparation of the next cycle's QP
+(:meth:`desdemona.control.mpc.MPC.prepare`). The wait, from the message's arrival to the cycle's start,
+is the log's ``message_age_s``; ``compute_cpu_s`` is the thread's processor time over the cycle's compute,
+to tell a slow cycle from one the machine's other processes took the processor from.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import socket
+import statistics
+import struct
+import time
+
+#: How many of the host's last arrivals give its period (the median of their gaps).
+ARRIVALS = 16
+#: A newer message is waited for only where it is due this share of a cycle before the window closes:
+#: room for the host's jitter (a message that comes after the window closed leaves the cycle to
+#: start there, with the stale one).
+MARGIN = 0.25
+#: Linux's SO_TIMESTAMPNS (not in Python's socket module): the kernel stamps each datagram with the
+#: time it was received, so a message that came while a cycle computed is timed from its arrival, not
+#: from when the service read it.
+SO_TIMESTAMPNS = 35
+#: The phases of a cycle, in order: each a column ``{phase}_s`` of ``session.csv``.
+PHASES = ("preview", "qp_data", "qp", "check", "send", "prepare")
+
+
+def host_period(arrivals: list[float]) -> float:
+    """The host's period [s] from its last :data:`ARRIVALS` arrival times [s] (any clock); inf
+    before it has sent enough to tell."""
+    if len(arrivals) <= ARRIVALS // 2:
+        return math.inf
+    recent = arrivals[-ARRIVALS - 1:]
+    return statistics.median(b - a for a, b in itertools.pairwise(recent))
+
+
+def newer_due(arrivals: list[float], opens: float, closes: float) -> bool:
+    """Whether a cycle whose window is [``opens``, ``closes``] (clock times [s]), holding a message
+    that arrived at ``arrivals[-1]`` before the window opened, should wait for the host's next
+    message: it is due (one host period later) at least :data:`MARGIN` of a cycle before the window
+    closes."""
+    if not (arrivals and math.isfinite(opens) and arrivals[-1] < opens):
+        return False
+    return arrivals[-1] + host_period(arrivals) <= closes - MARGIN * (closes - opens)
+
+
+def stamped(sock: socket.socket) -> socket.socket:
+    """``sock`` with the kernel's receive time on every datagram, where the system has it."""
+    try:
+        sock.setsockopt(socket.SOL_SOCKET, SO_TIMESTAMPNS, 1)
+    except OSError:  # not Linux: datagrams are timed when read
+        pass
+    return sock
+
+
+def datagrams(sock: socket.socket, on_error):
+    """The datagrams waiting on a non-blocking ``sock``: (data, sender, age [s]) each, the age since the
+    kernel received it (0 where it was not stamped, :func:`stamped`); ``on_error(exc)`` is told of a
+    socket error (an ICMP error for an earlier send: not a message)."""
+    while True:
+        try:
+            data, ancillary, _, sender = sock.recvmsg(65536, socket.CMSG_SPACE(16))
+        except (BlockingIOError, InterruptedError):
+            return
+        except OSError as exc:
+            on_error(exc)
+            continue
+        age = 0.0
+        for level, kind, stamp in ancillary:
+            if level == socket.SOL_SOCKET and kind == SO_TIMESTAMPNS and len(stamp) >= 16:
+                seconds, nanoseconds = struct.unpack("qq", stamp[:16])
+                age = max(0.0, time.time() - (seconds + 1e-9 * nanoseconds))
+        yield data, sender, age
+
+
+def timed(function, *args):
+    """(``function(*args)``, the seconds it took)."""
+    began = time.perf_counter()
+    result = function(*args)
+    return result, time.perf_counter() - began
+
+
+def phases(timings: dict | None, send: float, cpu: float) -> dict:
+    """A cycle's columns: its phases [s] (:data:`PHASES`; NaN where it did not plan, and the
+    preparation, which comes after) from ``timings`` (the controller's, with the service's own
+    ``service_preview`` and ``guard``, or None), ``send`` [s], and ``compute_cpu_s``, the thread's
+    processor time since ``cpu`` (:func:`time.thread_time`)."""
+    row = {f"{phase}_s": math.nan for phase in PHASES}
+    if timings is not None:
+        row.update(preview_s=timings["service_preview"] + timings["preview"], qp_data_s=timings["qp_data"],
+                   qp_s=timings["qp"], check_s=timings["check"] + timings["guard"])
+    return {**row, "send_s": send, "compute_cpu_s": time.thread_time() - cpu}
+
+
+def close(row: dict, timings: dict | None, send: float, cpu: float, prepare, state) -> None:
+    """After a cycle's send: its ``row`` given its phases (:func:`phases`), and where it planned, the
+    next cycle's QP prepared from ``state``, where the command leaves the machine (``prepare(state)``,
+    :meth:`desdemona.control.mpc.MPC.prepare`), off the hot path, its time the row's ``prepare_s``."""
+    row.update(phases(timings, send, cpu))
+    if timings is not None:
+        row["prepare_s"] = timed(prepare, state)[1]
