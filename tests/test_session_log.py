@@ -11,7 +11,7 @@ import pytest
 from desdemona.machine.model import Model
 from desdemona.results import compare, folder, report, view
 from desdemona.service.livetrajectory import LiveTrajectory, desired_of
-from desdemona.service.sessionlog import LiveLog
+from desdemona.service.sessionlog import TIMED, LiveLog
 
 STEP = 0.02
 
@@ -33,7 +33,8 @@ def _killed_session(tmp_path, config: str, channels: int, cycles: int = 23):
         q, qd, qdd = np.full(model.n, 0.05 * t**2), np.full(model.n, 0.1 * t), np.full(model.n, 0.1)
         desired = np.r_[0.0, 0.0, 0.0, 0.5, 0.0, 9.81 + t] if channels == 6 else np.r_[9.81 + t]
         log.cycle({"t": t, "status": "running", "command": "plan", "message_age_s": 0.001, "latency_s": 0.002,
-                   "compute_time_s": 0.003, "reason": "", "machine": "following", "tracking_use": 0.1},
+                   "compute_time_s": 0.003, "reason": "", "machine": "following", "tracking_use": 0.1,
+                   **dict.fromkeys(TIMED, 0.0005)},
                   (q, qd, qdd), (q, qd, t - 0.05), [(0.5, "command pause", "")], desired)
         rows.append((t, q, qd, qdd, desired))
     with open(out / "trajectory.csv", "a") as fh:
