@@ -107,10 +107,8 @@ class Drive:
 
     def setpoint(self, sp: protocol.Setpoint, t: float) -> str:
         """Take setpoint ``sp`` arrived at ``t``: "" if it is queued to be followed, else why not."""
-        if self.status in ("fault", "e-stop"):
-            return f"refused: {self.status} (a reset is needed)"
-        if self.status == "braking":
-            return "refused: braking on its own"
+        if self.setpoint_refusal():
+            return self.setpoint_refusal()
         if sp.status == "fault":
             self._stop(t, "braking", "the service reported a fault: not followed, braking")
             return "refused: the service reported a fault"
@@ -146,6 +144,21 @@ class Drive:
             else:
                 self.fault_code, self.fault_joint, self.queue, self.applied = "none", None, [], None
                 self._enter(t, "ready", "reset")
+
+    def over_limit(self, t: float, why: str) -> str:
+        """A setpoint over a limit of the machine (its own check, :mod:`desdemona.service.checker`):
+        never followed; the drive brakes on its own as for a lost stream, then takes a new motion
+        that starts where it stands."""
+        if self.status != "following":
+            return self.setpoint_refusal() or f"refused: over a limit ({why})"
+        self._stop(t, "braking", f"a setpoint over a limit ({why}): not followed, braking")
+        return f"refused: over a limit ({why})"
+
+    def setpoint_refusal(self) -> str:
+        """Why a setpoint is refused in the drive's present status ("" if it is not)."""
+        if self.status in ("fault", "e-stop"):
+            return f"refused: {self.status} (a reset is needed)"
+        return "refused: braking on its own" if self.status == "braking" else ""
 
     def emergency(self, t: float, source: str) -> None:
         """An emergency stop: the fastest stop, then no motion until a reset."""

@@ -10,7 +10,8 @@ layer, independent of the service.
   limits allow, then holds; an emergency stop (a Command from the ``operator`` host, or SIGUSR1; a
   first SIGINT or SIGTERM too, after which it ends once at rest) -> the same stop, then no motion until
   a reset Command; ``fault`` = (seconds after the first setpoint, joint) -> a drive fault on that joint,
-  reported, the same stop, no motion until a reset.
+  reported, the same stop, no motion until a reset; a setpoint over a limit (its check, below) -> never
+  followed: the same stop, as for no setpoint in time.
 - **Its State** (protocol version 2): every joint's measured position and rate, its status, a fault
   and its joint, the setpoint followed and where on its time line, ``state_rate`` times a second, to the
   address the setpoints come from (setpoints from any other address are dropped).
@@ -323,7 +324,9 @@ class _StandIn:
         report.reanchored = self.checker.reanchored
         self._timing(sp, t)
         self.first_arrival = t if self.first_arrival is None else self.first_arrival
-        refused = self.drive.setpoint(sp, t)
+        # its own safety layer: a setpoint over a limit is never followed (the drive brakes instead)
+        refused = (self.drive.over_limit(t, f"{violations[0].joint} {violations[0].what}")
+                   if violations else self.drive.setpoint(sp, t))
         if refused:
             reason = refused.split(" (")[0]
             report.refused[reason] = report.refused.get(reason, 0) + 1

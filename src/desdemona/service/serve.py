@@ -418,6 +418,9 @@ class _Session:
     def _carry(self, error) -> None:
         q, qd, a = self.state
         self.state, self.settle = State(q + error[0], qd + error[1], a), None
+        # the States of the setpoints already sent still measure this error against the line before
+        # the carry: judged again, it would be carried again, cycle after cycle (a runaway)
+        self.trusted_from = len(self.rows) + 1
 
     def park(self, stop: bool = False, hard: bool = False, reason: str = "") -> None:
         """Stop the machine as quickly as its limits allow (:func:`stopping_jerk`: each joint braking at
