@@ -124,3 +124,15 @@ def test_a_new_configuration_is_one_declaration(tmp_path):
     assert [(r["configuration"], r["status"]) for r in rows] == [(NEW, "ok")]
     job = json.loads((out / f"cosine--{NEW}" / "summary.json").read_text())
     assert job["metrics"]["limits_kept"] is True and float(rows[0]["worst_use"]) <= 1.0 + 1e-6
+
+
+def test_a_held_position_is_moved_by_the_configuration_and_only_a_held_one():
+    import pytest
+
+    config = CONFIGURATIONS["dfs"]
+    track = next(iter(config.held))
+    moved = config.held_moved(track, 0.25)
+    assert moved.held[track] == config.held[track] + 0.25
+    assert {j: p for j, p in moved.held.items() if j != track} == {j: p for j, p in config.held.items() if j != track}
+    with pytest.raises(ValueError, match="is not held"):
+        config.held_moved(config.free[0], 0.1)

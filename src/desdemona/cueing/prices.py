@@ -178,7 +178,7 @@ def _priced(model, pieces, start: float, end: float) -> LimitPrices:
               "acceleration": lim.acceleration, "jerk": lim.jerk, "torque": lim.effort, "power": lim.power}
     keys = [(family, j, name, float(values[family][j])) for family in FAMILIES for j, name in enumerate(names)
             if np.isfinite(values[family][j])]
-    keys += [(HELD, joint, JOINT_NAMES[joint], float(model.config.fixed[joint])) for joint, _ in held_moves(model.config, params)
+    keys += [(HELD, joint, JOINT_NAMES[joint], float(model.config.held[joint])) for joint, _ in held_moves(model.config, params)
              if (HELD, joint) in pieces[0][0].entries]
     prices = []
     for family, j, name, limit in keys:
@@ -375,9 +375,7 @@ def relaxed(model, family: str, joint: str, share: float):
     index = JOINT_NAMES.index(joint)
     if family == HELD:
         move = dict(held_moves(config, params))[index]
-        fixed = list(config.fixed)
-        fixed[index] += share / RELAXATION * move
-        return Model(params, dataclasses.replace(config, fixed=tuple(fixed)))
+        return Model(params, config.held_moved(index, share / RELAXATION * move))
     limits = params.joints[index]
     if family == "position":
         lo, hi = limits.position
@@ -416,9 +414,7 @@ def held_slopes(problem, solution, data) -> list[tuple[int, np.ndarray]]:
     base, out = np.sum(_lagrangian(problem, problem, solution, data), axis=0), []
     for joint, move in held_moves(config, params):
         step = HELD_STEP * move
-        fixed = list(config.fixed)
-        fixed[joint] += step
-        moved = Formulation(Model(params, dataclasses.replace(config, fixed=tuple(fixed))), problem.path, problem.options)
+        moved = Formulation(Model(params, config.held_moved(joint, step)), problem.path, problem.options)
         slopes = (np.sum(_lagrangian(moved, problem, solution, data), axis=0) - base) / step
         out.append((joint, slopes * move / RELAXATION))
     return out

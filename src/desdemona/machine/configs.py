@@ -28,7 +28,7 @@ the track, tilts the cabin, takes a modulus, ...) and where a joint sits among t
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import casadi as ca
 import numpy as np
@@ -140,6 +140,15 @@ class Configuration:
     def held(self) -> dict[int, float]:
         """{joint index into q1..q6: its held position [rad | m]} of every joint that does not move."""
         return {i: self.fixed[i] for i in range(6) if i not in self.free}
+
+    def held_moved(self, joint: int, by: float) -> Configuration:
+        """The same configuration with held ``joint``'s position moved ``by`` [rad | m] (a study of
+        what the held position costs: :mod:`desdemona.cueing.prices`)."""
+        if joint in self.free:
+            raise ValueError(f"configuration {self.name!r}: {JOINT_NAMES[joint]} is not held")
+        fixed = list(self.fixed)
+        fixed[joint] += by
+        return replace(self, fixed=tuple(fixed))
 
     def select(self, x):
         """The free joints' values (..., n) of full (..., 6) joint values ``x`` (the inverse of
