@@ -107,8 +107,8 @@ class Drive:
 
     def setpoint(self, sp: protocol.Setpoint, t: float) -> str:
         """Take setpoint ``sp`` arrived at ``t``: "" if it is queued to be followed, else why not."""
-        if self.setpoint_refusal():
-            return self.setpoint_refusal()
+        if refusal := self.setpoint_refusal():
+            return refusal
         if sp.status == "fault":
             self._stop(t, "braking", "the service reported a fault: not followed, braking")
             return "refused: the service reported a fault"
