@@ -84,3 +84,51 @@ def test_a_step_from_another_state_than_the_prepared_one_linearises_afresh():
     mpc.prepare(state)
     command = mpc.step(moved, _preview(model.config, 1))
     np.testing.assert_array_equal(command.sequence, expected.sequence)
+
+
+@pytest.mark.parametrize("config", ["dfs", "yaw-track-cabin"])
+def test_a_cycle_with_nothing_new_follows_the_plan_and_the_next_is_still_fed(config):
+    """A cycle with no new preview (a host slower than the service) takes the last plan's next step
+    without a QP (MPC.follow), carries the felt and the desired filter states over it (the desired one
+    along the last preview: a constant preview's state after the two steps, as the perception model
+    gives it), and the cycle after it, prepared from where that step leaves the machine, is fed into
+    the prepared QP and takes the one-shot step. Nothing to follow: None."""
+    model = Model(config=config)
+    perception = None if model.config.takes_modulus else canals_model()
+    mpc = MPC(model, MPCOptions(horizon=1.0, step=0.05, perception=perception))
+    state = State(np.zeros(model.n), np.zeros(model.n), np.zeros(model.n))
+    assert mpc.follow(state) is None  # no plan yet
+    t, values = _preview(model.config, 0)
+    constant = (t, np.repeat(values[5:6], len(t), axis=0))  # after a changing one: the filters move
+    for preview in (_preview(model.config, 0), constant):
+        command = mpc.step(state, preview)
+        state = state.advance(command.sequence[0], 0.05, command.jerks[0])
+    plan = copy.deepcopy(mpc.plan)
+    followed = mpc.follow(state)
+    assert (followed.source, followed.reason) == ("shifted", "nothing new since the last plan")
+    np.testing.assert_array_equal(followed.sequence, plan[0][1:2])
+    np.testing.assert_array_equal(followed.jerks, plan[1][1:2])
+    if mpc.problem.nz:
+        prob = mpc.problem
+        z = mpc._z_d_path[0]  # the desired filter's state as the step began, over its two steps' sub-steps
+        for _ in range(2 * prob.m):
+            z = prob.filter.Ad @ z + prob.filter.Bd @ constant[1][0]
+        np.testing.assert_allclose(mpc.z_d, z, rtol=1e-9, atol=1e-12)
+        assert not np.allclose(mpc.z_d, mpc._z_d_path[0])
+    state = state.advance(followed.sequence[0], 0.05, followed.jerks[0])
+    mpc.prepare(state)
+    assert mpc._rti.ready
+    one_shot = copy.copy(mpc)
+    one_shot._prepared = None  # linearised afresh
+    expected = one_shot.step(state, _preview(model.config, 2))
+    command = mpc.step(state, _preview(model.config, 2))
+    assert command.source == expected.source == "mpc"
+    np.testing.assert_allclose(command.sequence, expected.sequence, rtol=1e-9, atol=1e-9)
+    state = state.advance(command.sequence[0], 0.05, command.jerks[0])
+    # the plan runs out (where the desired filter is carried: its part of equal steps): nothing to follow
+    last = len(mpc.plan[0]) if not mpc.problem.nz else min(len(mpc.plan[0]), int(np.argmin(np.r_[mpc._counts, 0] == 1)))
+    for _ in range(len(mpc.plan[0])):
+        if (followed := mpc.follow(state)) is None:
+            break
+        state = state.advance(followed.sequence[0], 0.05, followed.jerks[0])
+    assert followed is None and mpc.plan_age + 2 > last

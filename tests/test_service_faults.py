@@ -301,10 +301,12 @@ def _parked_in_time(session: list[dict], after: float, config: str = "dfs") -> f
 
 
 def test_operator_commands_pause_park_resume_estop_reset_act_and_are_logged(tmp_path):
-    """An operator's Commands into a running session, one after another: pause and park each park the
-    machine within the stop its limits allow and hold it until resume; an emergency stop (through the
-    service, passed on) is the machine's fastest stop and holds until reset; after each, motion again;
-    each is in the session's log with its time, and nothing moves between a stop and its release."""
+    """An operator's Commands into a running session, one after another: pause holds the present cue
+    (the session plans on the host's last message held, the machine still turning, until resume);
+    park parks the machine within the stop its limits allow and holds it until resume; an emergency
+    stop (through the service, passed on) is the machine's fastest stop and holds until reset; after
+    each, motion again; each is in the session's log with its time, and nothing follows the host
+    between a stop and its release."""
     loop = Loop(tmp_path, profile="roller-coaster")
 
     def until(condition, what):
@@ -320,13 +322,22 @@ def test_operator_commands_pause_park_resume_estop_reset_act_and_are_logged(tmp_
     def moving(s, m):
         return s["status"] == "running" and abs(float(m["yaw_rate"])) > 0.3
 
-    for action in ("pause", "park"):
-        until(moving, f"the arm moving before {action}")
-        loop.command(action, loop.serve_port)
-        until(lambda s, m: s["status"] == "parked" and abs(float(m["yaw_rate"])) < 1e-3, f"parked after {action}")
-        time.sleep(0.4)
-        assert _session(tmp_path)[-1]["status"] == "parked"  # held until resumed
-        loop.command("resume", loop.serve_port)
+    until(moving, "the arm moving before pause")
+    loop.command("pause", loop.serve_port)
+    time.sleep(1.5)
+    assert moving(_session(tmp_path)[-1], loop.motion()[-1])  # the cue held: still turning
+    paused_at = float(loop.events("session")[-1]["t"])
+    with open(tmp_path / "session" / "trajectory.csv", newline="") as f:  # the live one, as it goes
+        desired = [float(r["M_d"]) for r in csv.DictReader(line for line in f if not line.startswith("#"))
+                   if float(r["t"]) >= paused_at]
+    assert len(desired) > 10 and max(desired) == min(desired)  # the held cue: one value, while the ride goes on
+    loop.command("resume", loop.serve_port)
+    until(moving, "the arm moving before park")
+    loop.command("park", loop.serve_port)
+    until(lambda s, m: s["status"] == "parked" and abs(float(m["yaw_rate"])) < 1e-3, "parked after park")
+    time.sleep(0.4)
+    assert _session(tmp_path)[-1]["status"] == "parked"  # held until resumed
+    loop.command("resume", loop.serve_port)
     until(moving, "the arm moving before the emergency stop")
     loop.command("estop", loop.serve_port)
     until(lambda s, m: m["status"] == "e-stop" and abs(float(m["yaw_rate"])) < 1e-3, "at rest in the e-stop")
@@ -340,12 +351,15 @@ def test_operator_commands_pause_park_resume_estop_reset_act_and_are_logged(tmp_
                                            "command emergency stop", "command reset"], events
     t = [float(e["t"]) for e in events]
     session = _session(tmp_path)
-    for stop, release in ((0, 1), (2, 3), (4, 5)):  # nothing follows the host from a stop to its release
+    paused = [r for r in session if t[0] <= float(r["t"]) < t[1]]  # planned on the held cue, answering nothing
+    assert paused and all(r["status"] == "running" and r["reason"].startswith("operator: pause") for r in paused)
+    assert all(r["latency_s"] in ("", "nan") for r in paused)
+    for stop, release in ((2, 3), (4, 5)):  # nothing follows the host from a stop to its release
         held = [r for r in session if t[stop] <= float(r["t"]) < t[release]]
         assert held and not any(r["status"] == "running" for r in held)
-        assert any(r["status"] == "running" for r in session if float(r["t"]) > t[release])
-    for stop in (0, 2):
-        assert _parked_in_time(session, t[stop]) <= 1.0
+    for release in (1, 3, 5):
+        assert any(r["status"] == "running" and not r["reason"] for r in session if float(r["t"]) > t[release])
+    assert _parked_in_time(session, t[2]) <= 1.0
     machine = loop.summary("machine")
     estop = [s for s in machine["own_stops"] if s["why"] == "emergency stop (a Command)"]
     assert len(estop) == 1 and estop[0]["at_rest"] - estop[0]["start"] <= estop[0]["shortest_stop_s"] + 0.02

@@ -46,6 +46,21 @@ def test_a_host_at_the_service_s_rate_just_before_the_window_is_answered_unless_
     assert pacing.newer_due(_arrivals(50.0, opens - 0.010), opens, opens + H)
 
 
+def test_a_cycle_with_nothing_new_starts_as_its_window_opens_unless_the_host_s_next_is_due_in_it():
+    """A 60 Hz host into a 100 Hz service, its last message answered: where the next is due after the
+    10 ms window closes, the cycle (which follows the last plan) starts as the window opens, leaving the
+    processor free when the message comes; where it is due within the window, even just before its
+    close, the cycle waits for it (until the close). A fresh message is answered as before (newer_due)."""
+    opens, h = 1.0, 0.01
+    assert pacing.begins(_arrivals(60.0, opens - 0.005), False, opens, opens + h) == opens  # due at +11.7 ms
+    assert pacing.begins(_arrivals(60.0, opens - 0.008), False, opens, opens + h) == opens + h  # due at +8.7 ms
+    assert pacing.begins(_arrivals(60.0, opens - 0.0068), False, opens, opens + h) == opens + h  # at +9.9 ms
+    assert pacing.begins(_arrivals(60.0, opens - 0.001), True, opens, opens + h) == opens
+    assert pacing.begins(_arrivals(60.0, opens - 0.003), True, opens, opens + H) == opens + H
+    assert pacing.begins([], False, opens, opens + h) == opens + h  # no host yet: as it always did
+    assert pacing.begins(_arrivals(60.0, opens - 0.001), False, np.inf, opens) == opens  # stopping
+
+
 def test_datagrams_are_timed_from_their_arrival_not_from_their_reading():
     """A datagram read 50 ms after it came is 50 ms old (the kernel's receive time), and the phases'
     row has every phase's column. The kernel turns its receive stamps on a moment after the first

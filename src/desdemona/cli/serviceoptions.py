@@ -105,7 +105,7 @@ def add_command_parser(sub) -> None:
     """``desdemona command ACTION --to HOST:PORT``."""
     command = sub.add_parser(
         "command", help="an operator's command to 'serve' or 'machine': pause, park, resume, estop, reset",
-        description="Send one Command (docs/protocol.md): pause (the service parks and holds until resume), "
+        description="Send one Command (docs/protocol.md): pause (the service holds the present cue until resume), "
                     "park, resume, estop (an emergency stop: the fastest stop; no motion until reset), reset "
                     "(clears the motion system's fault or emergency stop, at rest).")
     command.add_argument("action", choices=("pause", "park", "resume", "estop", "reset"),

@@ -235,7 +235,7 @@ class MPC:
         if self.problem.nz:  # the horizon's perception map is built now, not in the session's first cycle
             self.problem.perceive(np.zeros((self.problem.N * self.problem.m, 6)))
         self.limits, self._limit_use = model.limits, model.step_limit_use(options.step)
-        self.z = self.z_d = self._z_d_next = None  # filter states of the felt and the desired path, the desired one step on
+        self.z = self.z_d = self._z_d_next = self._z_d_path = None  # filter states of the felt and the desired path, the desired one step on
         self._rti = RealTimeIteration(self.problem, options.qp_solver) if options.plan_method == "rti" else None
         self.smooth = self.problem.smooth
         self.plan: tuple[np.ndarray, np.ndarray] | None = None  # the last plan per step: accelerations, jerks
@@ -290,6 +290,42 @@ class MPC:
             command = self._fallback(now, reason, start)
         self.timings["check"] = time.perf_counter() - checked
         if self.problem.nz:
+            self._advance_filters(now, command)
+        return command
+
+    def follow(self, state) -> Command | None:
+        """The coming cycle's commands where nothing new came since the last (a host slower than the
+        cycle, :mod:`desdemona.service.serve`): the last plan's next step from ``state``, as it was
+        planned, without a QP. The real-time iteration's next step would linearise at that plan and
+        solve on the same preview again; following it leaves the processor free for the host's next
+        message, which the service then answers at once (docs/benchmarks/real-time-service.md). The
+        step is checked as every command is (:meth:`_safe_sequence`), and the felt and desired filter
+        states are carried over it as after a plan. None where there is no plan to follow (none yet, too
+        old, or past the horizon's part of equal steps, over which the desired filter's states are
+        known), or where its next step fails the check: the cycle then plans as always (:meth:`step`)."""
+        start = time.perf_counter()
+        r, most = self.options.replan_steps, round(SHIFT_MAX / self.options.step)
+        if self.plan is None or self.plan_age + 2 * r > min(len(self.plan[0]), most):
+            return None
+        q, qd = (np.asarray(v, dtype=float).reshape(self.model.n) for v in state[:2])
+        a = np.asarray(state[2], dtype=float).reshape(self.model.n) if self.smooth else np.zeros_like(q)
+        now = State(q, qd, a)
+        prob, age = self.problem, self.plan_age + r
+        z_d_next = None
+        if prob.nz:
+            sub = prob.m * (age + r)  # the desired filter's state after the step followed
+            if self._z_d_path is None or age + r > np.argmin(np.r_[self._counts, 0] == 1) or sub >= len(self._z_d_path):
+                return None
+            z_d_next = self._z_d_path[sub]
+        window = slice(age, age + r)
+        sequence, jerks = self.plan[0][window], self.plan[1][window]
+        if not self._safe_sequence(now, sequence, jerks):
+            return None
+        self.plan_age = age
+        command = Command(sequence.copy(), "shifted", time.perf_counter() - start, "nothing new since the last plan", jerks.copy())
+        self.timings = dict.fromkeys(self.timings, 0.0) | {"check": command.compute_time}
+        if prob.nz:
+            self._z_d_next = z_d_next
             self._advance_filters(now, command)
         return command
 
@@ -405,6 +441,7 @@ class MPC:
             self.z_d = prob.filter.steady_state(held[0])
         y_d, states = prob.perceive(held, self.z_d)
         self._z_d_next = states[prob.m * self.options.replan_steps]  # after this cycle's sub-steps
+        self._z_d_path = states  # and after the next ones, for a cycle that follows the plan (follow)
         return prob.with_steps(y_d.reshape(prob.N, -1).T)
 
     def _solve(self, q, qd, a, data, method: str | None = None, place: bool = False, turning: bool = True):

@@ -55,7 +55,7 @@
 
   // ---- the buttons: an emergency stop at once, the others once confirmed ----
   const QUESTIONS = {
-    pause: "Pause: park the machine (brake to rest within its limits) and hold until Resume?",
+    pause: "Pause: hold the present cue (plan on the host's last message, the host no longer followed) until Resume?",
     park: "Park: brake the machine to rest within its limits and hold until Resume?",
     resume: "Resume: follow the host again, from where the machine stands (it will move)?",
     reset: "Reset: clear the emergency stop (the machine takes setpoints again; Resume to move)?",

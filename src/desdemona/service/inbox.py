@@ -16,7 +16,6 @@ silent: a restart is never guessed from a number going back.
 
 from __future__ import annotations
 
-import bisect
 import selectors
 import socket
 
@@ -25,6 +24,7 @@ import numpy as np
 from desdemona.service import pacing, protocol
 from desdemona.service.drops import Drops
 from desdemona.service.signing import Incoming, Outgoing
+from desdemona.service.spill import Spilled
 
 #: Replaced sessions remembered (their late datagrams are never taken as a restart)
 RETIRED = 64
@@ -68,7 +68,7 @@ class Inbox:
         self.newest: protocol.Motion | None = None
         self.arrived = None  # clock time the newest message arrived
         self.fresh = False  # a message came since the last cycle took one
-        self.t, self.values, self.arrivals = [], [], []
+        self.t, self.values, self.arrivals = Spilled(), Spilled(), Spilled()  # every message's: at flat memory
 
     @property
     def dropped(self):
@@ -76,16 +76,16 @@ class Inbox:
         return self.drops.counts
 
     def wait(self, until: float, opens: float) -> None:
-        """Read what comes until ``until`` (clock), returning early once a new message has come and the
-        cycle's window has opened (``opens``)."""
+        """Read what comes until the cycle whose window is [``opens``, ``until``] (clock) starts
+        (:func:`~desdemona.service.pacing.begins`): as the window opens, or as a new message comes in
+        it, or as it closes."""
         while True:
             self.drain()
             now = self.clock()
-            # a stale message is answered as the window opens unless the host's next is due in it (pacing)
-            begins = opens if self.fresh and not pacing.newer_due(self.arrivals, opens, until) else until
-            if now >= min(begins, until):
+            begins = min(pacing.begins(self.arrivals, self.fresh, opens, until), until)
+            if now >= begins:
                 return
-            self.selector.select(min(begins, until) - now)
+            self.selector.select(begins - now)
 
     def drain(self) -> None:
         if self.machine is not None:
@@ -149,8 +149,9 @@ class Inbox:
         self.commands.append((arrived, message.action))
 
     def recent(self, seconds: float) -> tuple[np.ndarray, np.ndarray]:
-        """(t, values) of the motion of the last ``seconds`` (host time)."""
-        start = bisect.bisect_right(self.t, self.t[-1] - seconds)  # the times increase: 0.1 ms less a cycle than a scan
+        """(t, values) of the motion of the last ``seconds`` (host time), at most what is in memory (the
+        last :data:`~desdemona.service.spill.BLOCK` messages or more)."""
+        start = self.t.after(self.t[-1] - seconds)  # the times increase: 0.1 ms less a cycle than a scan
         return np.asarray(self.t[start:]), np.asarray(self.values[start:])
 
 

@@ -137,12 +137,16 @@ class MachineLink:
 
 def commanded_at(starts, u, jerks, h: float):
     """``commanded(t)`` of cycles starting at k h from ``starts`` [(q, qd, a), ...] with accelerations
-    ``u`` and jerks: the free joints' (q, qd) at t (None outside the cycles commanded)."""
+    ``u`` and jerks: the free joints' (q, qd) at t (None outside the cycles commanded, or before those
+    still in memory: :class:`~desdemona.service.spill.Spilled`)."""
     def at(t: float):
         k = int(np.floor(t / h + 1e-9))
         if k < 0 or k >= len(u):
             return None
         s = min(max(t - k * h, 0.0), h)
-        q, qd, _ = starts[k]
-        return advance(q, qd, u[k], s, jerks[k])
+        try:
+            (q, qd, _), acceleration, jerk = starts[k], u[k], jerks[k]
+        except IndexError:  # a State about a setpoint of long ago: nothing to judge it on
+            return None
+        return advance(q, qd, acceleration, s, jerk)
     return at

@@ -11,6 +11,14 @@ the setpoint then carries motion younger by up to a cycle, and the latency from 
 setpoint is the cycle's compute alone. Where the next message is not due in time (a slower host), the
 cycle starts with the stale one as the window opens, as it always did. :func:`newer_due` decides.
 
+**A cycle with nothing new** (a host slower than the service: at 60 Hz into 100 Hz, two cycles in
+five) follows the last plan's next step, without a QP (:meth:`desdemona.control.mpc.MPC.follow`): a
+fraction of a millisecond instead of a plan's. It starts as its window opens where the host's next
+message is not due within the window, else it waits for that message until the window closes
+(:func:`begins`). A cycle that solved a QP with nothing new at its window's close made the host's
+next message, arriving then, wait for it (p99 of the wait 4.8 ms, of the latency 8.8 ms on ``dfs`` at
+100 Hz with a 60 Hz host; docs/benchmarks/real-time-service.md).
+
 **The phases of a cycle** (:data:`PHASES`, seconds, in the session's ``session.csv`` and summarised in
 its ``summary.json``): the preview (the predictor over what the host sent, and the stage data of the
 plan), the QP's data (linearising the plan: on the hot path only where nothing was prepared), the QP
@@ -63,6 +71,24 @@ def newer_due(arrivals: list[float], opens: float, closes: float) -> bool:
     return arrivals[-1] + host_period(arrivals) <= closes - MARGIN * (closes - opens)
 
 
+def begins(arrivals: list[float], fresh: bool, opens: float, closes: float) -> float:
+    """When a cycle whose window is [``opens``, ``closes``] (clock times [s]) starts, short of a new
+    message: a fresh message (one not yet answered) is answered as the window opens, unless it came
+    before and the host's next is due in the window (:func:`newer_due`: the cycle waits for that);
+    with nothing fresh, the cycle waits for a message due in the window (the host's next, one period
+    after its last) and otherwise starts as the window opens, following the last plan
+    (:meth:`desdemona.control.mpc.MPC.follow`): its processor time is then spent away from when the
+    host's next message comes, which a cycle at the window's close would make wait (a host slower
+    than the service). No margin here: a message due just before the close that comes just after it
+    waits for the short cycle that follows the plan; one the cycle had not waited for would wait for
+    the next window."""
+    if fresh:
+        return closes if newer_due(arrivals, opens, closes) else opens
+    if not (arrivals and math.isfinite(opens)):
+        return closes
+    return closes if arrivals[-1] + host_period(arrivals) <= closes else opens
+
+
 def stamped(sock: socket.socket) -> socket.socket:
     """``sock`` with the kernel's receive time on every datagram, where the system has it."""
     try:
@@ -111,10 +137,11 @@ def phases(timings: dict | None, send: float, cpu: float) -> dict:
     return {**row, "send_s": send, "compute_cpu_s": time.thread_time() - cpu}
 
 
-def close(row: dict, timings: dict | None, send: float, cpu: float, prepare, state) -> None:
-    """After a cycle's send: its ``row`` given its phases (:func:`phases`), and where it planned, the
-    next cycle's QP prepared from ``state``, where the command leaves the machine (``prepare(state)``,
-    :meth:`desdemona.control.mpc.MPC.prepare`), off the hot path, its time the row's ``prepare_s``."""
+def close(row: dict, timings: dict | None, send: float, cpu: float, prepare, state, followed: bool = False) -> None:
+    """After a cycle's send: its ``row`` given its phases (:func:`phases`), and where it planned or
+    ``followed`` the last plan, the next cycle's QP prepared from ``state``, where the command leaves
+    the machine (``prepare(state)``, :meth:`desdemona.control.mpc.MPC.prepare`), off the hot path, its
+    time the row's ``prepare_s``."""
     row.update(phases(timings, send, cpu))
-    if timings is not None:
+    if timings is not None or followed:
         row["prepare_s"] = timed(prepare, state)[1]

@@ -91,7 +91,7 @@ SOURCES = ("plan", "previous plan", "brake", "park")
 MACHINE_STATUSES = ("ready", "following", "braking", "stopped", "fault", "e-stop")
 #: A fault's code: none, a joint's drive reported a fault, the motion made broke a limit.
 FAULTS = ("none", "drive", "limit")
-#: An operator's command: pause (park and hold until resume), park, resume, emergency stop, reset (the
+#: An operator's command: pause (hold the present cue until resume), park, resume, emergency stop, reset (the
 #: motion system's fault or emergency stop cleared, at rest).
 ACTIONS = ("pause", "park", "resume", "emergency stop", "reset")
 

@@ -11,8 +11,11 @@ command exactly: the setpoints are a continuous jerk-limited motion, cycle after
 
 Timing: cycle k belongs to the machine's time k h. It starts when a new host message arrives within
 half a cycle of that time (so a host that sends at the session's rate is answered at once: the
-end-to-end latency is the compute time), else at the window's end with what it has; one stale before
-the window opened waits for the host's next where it is due in time (:mod:`desdemona.service.pacing`).
+end-to-end latency is the compute time); one stale before the window opened waits for the host's next
+where it is due in time. A cycle with nothing new (a host slower than the service) follows the last
+plan's next step without a QP (:meth:`desdemona.control.mpc.MPC.follow`), at the window's end where
+the host's next message is due in the window, else as it opens, away from when the next message comes
+(:func:`desdemona.service.pacing.begins`).
 
 - **Starting**: until the first host message the machine stands still at home (status ``starting``).
 - **Watchdog**: without a valid host message for ``timeout`` cycles the machine is parked: braked to
@@ -58,6 +61,7 @@ from desdemona.service.measured import (
     commanded_at,
 )
 from desdemona.service.sessionlog import TIMED, describe, events_table, session_table, summary
+from desdemona.service.spill import Spilled
 
 __all__ = ["ServeOptions", "Served", "default_channels", "describe", "events_table", "result", "serve",
            "session_table", "summary"]
@@ -171,6 +175,12 @@ class _Preview:
         self.name, self.model, self.horizon, self.history = name, model, horizon, history
         self.predict = None if name == "forecast" else predictor(name, reference)
 
+    def held(self, values):
+        """A host's motion ``values`` (one message's) held over the horizon, as the controller takes a
+        preview."""
+        held = np.repeat(np.atleast_2d(values), 2, axis=0)
+        return np.array([0.0, self.horizon]), held[:, 0] if held.shape[1] == 1 else held
+
     def __call__(self, inbox: Inbox):
         message = inbox.newest
         if self.name == "forecast":
@@ -183,8 +193,7 @@ class _Preview:
             return t, values[:, 0] if values.shape[1] == 1 else values
         t, values = inbox.recent(self.history)
         if len(t) < 2:  # one sample: held
-            held = np.repeat(values[:1], 2, axis=0)
-            return np.array([0.0, self.horizon]), held[:, 0] if held.shape[1] == 1 else held
+            return self.held(values[0])
         return self.predict(self.model.config.cue_path(_host_path(t, values)), float(t[-1]), self.horizon)
 
 
@@ -255,10 +264,10 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             opens, closes = start + (k - 0.5) * h, start + (k + 0.5) * h
             # stopping, the cycles keep their times; else each starts as a new host message comes
             inbox.wait(start + k * h, np.inf) if stops else inbox.wait(closes, opens)
-            began, cpu, session.timings = clock(), time.thread_time(), None
+            began, cpu, session.timings, session.followed = clock(), time.thread_time(), None, False
             commands = inbox.commands + (console.commands() if console is not None else [])
             for _, action, *who in commands:  # logged at the cycle that acts on it, as every event
-                session.operator(action, k * h, *who)
+                session.operator(action, k * h, *who, present=None if inbox.newest is None else inbox.newest.values)
                 if action in ("emergency stop", "reset"):  # the motion system's own: passed on
                     _send(outbound, protocol.Command(len(session.events), began - start, action), serving.send, inbox)
             inbox.commands = []
@@ -266,10 +275,14 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             machine = session.observe(link, k * h, began)
             if stops:
                 session.park(stop=True, hard=len(stops) > 1)
-            elif machine or session.paused:
+            elif machine or (session.paused and session.held is None):
                 session.park(reason=machine or f"operator: {session.paused}")
-            elif alive:
-                session.run(*pacing.timed(preview, inbox), inbox.newest.sequence)
+            elif session.paused:  # the operator's pause: the present cue held, the host not followed
+                session.run(preview.held(session.held), 0.0, None)
+                session.reason = session.reason or "operator: pause (the cue held)"
+            elif alive:  # with nothing new since the last cycle, the last plan's next step where it can
+                if inbox.fresh or not session.follow():
+                    session.run(*pacing.timed(preview, inbox), inbox.newest.sequence)
             elif inbox.newest is None:
                 session.hold("starting")
             else:
@@ -288,12 +301,15 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
                     or (serving.duration is not None and k * h >= serving.duration)
                     or (quiet and session.status == "parked")):
                 break
-    offset = inbox.arrivals[0] - start - inbox.t[0] if inbox.t else 0.0
-    return Served(loop=session.loop(), columns=session.columns(), received_t=np.asarray(inbox.t) + offset,
-                  received=np.asarray(inbox.values).reshape(len(inbox.t), channels),
-                  dropped=inbox.dropped + link.dropped, drop_samples={**link.drops.sample(), **inbox.drops.sample()},
-                  stopped_by=stops[0] if stops else None, deadline=controller.deadline, offset=offset,
-                  events=session.events, states=link.received, reanchored=session.reanchored, breaks=session.breaks)
+    offset = inbox.arrivals.head - start - inbox.t.head if inbox.t else 0.0
+    served = Served(loop=session.loop(), columns=session.columns(), received_t=np.asarray(inbox.t) + offset,
+                    received=np.asarray(inbox.values).reshape(len(inbox.t), channels),
+                    dropped=inbox.dropped + link.dropped, drop_samples={**link.drops.sample(), **inbox.drops.sample()},
+                    stopped_by=stops[0] if stops else None, deadline=controller.deadline, offset=offset,
+                    events=session.events, states=link.received, reanchored=session.reanchored, breaks=session.breaks)
+    for record in (session.rows, session.u, session.jerks, inbox.t, inbox.values, inbox.arrivals):
+        record.close()  # the temporary files of what was written out (spill)
+    return served
 
 
 def _log(log, console, session: _Session, inbox: Inbox, link: MachineLink, config) -> None:
@@ -303,8 +319,9 @@ def _log(log, console, session: _Session, inbox: Inbox, link: MachineLink, confi
     if log is not None:
         measured = None if state is None else (config.select(state.position), config.select(state.rate),
                                                state.applied_time)
-        log.cycle(session.rows[-1], (*session.starts[-1][:2], session.u[-1]), measured, session.events,
-                  None if inbox.newest is None else inbox.newest.values)
+        desired = session.held if session.paused and session.held is not None else (
+            None if inbox.newest is None else inbox.newest.values)
+        log.cycle(session.rows[-1], (*session.starts[-1][:2], session.u[-1]), measured, session.events, desired)
     if console is not None:
         console.publish(session, inbox, link)
 
@@ -325,12 +342,13 @@ class _Session:
         self.state = State(np.zeros(n), np.zeros(n), np.zeros(n))
         self.status, self.source, self.reason = "starting", "park", ""
         self.command = (np.zeros(n), np.zeros(n))
-        self.rows: list[dict] = []
-        self.u, self.jerks = [], []
+        # the cycles' rows and commands, at flat memory (spill: older blocks on a temporary file)
+        self.rows, self.u, self.jerks = Spilled(), Spilled(), Spilled()
         self.was_parked = False
         self.settle = None  # the second cycle's jerks of coming to rest
-        self.starts: list[State] = []  # each cycle's starting state, for the tracking error
+        self.starts = Spilled(keep=False)  # each cycle's starting state, for the tracking error: the recent ones
         self.paused: str | None = None  # an operator's pause, park or emergency stop, until resume or reset
+        self.held = None  # the host's motion a pause holds
         self.events: list[tuple[float, str, str]] = []
         self.machine_fault = ""  # why the machine is parked on what it measurably does ("": it is not)
         self.trusted_from = 1  # the first setpoint sequence a State's tracking error is judged on
@@ -340,6 +358,7 @@ class _Session:
         self.told: set[str] = set()
         self.breaks: list[int] = []
         self.timings, self.guarded = None, 0.0  # this cycle's phases where it planned [s]; the service's check's
+        self.followed = False  # this cycle followed the last plan (follow)
 
     def run(self, preview, preview_time: float, sequence: int) -> None:
         if self.was_parked:  # the machine was moved by the watchdog: plan afresh from here
@@ -351,14 +370,34 @@ class _Session:
         self._guard()
         self.timings = {**self.controller.timings, "service_preview": preview_time, "guard": self.guarded}
 
+    def follow(self) -> bool:
+        """A cycle with no new host message: the last plan's next step (:meth:`MPC.follow`), no QP, so
+        that the host's next message, coming while this cycle would have solved, is answered at once;
+        False where the controller has none to follow (the cycle then plans on the message it has)."""
+        command = None if self.was_parked else self.controller.follow(self.state)
+        if command is None:
+            return False
+        self.command = (command.sequence[0], command.jerks[0])
+        self.status, self.source, self.reason = "running", SOURCE_NAMES[command.source], command.reason
+        self._guard()
+        self.timings, self.followed = None, True
+        return True
+
     def event(self, t: float, what: str, detail: str = "") -> None:
         self.events.append((t, what, detail))
 
-    def operator(self, action: str, t: float, who: str = "") -> None:
-        """An operator's Command: pause, park (the same, the controller then plans afresh), resume,
-        emergency stop (parked until a reset), reset; ``who`` sent it (the console's client)."""
+    def operator(self, action: str, t: float, who: str = "", present=None) -> None:
+        """An operator's Command: pause (the host's last message's motion, ``present``, held: planned on
+        until resume, the host no longer followed; as park where the session is
+        not following the host), park (the machine brought to rest and held; the
+        controller then plans afresh), resume, emergency stop (parked until a reset), reset; ``who``
+        sent it (the console's client)."""
         self.event(t, f"command {action}", who)
+        if action == "pause" and self.paused is not None:
+            return  # parked or stopped: a pause does not move it again
         if action in ("pause", "park", "emergency stop"):
+            # a pause holds the cue of a session that follows the host; a parked machine stays at rest
+            self.held = present if action == "pause" and self.status == "running" else None
             self.paused = action
             if action == "park":
                 self.controller.forget()
@@ -487,18 +526,19 @@ class _Session:
                           "command": self.source, "status": self.status, "reason": self.reason,
                           "tracking_use": self.tracking, "machine": self.machine_status})
         self.state = self.state.advance(qdd, self.h, jerk)
-        pacing.close(self.rows[-1], self.timings, *timed, self.controller.prepare, self.state)
+        pacing.close(self.rows[-1], self.timings, *timed, self.controller.prepare, self.state, self.followed)
 
     def loop(self) -> ClosedLoop:
-        n = self.model.n
-        plan = Plan(np.arange(len(self.u) + 1) * self.h, np.zeros(n), np.zeros(n), np.array(self.u).reshape(-1, n),
-                    np.array(self.jerks).reshape(-1, n))
-        sources = tuple({"plan": "mpc", "previous plan": "shifted"}.get(r["command"], "brake") for r in self.rows)
-        return ClosedLoop(plan, np.array([r["t"] for r in self.rows]), sources,
-                          np.array([r["compute_time_s"] for r in self.rows]), tuple(r["reason"] for r in self.rows))
+        n, rows = self.model.n, list(self.rows)
+        plan = Plan(np.arange(len(self.u) + 1) * self.h, np.zeros(n), np.zeros(n), self.u.array().reshape(-1, n),
+                    self.jerks.array().reshape(-1, n))
+        sources = tuple({"plan": "mpc", "previous plan": "shifted"}.get(r["command"], "brake") for r in rows)
+        return ClosedLoop(plan, np.array([r["t"] for r in rows]), sources,
+                          np.array([r["compute_time_s"] for r in rows]), tuple(r["reason"] for r in rows))
 
     def columns(self) -> dict[str, np.ndarray]:
-        return {key: np.array([r[key] for r in self.rows])
+        rows = list(self.rows)
+        return {key: np.array([r[key] for r in rows])
                 for key in (*TIMED, "message_age_s", "latency_s", "command", "status", "tracking_use", "machine")}
 
 
