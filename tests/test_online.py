@@ -1095,3 +1095,26 @@ def test_on_dfs_the_gimbals_do_not_spin_against_each_other_at_their_lock():
         rms.append(result.check.rms)
     assert peaks[0] < 90.0 < 120.0 < peaks[1] and peaks[2] < 60.0
     assert rms[0] < 1.02 * rms[1]
+
+
+@pytest.mark.parametrize("name", ["hold", "linear"])
+def test_a_live_predictor_given_only_what_it_looks_back_at_predicts_the_same(name):
+    """A live session gives a predictor only the past it reads (``looks_back``: its cost per cycle the
+    same however long the session): on a noisy 120 Hz recording, the preview from the last second
+    equals the one from ten seconds, cycle after cycle (the hold predictor's memory of held values is
+    its own)."""
+    from desdemona.control.predictors import PREDICTORS, predictor
+
+    rng = np.random.default_rng(3)
+    t = np.arange(0.0, 12.0, 1 / 120)
+    S = np.column_stack([0.2 * np.sin(t), 0 * t, 0.1 * np.cos(2 * t), 3 * np.sin(0.5 * t), 0 * t, -9.81 + t / 12])
+    S += 0.05 * rng.standard_normal(S.shape)
+    back = PREDICTORS[name].looks_back
+    whole, short = predictor(name), predictor(name)
+    for now in np.arange(10.0, 12.0, 0.01):
+        k = int(np.searchsorted(t, now, side="right"))
+        full = whole(DesiredPath("host", t[max(0, k - 1200):k], S[max(0, k - 1200):k]), t[k - 1], 2.0)
+        recent = t[:k] > t[k - 1] - back
+        cut = short(DesiredPath("host", t[:k][recent], S[:k][recent]), t[k - 1], 2.0)
+        np.testing.assert_array_equal(cut.t, full.t)
+        np.testing.assert_allclose(cut.S_d, full.S_d, rtol=0, atol=1e-12)

@@ -326,13 +326,16 @@ FORECAST = Need("--forecast", "FILE", "the vehicle's forecasts (docs/guide/onlin
 class Kind:
     """One predictor of :data:`PREDICTORS`: ``make``, a function ``predictor(path, now, horizon)`` or a
     class (which carries state from call to call: a fresh one per run, given its need); what it does
-    (``summary``, the help's); what it ``needs`` (:data:`REFERENCE`, :data:`FORECAST` or None); and
-    whether it may run in a live session (``serve``; all may run in ``online``)."""
+    (``summary``, the help's); what it ``needs`` (:data:`REFERENCE`, :data:`FORECAST` or None);
+    whether it may run in a live session (``serve``; all may run in ``online``); and how many seconds
+    of the past it reads (``looks_back``; None: all it is given): a live session gives it no more,
+    each cycle's preview then costs the same however long the session."""
 
     make: object
     summary: str
     needs: Need | None = None
     live: bool = True
+    looks_back: float | None = None
 
 
 #: The predictors, by name: the one table that the command line's choices and help, every check of
@@ -340,8 +343,8 @@ class Kind:
 #: needs the future.
 PREDICTORS = {
     "perfect": Kind(predict_perfect, "the true future (the thesis' assumption)", live=False),
-    "hold": Kind(HoldPredictor, "the present held"),
-    "linear": Kind(predict_linear, "extrapolated from the last two samples"),
+    "hold": Kind(HoldPredictor, "the present held", looks_back=5 * HOLD_WINDOW),  # its memory is its own
+    "linear": Kind(predict_linear, "extrapolated from the last two samples", looks_back=5 * HOLD_WINDOW),
     "route": Kind(RoutePredictor, "a recording of the same course, aligned to the live signal", REFERENCE),
     "forecast": Kind(ForecastPredictor, "the vehicle's own forecasts, its model run ahead", FORECAST),
 }

@@ -172,7 +172,8 @@ class _Preview:
     """The session's predictor over what the host has sent (``forecast``: the host's own block)."""
 
     def __init__(self, name: str, model: Model, horizon: float, reference: DesiredPath | None, history: float):
-        self.name, self.model, self.horizon, self.history = name, model, horizon, history
+        self.name, self.model, self.horizon = name, model, horizon
+        self.history = min(history, predictors.PREDICTORS[name].looks_back or history)  # what it reads
         self.predict = None if name == "forecast" else predictor(name, reference)
 
     def held(self, values):

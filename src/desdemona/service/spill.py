@@ -77,8 +77,10 @@ class Spilled:
             start, stop, step = key.indices(size)
             if start >= stop:
                 return []
-            lo = self._memory(start)
-            return (self._older + self._recent)[lo:stop - self.first:step]
+            lo, hi, older = self._memory(start), stop - self.first, len(self._older)
+            if lo >= older:  # within the block being filled: no copy of the older one
+                return self._recent[lo - older:hi - older:step]
+            return (self._older[lo:] + self._recent)[:hi - lo:step]
         k = key + size if key < 0 else key
         if not 0 <= k < size:
             raise IndexError(f"row {key} of {size}")
