@@ -85,8 +85,16 @@ def _port() -> int:
         return s.getsockname()[1]
 
 
+#: ``--pin``: the service on a core of its own (the last), every other process on the others, as a
+#: real-time deployment gives it one (``taskset``); None: where the system puts them.
+PIN: tuple[str, str] | None = None
+
+
 def _desdemona(*args) -> list[str]:
-    return [sys.executable, "-m", "desdemona", *map(str, args)]
+    command = [sys.executable, "-m", "desdemona", *map(str, args)]
+    if PIN is None:
+        return command
+    return ["taskset", "-c", PIN[0] if args[0] == "serve" else PIN[1], *command]
 
 
 def start_pair(config: str, folder: Path, listen: int, send: int, rate: float, idle: float, *serve_args, both=()):
@@ -292,9 +300,16 @@ def main(argv=None) -> int:
     parser.add_argument("--seconds", type=float, default=FLIGHT_END - START,
                         help="fly only the first SECONDS of the turn (default: all 55 s; the lossy run's outage "
                              "is at 30 s)")
+    parser.add_argument("--pin", action="store_true",
+                        help="the service on a core of its own, the host and the stand-in on the others (taskset)")
     args = parser.parse_args(argv)
-    global STOP
+    global STOP, PIN
     STOP = min(FLIGHT_END, START + args.seconds)
+    cores = sorted(os.sched_getaffinity(0))
+    if args.pin:
+        if len(cores) < 2:
+            parser.error("--pin needs two cores at least")
+        PIN = (str(cores[-1]), ",".join(map(str, cores[:-1])))
     loads = RESULTS / "load.json"  # the machine's load while the runs ran, kept for --table-only
     if not args.table_only:
         before = os.getloadavg()[0]
