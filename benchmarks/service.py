@@ -5,6 +5,13 @@
     python benchmarks/service.py --table-only         # re-read the folders, rewrite the table
     python benchmarks/service.py --runs dfs-50 --key  # the same run, every datagram signed (``--key``)
     python benchmarks/service.py --runs full-50-host60 --seconds 20   # a short run
+    python benchmarks/service.py --pin                # the service on a core of its own (taskset)
+
+``--pin`` gives the service the last core and the host and the stand-in the others, as a real-time
+deployment gives the service a core of its own (the host and the motion system are computers of their
+own there). Without it, on a 2-core machine, the stand-in that each setpoint wakes often takes the
+service's core before the service has finished its cycle's bookkeeping: the send's p99 then counts
+1-1.5 ms of the stand-in's work.
 
 Each run starts three processes, as a user would (docs/guide/serve.md): the motion
 system's stand-in (``desdemona machine``), the service (``desdemona serve``, the ``hold`` predictor,
@@ -269,7 +276,9 @@ def table(rows: list[dict], load: tuple) -> str:
             lines.append(f"{r['run']}: the host silent from {r['outage_at']:.2f} s of the session for "
                          f"{OUTAGE[1]:g} s; parking from {r['parking_at']:.2f} s, running again from "
                          f"{r['resumed_at']:.2f} s.")
-    measured = (f"Load average before and after: {load[0]:.2f}, {load[1]:.2f} (2 cores); measured "
+    pinned = "" if len(load) < 3 or load[2] is None else (
+        f"; the service on core {load[2][0]} of its own, the host and the stand-in on core {load[2][1]} (--pin)")
+    measured = (f"Load average before and after: {load[0]:.2f}, {load[1]:.2f} (2 cores){pinned}; measured "
                 f"{time.strftime('%Y-%m-%d')}.")
     lines += ["", *_phases_table(rows), "", measured]
     return "\n".join(lines)
@@ -315,7 +324,7 @@ def main(argv=None) -> int:
         before = os.getloadavg()[0]
         for name in args.runs:
             print(serve_run(name, args.key), flush=True)
-        loads.write_text(json.dumps([before, os.getloadavg()[0]]))
+        loads.write_text(json.dumps([before, os.getloadavg()[0], PIN]))
     rows = [measure(name, signed) for name in RUNS for signed in (False, True)
             if (RESULTS / (f"{name}-key" if signed else name) / "served" / "summary.json").exists()]
     text = table(rows, tuple(json.loads(loads.read_text())))

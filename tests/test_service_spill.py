@@ -1,7 +1,9 @@
 """A session's record at flat memory (desdemona.service.spill): rows kept a block at a time, the
 older blocks written to a temporary file and read back whole at the end."""
 
+import os
 import tracemalloc
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -66,3 +68,17 @@ def test_memory_stays_flat_as_a_long_session_is_recorded():
     assert len(list(rows)) == 36_000 and np.asarray(commands).shape == (36_000, 8)
     rows.close()
     commands.close()
+
+
+def test_the_written_blocks_go_to_the_folder_given_and_leave_nothing(tmp_path):
+    """Beside the session's results (not the system's temporary folder, which may be in memory), as a
+    file without a name: nothing is left there, closed or killed."""
+    rows = Spilled(block=2, directory=tmp_path)
+    for k in range(7):
+        rows.append(k)
+    link = Path(f"/proc/self/fd/{rows._file.fileno()}")
+    if link.exists():  # Linux: where the open file is
+        assert os.readlink(link).startswith(str(tmp_path))
+    assert list(rows) == list(range(7)) and list(tmp_path.iterdir()) == []
+    rows.close()
+    assert list(tmp_path.iterdir()) == []

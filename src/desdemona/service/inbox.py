@@ -42,10 +42,11 @@ class Inbox:
     :class:`~desdemona.service.measured.MachineLink`): the States that come back to it; Commands are
     taken from the host ``operator`` only; ``early``: datagrams dropped before the session began;
     ``key``: the shared key (None: unsigned datagrams only), which :attr:`outgoing` signs the
-    service's own datagrams with."""
+    service's own datagrams with; ``record``: the folder of the motion's older blocks
+    (:class:`~desdemona.service.spill.Spilled`; None: the system's temporary folder)."""
 
     def __init__(self, sock: socket.socket, channels: int, clock, lost_after: float = np.inf, on_drop=None,
-                 machine=None, operator: str = "127.0.0.1", early: int = 0, key: bytes | None = None):
+                 machine=None, operator: str = "127.0.0.1", early: int = 0, key: bytes | None = None, record=None):
         self.sock, self.channels, self.clock = pacing.stamped(sock), channels, clock
         self.lost_after = lost_after
         self.drops = Drops(on_drop, clock)
@@ -68,7 +69,8 @@ class Inbox:
         self.newest: protocol.Motion | None = None
         self.arrived = None  # clock time the newest message arrived
         self.fresh = False  # a message came since the last cycle took one
-        self.t, self.values, self.arrivals = Spilled(), Spilled(), Spilled()  # every message's: at flat memory
+        # every message's, at flat memory: the older ones in a temporary file in the folder ``record``
+        self.t, self.values, self.arrivals = (Spilled(directory=record) for _ in range(3))
 
     @property
     def dropped(self):

@@ -60,7 +60,7 @@ import numpy as np
 
 from desdemona.machine.model import Model
 from desdemona.machine.params import JOINT_NAMES
-from desdemona.service import protocol
+from desdemona.service import pacing, protocol
 from desdemona.service.checker import (ABSOLUTE, CONTINUITY, KINDS, LIMIT_KINDS, MADE_KINDS, POINTS, REANCHOR,
                                        Checker, Violation)
 from desdemona.service.drive import Drive, Event
@@ -431,6 +431,7 @@ def run(model: Model, listen: tuple[str, int], out: str | Path, idle: float = 2.
         except OSError:
             pass
         sock.bind(listen)  # before the folder: a port in use leaves nothing behind
+        pacing.stamped(sock)
         out = prepare(out)
         report = Report(out=out)
         report.address = sock.getsockname()[:2]
@@ -479,10 +480,12 @@ def _loop(stand_in: _StandIn, stops: list, started: float, idle: float, duration
         while (now := time.monotonic() - started) < tick:
             stand_in.sock.settimeout(min(tick - now, RECEIVE_TIMEOUT))
             try:
-                data, sender = stand_in.sock.recvfrom(MAX_DATAGRAM)
+                data, sender, age = pacing.received(stand_in.sock, MAX_DATAGRAM)
             except (TimeoutError, BlockingIOError, InterruptedError):
                 continue
-            stand_in.datagram(data, sender, time.monotonic() - started)
+            # timed from when it came (the kernel's stamp), not from when this process next ran: a
+            # motion system's controller reads its link in real time, the stand-in may be held up
+            stand_in.datagram(data, sender, time.monotonic() - started - age)
         stand_in.tick(last, now)
         last, k = now, max(k + 1, int(now / period) + 1)
 

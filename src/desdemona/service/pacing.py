@@ -110,12 +110,24 @@ def datagrams(sock: socket.socket, on_error):
         except OSError as exc:
             on_error(exc)
             continue
-        age = 0.0
-        for level, kind, stamp in ancillary:
-            if level == socket.SOL_SOCKET and kind == SO_TIMESTAMPNS and len(stamp) >= 16:
-                seconds, nanoseconds = struct.unpack("qq", stamp[:16])
-                age = max(0.0, time.time() - (seconds + 1e-9 * nanoseconds))
-        yield data, sender, age
+        yield data, sender, age(ancillary)
+
+
+def received(sock: socket.socket, size: int) -> tuple[bytes, tuple, float]:
+    """One datagram from ``sock`` (blocking as the socket does): (data, sender, age [s] since the
+    kernel received it, 0 where it was not stamped: :func:`stamped`)."""
+    data, ancillary, _, sender = sock.recvmsg(size, socket.CMSG_SPACE(16))
+    return data, sender, age(ancillary)
+
+
+def age(ancillary) -> float:
+    """The seconds since the kernel received a datagram, from its ``ancillary`` data (0 without the
+    kernel's stamp)."""
+    for level, kind, stamp in ancillary:
+        if level == socket.SOL_SOCKET and kind == SO_TIMESTAMPNS and len(stamp) >= 16:
+            seconds, nanoseconds = struct.unpack("qq", stamp[:16])
+            return max(0.0, time.time() - (seconds + 1e-9 * nanoseconds))
+    return 0.0
 
 
 def timed(function, *args):

@@ -255,10 +255,11 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
         early = _discard_queued(inbound)
         if ready is not None:
             ready(early)
+        record = None if log is None else log.out  # the records' older blocks beside the results (spill)
         link = MachineLink(model, h, serving.send, serving.state_lost, key=serving.key, on_drop=on_drop, clock=clock)
         inbox = Inbox(inbound, channels, clock, serving.timeout * h, on_drop, machine=(outbound, link),
-                      operator=serving.operator, early=early, key=serving.key)
-        session = _Session(model, controller, h, guard_use)
+                      operator=serving.operator, early=early, key=serving.key, record=record)
+        session = _Session(model, controller, h, guard_use, record)
         start = clock()
         k = 0
         while True:
@@ -337,14 +338,14 @@ def _send(sock: socket.socket, message, to, inbox: Inbox) -> None:
 class _Session:
     """The machine's state and the commands of the cycles, as the service drives it."""
 
-    def __init__(self, model: Model, controller: MPC, h: float, guard_use):
+    def __init__(self, model: Model, controller: MPC, h: float, guard_use, record=None):
         self.model, self.controller, self.h, self.guard_use = model, controller, h, guard_use
         n = model.n
         self.state = State(np.zeros(n), np.zeros(n), np.zeros(n))
         self.status, self.source, self.reason = "starting", "park", ""
         self.command = (np.zeros(n), np.zeros(n))
         # the cycles' rows and commands, at flat memory (spill: older blocks on a temporary file)
-        self.rows, self.u, self.jerks = Spilled(), Spilled(), Spilled()
+        self.rows, self.u, self.jerks = (Spilled(directory=record) for _ in range(3))
         self.was_parked = False
         self.settle = None  # the second cycle's jerks of coming to rest
         self.starts = Spilled(keep=False)  # each cycle's starting state, for the tracking error: the recent ones

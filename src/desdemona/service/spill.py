@@ -1,5 +1,7 @@
 """A session's record at flat memory: the rows of its cycles and of the host's messages kept in
-memory a block at a time, the older blocks written to a temporary file.
+memory a block at a time, the older blocks written to a temporary file (beside the session's
+results where it has a folder: a system whose temporary folder is in memory, tmpfs, would otherwise
+hold them in memory after all).
 
 A session of an hour at 100 Hz has 360,000 cycles. Kept as Python objects (a dict of the cycle's
 columns, the command's arrays, the host's message) they cost about 1.4 kB a cycle: +500 MB over the
@@ -32,10 +34,11 @@ class Spilled:
     ``keep=False`` the older blocks are dropped instead: only the recent rows are ever asked for);
     :attr:`head` is the first row. Rows of NumPy arrays of one shape are stacked as they are spilled."""
 
-    def __init__(self, block: int = BLOCK, keep: bool = True):
+    def __init__(self, block: int = BLOCK, keep: bool = True, directory=None):
         if block < 1:
             raise ValueError(f"block {block}: at least one row")
         self.block, self.keep = block, keep  # keep=False: older blocks are dropped, not written
+        self.directory = directory  # where the file goes (None: the system's temporary folder)
         self.first = 0  # the index of the first row in memory
         self.head = None  # the first row, kept aside
         self._older: list = []  # the block before the one being filled
@@ -55,7 +58,7 @@ class Spilled:
         if not rows or not self.keep:
             return
         if self._file is None:
-            self._file = tempfile.TemporaryFile(prefix="desdemona-session-")  # noqa: SIM115 -- kept open, closed by close()
+            self._file = tempfile.TemporaryFile(prefix=".desdemona-record-", dir=self.directory)  # noqa: SIM115 -- kept open, closed by close()
         stack = isinstance(rows[0], np.ndarray) and all(
             isinstance(r, np.ndarray) and r.shape == rows[0].shape for r in rows)
         pickle.dump(np.stack(rows) if stack else rows, self._file, protocol=pickle.HIGHEST_PROTOCOL)
