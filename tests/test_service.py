@@ -16,7 +16,7 @@ import pytest
 
 from desdemona import Model, profiles
 from desdemona.runs import session
-from desdemona.service import machine, protocol, serve
+from desdemona.service import machine, protocol, serve, spill
 
 # These tests time what they watch (a real-time loop, a prompt stop): the README runs them alone.
 pytestmark = pytest.mark.realtime
@@ -128,13 +128,19 @@ def _continuous(setpoints, model) -> None:
         assert not violations, violations
 
 
-def test_a_short_session_end_to_end():
+@pytest.mark.parametrize("block", [None, 32])
+def test_a_short_session_end_to_end(block, monkeypatch):
     """The host sends 2 s of the dfs catapult's modulus at its rate; the machine follows and is parked
     when the host stops; the setpoints are one continuous motion
     within the limits, each answering the newest message at once; the session judged like an on-line
-    run keeps every limit."""
+    run keeps every limit. With the record written out every 32 rows (desdemona.service.spill), the
+    session read back is the one sent: the plan's accelerations those of the setpoints, every message."""
+    if block is not None:
+        monkeypatch.setattr(spill, "BLOCK", block)
     data, at = _motion(profiles.get_profile("dfs-catapult"), 2.0)
     model, options, served, stand_in = _serve(3.5, data, at)
+    sent = np.array([model.config.select(s.acceleration) for s in stand_in.setpoints])
+    np.testing.assert_array_equal(served.loop.plan.u, sent)
     statuses = list(served.columns["status"])
     assert "running" in statuses and statuses[-1] in ("parking", "parked")
     assert statuses.index("parking") > statuses.index("running")

@@ -58,6 +58,7 @@ def test_a_cycle_with_nothing_new_starts_as_its_window_opens_unless_the_host_s_n
     assert pacing.begins(_arrivals(60.0, opens - 0.001), True, opens, opens + h) == opens
     assert pacing.begins(_arrivals(60.0, opens - 0.003), True, opens, opens + H) == opens + H
     assert pacing.begins([], False, opens, opens + h) == opens + h  # no host yet: as it always did
+    assert pacing.begins(_arrivals(60.0, opens - 0.005, count=5), False, opens, opens + h) == opens + h  # its period unknown
     assert pacing.begins(_arrivals(60.0, opens - 0.001), False, np.inf, opens) == opens  # stopping
 
 

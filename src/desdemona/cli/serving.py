@@ -68,7 +68,7 @@ def run_serve(args) -> int:
     served = None
     try:
         served = serve.serve(model, options, serving, ready=ready, on_drop=dropping, inbound=inbound,
-                             log=_Later(lambda: log), console=console)
+                             log=_Later(lambda: log), console=console, record=out)
     finally:
         logged = None if log is None else log.close()
         if console is not None:

@@ -84,9 +84,10 @@ def begins(arrivals: list[float], fresh: bool, opens: float, closes: float) -> f
     the next window."""
     if fresh:
         return closes if newer_due(arrivals, opens, closes) else opens
-    if not (arrivals and math.isfinite(opens)):
+    due = arrivals[-1] + host_period(arrivals) if arrivals else math.inf
+    if not (math.isfinite(due) and math.isfinite(opens)):  # the host's period not known yet: as always
         return closes
-    return closes if arrivals[-1] + host_period(arrivals) <= closes else opens
+    return closes if due <= closes else opens
 
 
 def stamped(sock: socket.socket) -> socket.socket:

@@ -225,7 +225,7 @@ def _discard_queued(sock: socket.socket) -> int:
 
 
 def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=time.monotonic, ready=None,
-          on_drop=None, inbound: socket.socket | None = None, log=None, console=None) -> Served:
+          on_drop=None, inbound: socket.socket | None = None, log=None, console=None, record=None) -> Served:
     """Run a session (see the module's docstring) until ``serving.duration``, ``serving.quiet_end`` or
     a stop signal; returns what it did. The controller's options are ``options.mpc`` (a plan every
     step: the session's step is the cycle); its predictor ``options.predictor``
@@ -236,7 +236,9 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
     a port in use is said at once and what a host sends meanwhile is counted; None: bound to
     ``serving.listen``. ``log``, if given, a :class:`~desdemona.service.sessionlog.LiveLog` that gets
     every cycle as it ends; ``console``, a :class:`~desdemona.service.console.Console` handed each cycle
-    as it ends, whose operators' commands are taken as Command datagrams are."""
+    as it ends, whose operators' commands are taken as Command datagrams are; ``record``, the folder
+    where the session's record writes its older blocks (:mod:`~desdemona.service.spill`: the session's
+    results; None: the system's temporary folder)."""
     mpc = options.mpc
     predictors.check(options.predictor, True, options.reference is not None, options.forecast is not None)
     if mpc.replan_steps != 1:
@@ -255,7 +257,6 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
         early = _discard_queued(inbound)
         if ready is not None:
             ready(early)
-        record = None if log is None else log.out  # the records' older blocks beside the results (spill)
         link = MachineLink(model, h, serving.send, serving.state_lost, key=serving.key, on_drop=on_drop, clock=clock)
         inbox = Inbox(inbound, channels, clock, serving.timeout * h, on_drop, machine=(outbound, link),
                       operator=serving.operator, early=early, key=serving.key, record=record)

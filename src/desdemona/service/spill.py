@@ -18,6 +18,7 @@ Writing a block costs about 1 ms for :data:`BLOCK` rows (measured: 0.9 ms for 1,
 from __future__ import annotations
 
 import bisect
+import os
 import pickle
 import tempfile
 
@@ -34,11 +35,12 @@ class Spilled:
     ``keep=False`` the older blocks are dropped instead: only the recent rows are ever asked for);
     :attr:`head` is the first row. Rows of NumPy arrays of one shape are stacked as they are spilled."""
 
-    def __init__(self, block: int = BLOCK, keep: bool = True, directory=None):
+    def __init__(self, block: int | None = None, keep: bool = True, directory=None):
+        block = BLOCK if block is None else block
         if block < 1:
             raise ValueError(f"block {block}: at least one row")
         self.block, self.keep = block, keep  # keep=False: older blocks are dropped, not written
-        self.directory = directory  # where the file goes (None: the system's temporary folder)
+        self.directory = directory  # where the file goes (None, or not there: the system's temporary folder)
         self.first = 0  # the index of the first row in memory
         self.head = None  # the first row, kept aside
         self._older: list = []  # the block before the one being filled
@@ -58,7 +60,8 @@ class Spilled:
         if not rows or not self.keep:
             return
         if self._file is None:
-            self._file = tempfile.TemporaryFile(prefix=".desdemona-record-", dir=self.directory)  # noqa: SIM115 -- kept open, closed by close()
+            there = self.directory if self.directory is not None and os.path.isdir(self.directory) else None
+            self._file = tempfile.TemporaryFile(prefix=".desdemona-record-", dir=there)  # noqa: SIM115 -- kept open, closed by close()
         stack = isinstance(rows[0], np.ndarray) and all(
             isinstance(r, np.ndarray) and r.shape == rows[0].shape for r in rows)
         pickle.dump(np.stack(rows) if stack else rows, self._file, protocol=pickle.HIGHEST_PROTOCOL)
