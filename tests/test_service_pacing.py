@@ -79,3 +79,33 @@ def test_datagrams_are_timed_from_their_arrival_not_from_their_reading():
     assert max(ages) >= 0.045 and max(ages) < 5.0 and not errors, ages
     row = pacing.phases(None, 1e-4, time.thread_time())
     assert set(row) == {f"{phase}_s" for phase in pacing.PHASES} | {"compute_cpu_s"} and np.isnan(row["qp_s"])
+
+
+def test_garbage_is_collected_after_the_send_not_where_allocations_fall():
+    """Within a session the interpreter collects nothing on its own; the collector, called after each
+    send, frees garbage cycles once its threshold of allocations is pending, over what the session
+    made since it began (not the objects frozen then), and the interpreter's collection is back after."""
+    import gc
+    import weakref
+
+    class Node:
+        pass
+
+    was = gc.isenabled()
+    with pacing.collected() as collect:
+        assert not gc.isenabled() and gc.get_freeze_count() > 0
+        node = Node()
+        node.self = node  # a cycle: only the collector frees it
+        alive = weakref.ref(node)
+        del node
+        collect()  # few allocations pending: nothing done
+        assert alive() is not None
+        kept = [[] for _ in range(gc.get_threshold()[0] + 10)]  # allocations pending past the threshold
+        collect()
+        assert alive() is None and gc.get_count()[0] < 10
+        began = time.perf_counter()
+        for _ in range(100):  # every generation once in a hundred: over what was made since the freeze
+            kept += [[] for _ in range(gc.get_threshold()[0] + 10)]
+            collect()
+        assert time.perf_counter() - began < 1.0
+    assert gc.isenabled() == was and gc.get_freeze_count() == 0

@@ -31,6 +31,8 @@ to tell a slow cycle from one the machine's other processes took the processor f
 
 from __future__ import annotations
 
+import contextlib
+import gc
 import itertools
 import math
 import socket
@@ -158,3 +160,42 @@ def close(row: dict, timings: dict | None, send: float, cpu: float, prepare, sta
     row.update(phases(timings, send, cpu))
     if timings is not None or followed:
         row["prepare_s"] = timed(prepare, state)[1]
+
+
+class Collector:
+    """Python's collection of garbage cycles, off the cycles' hot path (:func:`collected`).
+
+    Left to itself the interpreter collects when allocations pass its thresholds, wherever that
+    falls: in a served session on ``full`` a collection of every generation took 25-45 ms (78,000
+    objects: the controller's CasADi functions, NumPy and the rest), once every few minutes, inside
+    a cycle (a 27.8 ms cycle in the soak, benchmarks/soak.py: a deadline missed). Here what exists
+    when the session begins is frozen (:func:`gc.freeze`: never scanned again, still freed when no
+    longer referenced), automatic collection is off, and :meth:`__call__`, after each cycle's send,
+    collects as the interpreter would (the youngest generation once 700 allocations are pending,
+    the next every 10th time, all every 100th), over what the session made since: a few hundred
+    microseconds."""
+
+    def __init__(self):
+        self.runs = 0
+
+    def __call__(self) -> None:
+        if gc.get_count()[0] < gc.get_threshold()[0]:
+            return
+        self.runs += 1
+        gc.collect(2 if self.runs % 100 == 0 else 1 if self.runs % 10 == 0 else 0)
+
+
+@contextlib.contextmanager
+def collected():
+    """Within the block, garbage collected only when the :class:`Collector` it gives is called; the
+    interpreter's own collection as it was after."""
+    enabled = gc.isenabled()
+    gc.collect()
+    gc.freeze()
+    gc.disable()
+    try:
+        yield Collector()
+    finally:
+        gc.unfreeze()
+        if enabled:
+            gc.enable()

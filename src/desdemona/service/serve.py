@@ -253,7 +253,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
     stops: list[int] = []
     with inbound or listening(serving.listen) as inbound, \
             socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as outbound, \
-            guard.handled_here(stops.append):
+            guard.handled_here(stops.append), pacing.collected() as collect:
         early = _discard_queued(inbound)
         if ready is not None:
             ready(early)
@@ -298,6 +298,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             session.record(k, compute=sent - began, age=np.nan if inbox.arrived is None else began - inbox.arrived,
                            latency=sent - inbox.arrived if answered else np.nan, timed=(sent - sending, cpu))
             _log(log, console, session, inbox, link, model.config)
+            collect()  # the garbage of the cycle's objects, after its send (pacing.Collector)
             k += 1
             quiet = inbox.arrived is not None and clock() - inbox.arrived > (serving.quiet_end or np.inf)
             if ((stops and (session.status == "parked" or len(stops) > 1))
