@@ -268,12 +268,7 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
             # stopping, the cycles keep their times; else each starts as a new host message comes
             inbox.wait(start + k * h, np.inf) if stops else inbox.wait(closes, opens)
             began, cpu, session.timings, session.followed = clock(), time.thread_time(), None, False
-            commands = inbox.commands + (console.commands() if console is not None else [])
-            for _, action, *who in commands:  # logged at the cycle that acts on it, as every event
-                session.operator(action, k * h, *who, present=None if inbox.newest is None else inbox.newest.values)
-                if action in ("emergency stop", "reset"):  # the motion system's own: passed on
-                    _send(outbound, protocol.Command(len(session.events), began - start, action), serving.send, inbox)
-            inbox.commands = []
+            _operate(session, inbox, console, outbound, serving.send, k * h, began - start)
             alive = inbox.arrived is not None and began - inbox.arrived <= serving.timeout * h
             machine = session.observe(link, k * h, began)
             if stops:
@@ -305,15 +300,31 @@ def serve(model: Model, options: OnlineOptions, serving: ServeOptions, clock=tim
                     or (serving.duration is not None and k * h >= serving.duration)
                     or (quiet and session.status == "parked")):
                 break
+    return _served(session, inbox, link, start, stops, controller.deadline)
+
+
+def _served(session: _Session, inbox: Inbox, link: MachineLink, start: float, stops, deadline: float) -> Served:
+    """What the session did, its record read back (and its temporary files closed: spill)."""
     offset = inbox.arrivals.head - start - inbox.t.head if inbox.t else 0.0
     served = Served(loop=session.loop(), columns=session.columns(), received_t=np.asarray(inbox.t) + offset,
-                    received=np.asarray(inbox.values).reshape(len(inbox.t), channels),
+                    received=np.asarray(inbox.values).reshape(len(inbox.t), inbox.channels),
                     dropped=inbox.dropped + link.dropped, drop_samples={**link.drops.sample(), **inbox.drops.sample()},
-                    stopped_by=stops[0] if stops else None, deadline=controller.deadline, offset=offset,
+                    stopped_by=stops[0] if stops else None, deadline=deadline, offset=offset,
                     events=session.events, states=link.received, reanchored=session.reanchored, breaks=session.breaks)
     for record in (session.rows, session.u, session.jerks, inbox.t, inbox.values, inbox.arrivals):
-        record.close()  # the temporary files of what was written out (spill)
+        record.close()
     return served
+
+
+def _operate(session: _Session, inbox: Inbox, console, outbound: socket.socket, to, t: float, now: float) -> None:
+    """The operators' commands that came (as Command datagrams, or from the console), acted on and
+    logged at the cycle's time ``t``; an emergency stop and a reset passed on to the motion system."""
+    commands = inbox.commands + (console.commands() if console is not None else [])
+    for _, action, *who in commands:
+        session.operator(action, t, *who, present=None if inbox.newest is None else inbox.newest.values)
+        if action in ("emergency stop", "reset"):  # the motion system's own: passed on
+            _send(outbound, protocol.Command(len(session.events), now, action), to, inbox)
+    inbox.commands = []
 
 
 def _log(log, console, session: _Session, inbox: Inbox, link: MachineLink, config) -> None:
