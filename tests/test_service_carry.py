@@ -6,11 +6,12 @@ commanded motion away from the machine (found in a soak on a loaded computer: a 
 the arm up)."""
 
 import numpy as np
+import pytest
 
 from desdemona.machine.model import Model
 from desdemona.machine.plan import State
 from desdemona.service import protocol
-from desdemona.service.measured import BAND, Tracking
+from desdemona.service.measured import BAND, SETTLE, Tracking
 from desdemona.service.serve import _Session
 
 H = 0.02  # [s] the session's step
@@ -63,3 +64,71 @@ def test_an_offset_is_carried_once_not_every_cycle_it_stays_in_flight():
     # the service's state is where the machine is, and stays there
     assert session.state.q[0] == offset
     assert session.reanchored == 1
+
+
+class _StoppedMachine:
+    """A machine that stopped on its own at ``where`` and reports it with noise; it follows the
+    service's hold once told to (:meth:`follows`), IN_FLIGHT setpoints behind."""
+
+    def __init__(self, session: _Session, where: np.ndarray, seed: int = 0):
+        self.session, self.where, self.rng = session, where, np.random.default_rng(seed)
+        self.status, self.newest, self.arrived = "braking", None, 0.0
+        self.measurements: list[np.ndarray] = []
+
+    def lost(self, now: float) -> bool:
+        return False
+
+    def tracking(self, commanded) -> Tracking:
+        zero = np.zeros(self.session.model.n)
+        return Tracking((zero, zero), 0.0, self.status, self.newest)
+
+    def measured(self, now: float):
+        return self.measurements[-1], np.zeros_like(self.where)
+
+    def cycle(self, k: int) -> None:
+        self.session.rows.append({})
+        self.measurements.append(self.where + self.rng.normal(0.0, 1e-5, self.where.shape))
+        applied = k - IN_FLIGHT if self.status == "following" else None
+        self.newest = protocol.MachineState(k, k * H, self.status, "none", None, applied, 0.0,
+                                            np.zeros(6), np.zeros(6))
+
+
+def test_after_a_stop_of_its_own_the_service_plans_only_once_the_machine_has_followed_its_hold():
+    """The machine braked on its own and stands (measured with noise): the service holds where it
+    was last measured until the machine follows that hold, for SETTLE s; only then does it plan
+    again, from the hold the machine follows (not from a newer noisy measurement: a plan started a
+    noise's step off where the machine stands goes over the jerk limit,
+    test_a_plan_started_on_a_noisy_measurement_goes_over_the_jerk_limit_one_started_on_the_hold_does_not)."""
+    model = Model(config="full")
+
+    class _Controller:
+        def forget(self):
+            pass
+
+    session = _Session(model, controller=_Controller(), h=H, guard_use=None)
+    where = np.linspace(0.1, 0.6, model.n)
+    machine = _StoppedMachine(session, where)
+    machine.cycle(1)
+    assert session.observe(machine, H, H) == "the machine is braking"
+    session.status = "parked"  # as park() leaves it at rest
+    machine.status = "stopped"
+    for k in range(2, 5):  # holding on its own: the hold moves to where it is measured
+        machine.cycle(k)
+        assert session.observe(machine, k * H, k * H) == "the machine is braking"
+        np.testing.assert_array_equal(session.state.q, machine.measurements[-1])
+    held, follows_from = session.state.q.copy(), session.trusted_from + IN_FLIGHT  # its first State about it
+    machine.status = "following"  # it took the hold (a State about a setpoint before it is not counted)
+    k += 1
+    back = None
+    for k in range(k, k + 40):
+        machine.cycle(k)
+        why = session.observe(machine, k * H, k * H)
+        if not why:
+            back = k
+            break
+        assert why == "the machine is braking"
+        np.testing.assert_array_equal(session.state.q, held)  # followed: the hold no longer moves
+    assert back is not None and (back - follows_from) * H == pytest.approx(SETTLE, abs=H)
+    assert [e[1] for e in session.events][-1] == "machine back"
+    np.testing.assert_array_equal(session.state.q, held)
+    assert not np.array_equal(held, machine.measurements[-1])  # the newest measurement is not where it plans

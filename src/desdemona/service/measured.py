@@ -34,6 +34,17 @@ CYCLES = 2.0
 BAND = 0.05
 #: The motion system's statuses in which it does not follow the service.
 STOPPED_ON_ITS_OWN = ("braking", "fault", "e-stop")
+#: The statuses of a motion system at rest on its own, ready to follow a setpoint that starts where
+#: it stands.
+HOLDING_ON_ITS_OWN = ("stopped", "ready")
+#: After the machine stopped on its own, it must follow the service's own hold this long [s] before
+#: the service plans motion again. The hold starts where the machine was measured, a measurement's
+#: noise off where it stands: the servo takes that step, and its error rings out with a jerk of about
+#: 2 omega^3 times the step (a 5 Hz loop: 0.6 rad/s^3 for 1e-5 rad, a tenth of the cabin's jerk
+#: limit). At rest that jerk is harmless; added to a plan that starts at its jerk limit it went over
+#: (the hour's soak, docs/benchmarks/soak.md). A quarter of a second leaves a hundredth of it for a
+#: 5 Hz loop, and the plan then starts on the reference the machine already follows.
+SETTLE = 0.25
 
 
 @dataclass(frozen=True)

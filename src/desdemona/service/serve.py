@@ -56,6 +56,8 @@ from desdemona.service import pacing, protocol
 from desdemona.service.inbox import Inbox
 from desdemona.service.measured import (
     BAND,
+    HOLDING_ON_ITS_OWN,
+    SETTLE,
     STOPPED_ON_ITS_OWN,
     MachineLink,
     commanded_at,
@@ -366,6 +368,8 @@ class _Session:
         self.held = None  # the host's motion a pause holds
         self.events: list[tuple[float, str, str]] = []
         self.machine_fault = ""  # why the machine is parked on what it measurably does ("": it is not)
+        self.own_stop = False  # the machine stopped on its own: it must follow the service's hold first
+        self.holding_since: float | None = None  # when it was first seen following that hold
         self.trusted_from = 1  # the first setpoint sequence a State's tracking error is judged on
         self.reanchored = 0
         self.tracking = np.nan  # the use of the tracking tolerance this cycle (1 = a fault)
@@ -444,14 +448,31 @@ class _Session:
         if tracking.use > 1.0:
             return self._machine(t, f"tracking error {tracking.use:.2f} x its tolerance", error=tracking.error)
         if self.machine_fault:
-            if self.status != "parked":  # it follows the parking again: no more re-anchoring
+            if self.status != "parked" or not self._holding(link, t, now):  # no more re-anchoring
                 return self.machine_fault
             self.event(t, "machine back", f"{tracking.status}: planning afresh from where it stands")
-            self.machine_fault = ""
+            self.machine_fault, self.own_stop, self.holding_since = "", False, None
         elif tracking.use > BAND:
             self._carry(tracking.error)
             self.reanchored += 1
         return ""
+
+    def _holding(self, link: MachineLink, t: float, now: float) -> bool:
+        """The parked service may plan again: at once where the machine did not stop on its own, else
+        once it has followed the service's hold for :data:`~desdemona.service.measured.SETTLE` s. While
+        it holds on its own, the hold is moved to where it is measured, so that it starts to follow."""
+        st = link.newest
+        if not self.own_stop:
+            return True
+        if st.status == "following" and st.applied is not None and st.applied >= self.trusted_from:
+            self.holding_since = t if self.holding_since is None else self.holding_since
+            return t - self.holding_since >= SETTLE - 1e-9
+        self.holding_since = None
+        if st.status in HOLDING_ON_ITS_OWN:
+            q, _ = link.measured(now)
+            self.state = State(q, np.zeros_like(q), np.zeros_like(q))
+            self.trusted_from = len(self.rows) + 1  # the hold it is to follow is this one or a later one
+        return False
 
     def _machine(self, t: float, why: str, measured=None, error=None) -> str:
         """Park on what the machine measurably does: from ``measured`` (q, qd) where it stopped on its
@@ -463,7 +484,7 @@ class _Session:
         self.machine_fault = why
         if measured is not None:
             q, qd = measured
-            self.state, self.settle = State(q, qd, np.zeros_like(q)), None
+            self.state, self.settle, self.own_stop = State(q, qd, np.zeros_like(q)), None, True
             self.trusted_from = len(self.rows) + 1  # the setpoints from now on start where the machine is
         elif error is not None:
             self._carry(error)
