@@ -15,7 +15,9 @@ from __future__ import annotations
 import casadi as ca
 import numpy as np
 
-# the stages' functions are independent: mapped on two threads (the stage itself too, in transcription)
+# the stages' functions are independent: mapped on two threads (the stage itself too, in transcription),
+# on one in a worker process of a multi-start (CueingProblem.threads): two workers of two threads each
+# on two cores took 37 s for the F-16 turn's capped start on `full`, of one thread each 31 s
 MAP_MODE, MAP_THREADS = "thread", 2
 
 
@@ -96,11 +98,11 @@ def derivatives(prob, w, p, XU, data, data_end, stage: dict[str, ca.Function]) -
     pieces = [first_stage(stage, "jac")(X[:, 0], U[:, 0], data[:, 0])]
     if N > 1:
         led = _composed(stage["jac"], lambda J: _gap_led(J, nx), "stage_jac_led")
-        pieces.append(led.map(N - 1, MAP_MODE, MAP_THREADS)(X[:, 1:], U[:, 1:], data[:, 1:]))
+        pieces.append(led.map(N - 1, MAP_MODE, prob.threads)(X[:, 1:], U[:, 1:], data[:, 1:]))
     pieces.append(_gap_led(jac_end, nx))
     blocks = [pieces[0].sparsity(), *[stage["jac"].sparsity_out(0)] * (N - 1), jac_end.sparsity()]
     jacobian = concatenated(pieces, _jacobian_sparsity(blocks, nx, nw))
-    L_all, grad_all = stage["grad"].map(N, MAP_MODE, MAP_THREADS)(X, U, data)
+    L_all, grad_all = stage["grad"].map(N, MAP_MODE, prob.threads)(X, U, data)
     f, grad_end = ca.sum2(L_all), ca.MX(nx, 1)
     if terminal:
         L_end, grad_end = stage["terminal_grad"](end, data_end)
@@ -132,7 +134,7 @@ def lagrangian_hessian(prob, w, p, XU, data, data_end, stage, key: str) -> ca.Fu
     pieces = [first_stage(stage, key)(X[:, 0], U[:, 0], data[:, 0], lam_f, *multipliers)]
     if N > 1:
         rest = ca.reshape(lam_g[nx + ni + npath: lam_g.numel() - prob.n_terminal], nx + npath, N - 1)
-        pieces.append(stage[key].map(N - 1, MAP_MODE, MAP_THREADS)(
+        pieces.append(stage[key].map(N - 1, MAP_MODE, prob.threads)(
             X[:, 1:], U[:, 1:], data[:, 1:], ca.repmat(lam_f, 1, N - 1), rest[:nx, :], rest[nx:, :]))
     l_end = lam_g[lam_g.numel() - prob.n_terminal:]
     pieces.append(stage["terminal_hess"](w[N * nw:], data_end, lam_f, l_end) if prob.terminal is not None

@@ -34,6 +34,7 @@ and the caller keeps the virtual machine: slower, same results.
 from __future__ import annotations
 
 import concurrent.futures
+import contextlib
 import gzip
 import hashlib
 import os
@@ -257,7 +258,10 @@ def stored_solver(key: str) -> ca.Function | None:
     if not (file.exists() and nlp.exists()):
         return None
     try:
-        return ca.Function.deserialize(gzip.decompress(file.read_bytes()).decode())
+        solver = ca.Function.deserialize(gzip.decompress(file.read_bytes()).decode())
+        with contextlib.suppress(OSError):  # used now: the last to go (_forget_solvers)
+            os.utime(file)
+        return solver
     except (OSError, RuntimeError, EOFError, zlib.error) as error:
         warnings.warn(f"the solver kept in {file} did not load ({str(error).strip()[:200]}): building it "
                       "again", RuntimeWarning, stacklevel=2)
@@ -283,6 +287,27 @@ def store_solver(key: str, solver: ca.Function) -> None:
             written.unlink(missing_ok=True)
         warnings.warn(f"cannot keep the solver in {file.parent} ({error}): it is built again next time",
                       RuntimeWarning, stacklevel=2)
+        return
+    _forget_solvers(file.parent)
+
+
+#: The solvers the cache keeps (about 3 MB each with their NLP's library): the most recently used.
+SOLVERS_KEPT = 24
+
+
+def _forget_solvers(folder: Path, kept: int = SOLVERS_KEPT) -> None:
+    """Remove the solvers :func:`store_solver` kept in ``folder`` beyond the ``kept`` most recently
+    used, with their NLP's libraries: every path length of a user's would otherwise keep one."""
+    def used(file: Path) -> float:
+        try:
+            return file.stat().st_mtime
+        except OSError:  # gone meanwhile (another run's clean-up)
+            return 0.0
+    solvers = sorted(folder.glob("solver-*.casadi.gz"), key=used, reverse=True)
+    for old in solvers[kept:]:
+        stem = old.name[len("solver-"):-len(".casadi.gz")]
+        for file in (old, folder / f"nlp-{stem}.so"):
+            file.unlink(missing_ok=True)
 
 
 def oracle(nlp: dict, derivatives: dict[str, ca.Function]) -> list[ca.Function]:

@@ -26,7 +26,7 @@ from desdemona.check.simulate import LimitCheck, LimitViolation, Trajectory, che
 from desdemona.cueing import sizing
 from desdemona.cueing.formulation import ProblemOptions
 from desdemona.cueing.prices import LimitPrices, limit_prices
-from desdemona.cueing.transcription import CueingProblem, Solution
+from desdemona.cueing.transcription import MAP_THREADS, CueingProblem, Solution
 from desdemona.machine.model import Model
 from desdemona.machine.plan import Plan, braked, start_acceleration, start_state
 from desdemona.profiles import DesiredPath
@@ -57,7 +57,8 @@ class OptimizeOptions:
     workers : parallel processes for the starts (1: in this process).
     refine : solve with the simplified dynamics first, then refine with the full dynamics (5.7).
     stored : keep fatrop's solver in the cache for later runs (``CueingProblem(stored=True)``: the
-    windows of a recording, :mod:`desdemona.cueing.windows`).
+    windows of a recording, :mod:`desdemona.cueing.windows`); None: where its set-up is long (a long
+    whole path, ``transcription.STORED_FROM``).
     """
 
     problem: ProblemOptions = field(default_factory=ProblemOptions)
@@ -65,7 +66,7 @@ class OptimizeOptions:
     seed: int = 0
     workers: int = 1
     refine: bool = False
-    stored: bool = False
+    stored: bool | None = None
 
     def __post_init__(self):
         if self.starts < 1 or self.workers < 1:
@@ -317,9 +318,11 @@ def settled(problem: CueingProblem, qd, a, accelerations, first: int = 0) -> np.
 
 
 def _problems(model: Model, path: DesiredPath, options: OptimizeOptions):
-    full = CueingProblem(model, path, options.problem, solves=options.starts, stored=options.stored)
+    # in parallel starts each process takes a core: the stage functions on one thread each
+    threads = 1 if options.workers > 1 and options.starts > 1 else MAP_THREADS
+    full = CueingProblem(model, path, options.problem, solves=options.starts, stored=options.stored, threads=threads)
     rough = (CueingProblem(Model(model.params.simplified(), model.config), path, options.problem,
-                           solves=options.starts, stored=options.stored) if options.refine else None)
+                           solves=options.starts, stored=options.stored, threads=threads) if options.refine else None)
     return full, rough
 
 

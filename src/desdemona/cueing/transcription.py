@@ -54,6 +54,10 @@ FATROP_FLAGS = ("-O1", "-fPIC", "-shared", *compiled.processor_flags())
 # share one (CasADi's fatrop set-up takes 15 s at 1,140 intervals on `full`, growing with their square).
 FATROP_SOLVERS: dict[str, ca.Function] = {}
 FATROP_KEPT = 2
+#: A whole path's fatrop solver is kept in the cache from this many intervals on (30 s at the default
+#: step): the F-16 turn's 1,100 on `full` took 10.7 s to build with its set-up, 1.3 s loaded; at 160
+#: the set-up takes a fraction of a second (it grows with the square of the intervals).
+STORED_FROM = 600
 # MUMPS' fill-reducing ordering: approximate minimum degree with quasi-dense rows (QAMD); IPOPT's time
 # per iteration against MUMPS' own choice: 24 against 36 ms on the catapult on full (docs/benchmarks/mumps-ordering.md).
 MUMPS_ORDERING = 6
@@ -129,14 +133,18 @@ class CueingProblem(Formulation):
     on a new preview), not a constant;
     stored : with fatrop, keep its solver in the cache for later runs and take it from there
     (:func:`desdemona.cueing.compiled.store_solver`: a window of a recording poses the same problem for
-    every recording).
+    every recording, a whole path for every path of as many intervals); None: where its set-up is long
+    (:data:`STORED_FROM` intervals or more).
+    threads : the threads the stage functions are mapped on (1 in a worker process of a multi-start,
+    whose processes already take the cores).
     """
 
     def __init__(self, model: Model, path: DesiredPath, options: ProblemOptions = ProblemOptions(),
-                 solves: int = 1, parametric: bool = False, stored: bool = False):
+                 solves: int = 1, parametric: bool = False, stored: bool | None = False, threads: int = MAP_THREADS):
         super().__init__(model, path, options, parametric)
         self.solves = solves
-        self.stored = stored
+        self.stored = self.N >= STORED_FROM if stored is None else stored
+        self.threads = threads
         self.monitor = None  # the solver's guard.SolveMonitor, where it has one
         self._build_nlp()
 
@@ -173,7 +181,7 @@ class CueingProblem(Formulation):
         self.compiled = self._compile(stage)
         # f and g on two threads too, unless the graph is flattened (on-line and small problems)
         serial = self.parametric or self.expanded
-        x_next, L, g = stage["stage"].map(N, "serial" if serial else MAP_MODE, 1 if serial else MAP_THREADS)(X, U, data)
+        x_next, L, g = stage["stage"].map(N, "serial" if serial else MAP_MODE, 1 if serial else self.threads)(X, U, data)
         G = ca.vertcat(X_next - x_next, g)  # per stage: gap, then path constraints
         g_all = ca.vertcat(G[:nx, 0], initial, G[nx:, 0], ca.vec(G[:, 1:]))
         f = ca.sum2(L)
