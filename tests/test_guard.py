@@ -144,6 +144,30 @@ def test_progress_lines_when_stderr_is_not_a_terminal(tmp_path, monkeypatch, cap
     assert capsys.readouterr().err == ""
 
 
+def test_the_clock_says_solving_once_the_problem_is_built(tmp_path, capsys):
+    """The clock's line names the work in hand: "building the problem" until the problem is built,
+    then the starts being solved (a 30 s start in a worker was told as building for its whole time),
+    and a window keeps its window's name. No line is said for the built problem itself."""
+    from desdemona import Model
+    from desdemona.cli.progress import OfflineProgress
+    from desdemona.cueing.offline import OptimizeOptions, optimize
+
+    told = []
+    with OfflineProgress(2, None, None, None, tty=True) as progress:
+        assert progress.doing == "building the problem"
+
+        def tell(done, total, best):
+            told.append((done, progress.doing))
+            progress.start_done(done, total, best)
+        optimize(profiles.load("cosine"), Model(config="yaw-track"),
+                 OptimizeOptions(problem.ProblemOptions(h_u=0.1), starts=2), progress=tell)
+        assert told[:2] == [(0, "building the problem"), (1, "solving: 0 of 2 starts done")]
+        progress.window(3, 7, 30.0, 60.0)
+        progress.start_done(0, 2, float("inf"))
+        assert progress.doing == "window 3/7"
+    assert "0/2" not in capsys.readouterr().err
+
+
 def test_iteration_cap_is_reported_as_not_converged(tmp_path, monkeypatch, capsys):
     monkeypatch.setattr(problem, "ProblemOptions", functools.partial(problem.ProblemOptions, max_iter=3))
     assert _optimize(tmp_path / "r") == cli.EXIT_NOT_CONVERGED

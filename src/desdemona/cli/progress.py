@@ -93,6 +93,10 @@ class OfflineProgress(Progress):
         return guard.estimated_end(self.begin, done, total, self.estimate)
 
     def start_done(self, done: int, total: int, best: float) -> None:
+        if done == 0:  # the problem is built: its starts are solved now (a window's clock keeps its window)
+            if self.doing == "building the problem":
+                self.doing = f"solving: 0 of {total} starts done"
+            return
         self.doing = f"solving: {done} of {total} starts done"
         if self.tty:
             bar = "#" * done + "." * (total - done)

@@ -347,7 +347,8 @@ def optimize(path: DesiredPath, model: Model, options: OptimizeOptions = Optimiz
     """The best checked joint trajectory for a desired path (thesis chapters 3-7, off-line).
 
     model : the machine and configuration, e.g. ``Model(default_params(), "yaw-track-cabin")``;
-    progress : optional callable ``progress(done, total, best_cost)`` told after each start;
+    progress : optional callable ``progress(done, total, best_cost)`` told once the problem is built
+    (done 0, best_cost inf) and after each start;
     first : optional callable ``first(problem) -> guesses`` of the guesses to try before the usual
     ones (a window's: the window before, continued), within ``options.starts``.
     Raises :class:`LimitViolation` when no start yields a trajectory within every limit, and
@@ -362,6 +363,8 @@ def optimize(path: DesiredPath, model: Model, options: OptimizeOptions = Optimiz
     guesses = [] if first is None else first(full)[:options.starts]
     guesses += initial_guesses(full, options.starts - len(guesses), options.seed) if options.starts > len(guesses) else []
     solved = []
+    if progress is not None:
+        progress(0, len(guesses), np.inf)
 
     def done(item):
         solved.append(item)
