@@ -179,6 +179,7 @@ def test_progress_is_told_after_each_start():
     optimize(profiles.catapult(duration=3.0, push=1.0, quiet=0.5), Model(default_params(), "yaw-track"),
              OptimizeOptions(ProblemOptions(h_u=0.1), starts=3),
              progress=lambda done, total, best: seen.append((done, total, best)))
-    assert [s[:2] for s in seen] == [(1, 3), (2, 3), (3, 3)]
+    assert [s[:2] for s in seen] == [(0, 3), (1, 3), (2, 3), (3, 3)]  # once built, then after each start
     best = [s[2] for s in seen]
+    assert best[0] == float("inf")
     assert best == sorted(best, reverse=True)  # the best cost so far never gets worse

@@ -342,6 +342,21 @@ def _worker_solve(guesses):
     return [(name, _solve_one(full, rough, x, u)) for name, x, u in guesses]
 
 
+def _solve_in_workers(full, rough, guesses, workers: int, done) -> None:
+    """Each guess solved in a forked worker process (which inherits the problems built here: no
+    rebuild per process), ``done((name, solution))`` told as each ends."""
+    _WORKER["problems"] = (full, rough)
+    context = multiprocessing.get_context("fork")
+    # leaving the block terminates the workers, also when the parent is interrupted
+    try:
+        with context.Pool(min(workers, len(guesses)), initializer=guard.worker_signals) as pool:
+            for part in pool.imap_unordered(_worker_solve, [[g] for g in guesses]):
+                done(part[0])
+            guard.finish(pool)
+    finally:
+        _WORKER.clear()
+
+
 def optimize(path: DesiredPath, model: Model, options: OptimizeOptions = OptimizeOptions(),
              progress=None, first=None) -> Result:
     """The best checked joint trajectory for a desired path (thesis chapters 3-7, off-line).
@@ -372,16 +387,7 @@ def optimize(path: DesiredPath, model: Model, options: OptimizeOptions = Optimiz
             progress(len(solved), len(guesses), min(sol.cost for _, sol in solved))
 
     if options.workers > 1 and len(guesses) > 1:
-        _WORKER["problems"] = (full, rough)
-        context = multiprocessing.get_context("fork")
-        # leaving the block terminates the workers, also when the parent is interrupted
-        try:
-            with context.Pool(min(options.workers, len(guesses)), initializer=guard.worker_signals) as pool:
-                for part in pool.imap_unordered(_worker_solve, [[g] for g in guesses]):
-                    done(part[0])
-                guard.finish(pool)
-        finally:
-            _WORKER.clear()
+        _solve_in_workers(full, rough, guesses, options.workers, done)
         order = {name: i for i, (name, _, _) in enumerate(guesses)}
         solved.sort(key=lambda item: order[item[0]])
     else:
