@@ -45,6 +45,7 @@ def main(argv=None) -> int:
     parser.add_argument("--out", type=Path, default=HERE / "fighters-results")
     args = parser.parse_args(argv)
     cache = Path(os.environ.get("DESDEMONA_CACHE") or Path.home() / ".cache" / "desdemona")
+    args.out.mkdir(parents=True, exist_ok=True)
     codes = ([("before", args.before.resolve())] if args.before else []) + [("this", first_run.HERE)]
     print("| case | config | code | wall [s] | x duration | RMS | load |\n| --- | --- | --- | --- | --- | --- | --- |")
     for item in args.cases:
