@@ -40,6 +40,18 @@ def test_a_window_larger_than_the_memory_says_which_would_fit(params, monkeypatc
         windows.choose(_long(2000.0), Model(params, "full"), ProblemOptions(h_u=0.05), 1000.0)
 
 
+def test_where_no_window_fits_the_memory_it_names_the_step_that_makes_one_fit(params, monkeypatch):
+    model, options = Model(params, "full"), ProblemOptions(h_u=0.001)
+    shortest = 2 * windows.overlap(model)
+    fine = sizing.estimate(windows.part(_long(2000.0), 0.0, shortest), model.config, options, 1, model.limits.smooth)
+    coarse = sizing.estimate(windows.part(_long(2000.0), 0.0, shortest), model.config,
+                             ProblemOptions(h_u=0.002), 1, model.limits.smooth)
+    between = 0.5 * (fine.memory + coarse.memory)  # the 0.001 s window does not fit, the 0.002 s one does
+    monkeypatch.setattr(sizing, "available_memory", lambda: between)
+    with pytest.raises(windows.WindowError, match=r"no window fits .* use --h-u 0\.002 or more"):
+        windows.choose(_long(2000.0), model, options, shortest)
+
+
 def test_the_command_refuses_a_bad_window_before_any_work(tmp_path, capsys):
     path = tmp_path / "long.csv"
     profiles.write_csv(path, _long(60.0))
