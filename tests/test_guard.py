@@ -168,6 +168,17 @@ def test_the_clock_says_solving_once_the_problem_is_built(tmp_path, capsys):
     assert "0/2" not in capsys.readouterr().err
 
 
+def test_a_ctrl_c_while_the_table_of_commands_is_built_exits_130_in_one_line(monkeypatch, capsys):
+    """Found by the suite under load: a Ctrl-C 0.6 s into `optimize` came while argparse built the
+    commands, before any handler, and ended in a traceback (exit -2)."""
+    def interrupted():
+        raise KeyboardInterrupt
+    monkeypatch.setattr(cli, "build_parser", interrupted)
+    assert main(["profiles"]) == 130
+    err = capsys.readouterr().err
+    assert err.startswith("desdemona: interrupted") and err.count("\n") == 1
+
+
 def test_iteration_cap_is_reported_as_not_converged(tmp_path, monkeypatch, capsys):
     monkeypatch.setattr(problem, "ProblemOptions", functools.partial(problem.ProblemOptions, max_iter=3))
     assert _optimize(tmp_path / "r") == cli.EXIT_NOT_CONVERGED

@@ -49,9 +49,8 @@ def _tell(text: str) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = build_parser()
-    try:
-        args = parser.parse_args(argv)
+    try:  # building the table of commands takes a tenth of a second, where a Ctrl-C may come too
+        args = build_parser().parse_args(argv)
     except SystemExit as exc:  # argparse has printed its message (or --help): report, do not exit
         return int(exc.code or 0)
     except KeyboardInterrupt:
