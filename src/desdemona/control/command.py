@@ -9,7 +9,6 @@ from typing import Literal, NamedTuple
 
 import numpy as np
 
-from desdemona.cueing.formulation import ProblemOptions
 from desdemona.occupant.perception import VestibularModel
 
 

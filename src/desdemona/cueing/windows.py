@@ -96,11 +96,13 @@ def choose(path: DesiredPath, model: Model, options, asked: float | None, worker
     size = sizing.estimate(part(path, 0.0, asked), model.config, options, workers, model.limits.smooth)
     if not size.fits:
         fitting = asked * (size.available - sizing.BASE_BYTES) / (size.memory - sizing.BASE_BYTES)
-        coarser = next((h for h in sizing.H_U_STEPS if h > options.h_u and sizing.estimate(
-            part(path, 0.0, asked), model.config, replace(options, h_u=h), workers, model.limits.smooth).fits), None)
-        advice = (f"use --window {math.floor(fitting):g} or less" if fitting >= shortest else
-                  f"no window fits (the shortest that works is {shortest:g} s); use "
-                  + (f"--h-u {coarser:g} or more" if coarser is not None else "a larger --h-u"))
+        if fitting >= shortest:
+            advice = f"use --window {math.floor(fitting):g} or less"
+        else:  # the finest --h-u at which the window asked fits
+            coarser = next((h for h in sizing.H_U_STEPS if h > options.h_u and sizing.estimate(
+                part(path, 0.0, asked), model.config, replace(options, h_u=h), workers, model.limits.smooth).fits), None)
+            advice = (f"no window fits (the shortest that works is {shortest:g} s); use "
+                      + (f"--h-u {coarser:g} or more" if coarser is not None else "a larger --h-u"))
         raise WindowError(f"--window {asked:g}: {size.intervals:,} control intervals in a window need "
                           f"{sizing.memory_words(size)}; {advice}")
     return float(asked)
